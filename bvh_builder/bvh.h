@@ -1,0 +1,90 @@
+// bvh_builder: a two-level SAH BVH over spheres, boxes and triangles, flattened into the layout
+// the GLSL kernels read (shaders/shared/device_host.h), plus the CPU traversal that the reference
+// renderer and the benchmarks use. No Vulkan and no scene-format dependency.
+//
+// Bottom level: one BVH per geometry group (a mesh, a prototype, or the scene's loose shapes).
+// Top level: one BVH over instances = (group, object-to-world affine transform).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "../shaders/shared/device_host.h"
+
+namespace vkrt::bvh {
+
+// One primitive of a geometry group, in the group's object space.
+//   PRIM_KIND_TRIANGLE: a, b, c = v0, v1, v2
+//   PRIM_KIND_SPHERE:   a = centre, b.x = radius
+//   PRIM_KIND_BOX:      a = min corner, b = max corner
+struct PrimitiveInput {
+    std::uint32_t kind = gpu::PRIM_KIND_TRIANGLE;
+    glm::vec3 a{0.0f}, b{0.0f}, c{0.0f};
+};
+
+struct InstanceInput {
+    std::uint32_t group = 0;
+    glm::mat4 objectToWorld{1.0f};
+    std::uint32_t materialOverride = gpu::MATERIAL_NONE;  // copied into Instance::info.y
+};
+
+struct BuildOptions {
+    int threads = 0;             // 0: all hardware threads; the result never depends on it
+    int bins = 16;               // SAH bins per axis
+    int maxLeafSize = 8;         // a leaf is forced to split above this many primitives
+    float traversalCost = 1.0f;  // SAH cost of visiting an inner node, relative to...
+    float intersectionCost = 1.0f;  // ...intersecting one primitive (see docs/BVH.md for the measurement)
+};
+
+struct GroupRange {
+    std::uint32_t rootNode = 0;   // index into SceneBvh::nodes
+    std::uint32_t firstPrim = 0;  // this group's primitives are prims[firstPrim, firstPrim + primCount)
+    std::uint32_t primCount = 0;
+    glm::vec3 lo{0.0f}, hi{0.0f}; // object-space bounds
+};
+
+struct BuildStats {
+    double buildSeconds = 0.0;
+    double sahCost = 0.0;         // SAH cost of the bottom levels, summed over groups
+    std::size_t nodeCount = 0;
+    std::size_t leafCount = 0;
+    std::size_t bytes = 0;        // nodes + primitives + instances as uploaded
+};
+
+// The flattened two-level BVH: exactly what is uploaded to the GPU.
+struct SceneBvh {
+    std::vector<gpu::BvhNode> nodes;          // every bottom level (depth-first), then the top level
+    std::vector<gpu::Primitive> prims;        // leaf-contiguous, group after group
+    std::vector<std::uint32_t> primSource;    // flat primitive -> its index in the group's input list
+    std::vector<GroupRange> groups;           // per input group
+    std::vector<gpu::Instance> instances;     // same order as the input instances
+    std::uint32_t topRoot = 0;                // root node of the top level (over instances)
+    BuildStats stats;
+};
+
+SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
+                       const std::vector<InstanceInput>& instances, const BuildOptions& options = {});
+
+// ---------------------------------------------------------------------------------------------
+// CPU traversal (the reference renderer's and the benchmarks').
+struct Ray {
+    glm::vec3 origin{0.0f};
+    glm::vec3 dir{0.0f, 0.0f, -1.0f};  // need not be unit length; t is measured in units of |dir|
+    float tmax = 3.402823466e38f;      // hits need 0 < t < tmax
+};
+
+struct Hit {
+    float t = 0.0f;
+    std::uint32_t instance = 0;  // index into SceneBvh::instances
+    std::uint32_t prim = 0;      // index into SceneBvh::prims (primSource maps it back)
+    float u = 0.0f, v = 0.0f;    // triangle: barycentric weights of v1 and v2
+};
+
+// Closest hit with 0 < t < ray.tmax; false if none.
+bool intersectClosest(const SceneBvh& bvh, const Ray& ray, Hit& hit);
+// Any hit with 0 < t < ray.tmax (shadow rays).
+bool intersectAny(const SceneBvh& bvh, const Ray& ray);
+
+}  // namespace vkrt::bvh

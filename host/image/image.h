@@ -1,0 +1,40 @@
+// A linear float RGB image, the common result of both renderers.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace vkrt {
+
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<glm::vec3> pixels;  // row-major, row 0 = top
+
+    Image() = default;
+    Image(int w, int h) : width(w), height(h), pixels(static_cast<std::size_t>(w) * h, glm::vec3(0.0f)) {}
+    glm::vec3& at(int x, int y) { return pixels[static_cast<std::size_t>(y) * width + x]; }
+    const glm::vec3& at(int x, int y) const { return pixels[static_cast<std::size_t>(y) * width + x]; }
+};
+
+// The course's 8-bit rule: clamp to [0,1] once, then truncate int(c * 255).
+inline std::uint8_t quantize8(float c) {
+    if (!(c > 0.0f)) return 0;  // also maps NaN to 0
+    if (c >= 1.0f) return 255;
+    return static_cast<std::uint8_t>(c * 255.0f);
+}
+
+// Writes by extension: .png/.jpg/.jpeg/.ppm as 8-bit (quantize8), .exr as linear float.
+// Throws std::runtime_error naming the file on failure.
+void writeImage(const Image& image, const std::string& path);
+
+// Reads any format OpenImageIO knows; 8-bit files come back as value/255.
+Image readImage(const std::string& path);
+
+// The number of pixels with a NaN or infinite channel.
+std::size_t countNonFinite(const Image& image);
+
+}  // namespace vkrt

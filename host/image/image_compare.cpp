@@ -1,0 +1,49 @@
+#include "image_compare.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace vkrt {
+
+ImageDifference compareImages(const Image& a, const Image& b) {
+    if (a.width != b.width || a.height != b.height)
+        throw std::invalid_argument("compareImages: sizes differ (" + std::to_string(a.width) + "x" +
+                                    std::to_string(a.height) + " vs " + std::to_string(b.width) + "x" +
+                                    std::to_string(b.height) + ")");
+    ImageDifference d;
+    d.width = a.width;
+    d.height = a.height;
+    d.heatMap = Image(a.width, a.height);
+    const std::size_t n = a.pixels.size();
+    if (n == 0) return d;
+
+    double sumAbs = 0.0, sumSq = 0.0;
+    std::size_t over1 = 0, over2 = 0;
+    int maxSteps = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        int pixelMax = 0;
+        for (int c = 0; c < 3; ++c) {
+            const int diff = std::abs(int(quantize8(a.pixels[i][c])) - int(quantize8(b.pixels[i][c])));
+            pixelMax = std::max(pixelMax, diff);
+            sumAbs += diff;
+            sumSq += double(diff) * diff;
+        }
+        maxSteps = std::max(maxSteps, pixelMax);
+        over1 += pixelMax > 1;
+        over2 += pixelMax > 2;
+        // Heat map: 0 black, 1-2 steps dark red, growing to yellow at 16 steps and beyond.
+        const float s = std::min(pixelMax, 16) / 16.0f;
+        d.heatMap.pixels[i] = pixelMax == 0 ? glm::vec3(0.0f) : glm::vec3(0.25f + 0.75f * std::min(1.0f, 2 * s), std::max(0.0f, 2 * s - 1), 0.0f);
+    }
+    d.maxAbs = maxSteps / 255.0;
+    d.meanAbs = sumAbs / (3.0 * n) / 255.0;
+    d.fractionOver1 = double(over1) / n;
+    d.fractionOver2 = double(over2) / n;
+    const double mse = sumSq / (3.0 * n);
+    d.psnr = mse == 0.0 ? std::numeric_limits<double>::infinity() : 10.0 * std::log10(255.0 * 255.0 / mse);
+    return d;
+}
+
+}  // namespace vkrt

@@ -1,0 +1,24 @@
+// Comparing two images the way users and tests need: in 8-bit steps (what a PNG shows).
+#pragma once
+
+#include <string>
+
+#include "image.h"
+
+namespace vkrt {
+
+struct ImageDifference {
+    int width = 0, height = 0;
+    double maxAbs = 0.0;           // largest |a - b| over channels, in [0,1] units of the 8-bit values
+    double meanAbs = 0.0;          // mean |a - b| over all channels
+    double fractionOver1 = 0.0;    // pixels with some channel differing by more than 1/255
+    double fractionOver2 = 0.0;    // pixels with some channel differing by more than 2/255
+    double psnr = 0.0;             // dB, of the 8-bit images; infinity when identical
+    Image heatMap;                 // per pixel: max channel difference, black (0) .. red .. yellow (>= 16/255)
+};
+
+// Compares the 8-bit quantised versions (quantize8) of two same-sized images.
+// Throws std::invalid_argument when the sizes differ.
+ImageDifference compareImages(const Image& a, const Image& b);
+
+}  // namespace vkrt

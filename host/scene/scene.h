@@ -1,0 +1,122 @@
+// The scene model: a plain description of what a course XML file says, after parsing and
+// validation (host/scene/xml_loader.h builds it). No GPU or BVH concerns live here.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace vkrt {
+
+// Where something was defined, for error messages ("file:line").
+struct SourceLocation {
+    std::string file;
+    int line = 0;
+};
+
+enum class CameraType { Perspective, Orthographic };
+
+struct Camera {
+    std::string name;
+    CameraType type = CameraType::Perspective;
+    glm::vec3 position{0.0f};
+    glm::vec3 gaze{0.0f, 0.0f, -1.0f};  // lookatPoint - position, or viewDir; not normalised, non-zero
+    float focalLength = 1.0f;
+    float imagePlaneWidth = 0.5f;
+    SourceLocation where;
+};
+
+enum class LightType { Point, Area };
+
+struct Light {
+    LightType type = LightType::Point;
+    glm::vec3 position{0.0f};   // point position, or the area light's centre
+    glm::vec3 intensity{1.0f};
+    glm::vec3 normal{0.0f, -1.0f, 0.0f};  // area only; unit length
+    float width = 0.0f;                   // area only; along the tangent (docs/RENDERING.md §4)
+    float length = 0.0f;                  // area only; along the bitangent
+    SourceLocation where;
+};
+
+// Legacy spellings are resolved by the loader: Phong -> BlinnPhong, BlinnPhong with
+// mirrorCoef > 0 -> BlinnPhongMirrored.
+enum class ShaderType { Lambertian, BlinnPhong, Mirror, Glaze, BlinnPhongMirrored, Dielectric, CoolToWarm };
+
+constexpr int kNoTexture = -1;
+
+struct Shader {
+    std::string name;
+    ShaderType type = ShaderType::Lambertian;
+    glm::vec3 diffuse{1.0f};
+    glm::vec3 specular{0.0f};
+    float phongExp = 1.0f;
+    float mirrorCoef = 0.0f;
+    float roughness = 0.0f;
+    float refractiveIndex = 1.0f;
+    glm::vec3 attenuation{1.0f};   // transmittance per unit distance
+    int diffuseTexture = kNoTexture;   // index into Scene::textures
+    int specularTexture = kNoTexture;
+    SourceLocation where;
+};
+
+// An image texture, 8-bit RGBA, row 0 = top row of the file, used linearly.
+struct Texture {
+    std::string name;
+    std::string path;
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint32_t> rgba8;  // width*height texels, r in the low byte
+    SourceLocation where;
+};
+
+// A triangle mesh loaded from OBJ. Normals are per vertex (generated when the file has none).
+struct Mesh {
+    std::string path;
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;   // same size as positions
+    std::vector<glm::vec2> uvs;       // same size as positions, or empty
+    std::vector<glm::uvec3> triangles;
+};
+
+enum class ShapeType { Sphere, Box, Triangle, Mesh };
+
+// A geometric shape with its shader. In Scene::shapes it is in world space; in
+// Scene::prototypes it is in object space and rendered only through instances.
+struct Shape {
+    std::string name;
+    ShapeType type = ShapeType::Sphere;
+    int shader = 0;                   // index into Scene::shaders
+    glm::vec3 center{0.0f};           // sphere
+    float radius = 1.0f;              // sphere
+    glm::vec3 minPt{0.0f}, maxPt{0.0f};  // box
+    glm::vec3 v0{0.0f}, v1{0.0f}, v2{0.0f};  // triangle
+    int mesh = -1;                    // mesh: index into Scene::meshes
+    SourceLocation where;
+};
+
+// A placement of a prototype (`<shape type="instance" id=...>`).
+struct Instance {
+    std::string name;
+    int prototype = 0;                // index into Scene::prototypes
+    int shaderOverride = -1;          // index into Scene::shaders, or -1: the prototype's shader
+    glm::mat4 objectToWorld{1.0f};    // M = T0 * T1 * ... * Tn-1 (FORMAT.md §3.9)
+    SourceLocation where;
+};
+
+struct Scene {
+    std::string path;                 // the XML file
+    glm::vec3 background{0.0f};
+    std::string envMapPrefix;         // recorded; not rendered (a warning says so)
+    std::vector<Camera> cameras;      // at least one
+    std::vector<Light> lights;
+    std::vector<Shader> shaders;
+    std::vector<Texture> textures;
+    std::vector<Mesh> meshes;
+    std::vector<Shape> shapes;
+    std::vector<Shape> prototypes;
+    std::vector<Instance> instances;
+};
+
+}  // namespace vkrt

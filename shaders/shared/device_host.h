@@ -1,0 +1,215 @@
+// Every struct and binding that crosses the host/device boundary, defined once.
+// Included by C++ (host/, bvh_builder/) and by GLSL (shaders/*.comp). Layout rules:
+//  - SSBO structs follow std430: vec4/uvec4 members only, so C++ and GLSL agree without padding
+//    surprises; the static_asserts below pin every size.
+//  - BVH nodes and primitives are read through RGBA32UI uniform texel buffers (usamplerBuffer,
+//    texelFetch): on Mesa 22.3 lavapipe this was x1.45 faster than SSBO loads (../shared/LAVAPIPE.md).
+//    Integer texels are returned bit-exact, so float fields are stored as their bit patterns and
+//    decoded with uintBitsToFloat; no denormal or NaN canonicalisation can touch the integers.
+#ifndef VKRT_DEVICE_HOST_H
+#define VKRT_DEVICE_HOST_H
+
+#ifdef __cplusplus
+#include <cstddef>
+#include <cstdint>
+#include <glm/glm.hpp>
+namespace vkrt::gpu {
+using uint = std::uint32_t;
+using vec2 = glm::vec2;
+using vec3 = glm::vec3;
+using vec4 = glm::vec4;
+using uvec4 = glm::uvec4;
+using ivec4 = glm::ivec4;
+#define VKRT_CONST static constexpr
+#else
+#define VKRT_CONST const
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// Descriptor set 0 bindings.
+VKRT_CONST uint BINDING_NODES = 0;         // usamplerBuffer RGBA32UI, BVH_NODE_TEXELS texels per node
+VKRT_CONST uint BINDING_PRIMS = 1;         // usamplerBuffer RGBA32UI, PRIM_TEXELS texels per primitive
+VKRT_CONST uint BINDING_PRIM_INFO = 2;     // SSBO PrimInfo[], parallel to the primitive array
+VKRT_CONST uint BINDING_VERTEX_ATTRIBS = 3;// SSBO VertexAttrib[] (mesh normals and uvs)
+VKRT_CONST uint BINDING_INSTANCES = 4;     // SSBO Instance[]
+VKRT_CONST uint BINDING_SHADERS = 5;       // SSBO Material[]
+VKRT_CONST uint BINDING_LIGHTS = 6;        // SSBO Light[]
+VKRT_CONST uint BINDING_TEXTURES = 7;      // SSBO TextureInfo[]
+VKRT_CONST uint BINDING_TEXELS = 8;        // SSBO uint[] (RGBA8 packed texels of all textures)
+VKRT_CONST uint BINDING_FRAME = 9;         // UBO FrameParams
+VKRT_CONST uint BINDING_ACCUM = 10;        // SSBO vec4[] per-pixel radiance sum (rgb), w unused
+VKRT_CONST uint BINDING_STATUS = 11;       // SSBO RenderStatus
+
+// ---------------------------------------------------------------------------------------------
+// BVH node: 64 bytes = 4 RGBA32UI texels, both children's boxes side by side (Aila & Laine 2009),
+// so one contiguous fetch per inner step decides both children.
+//   texel 0: child 0 box  lo.x hi.x lo.y hi.y   (float bits)
+//   texel 1: child 1 box  lo.x hi.x lo.y hi.y   (float bits)
+//   texel 2: lo0.z hi0.z lo1.z hi1.z            (float bits)
+//   texel 3: link0 link1 count0 count1
+// countK == 0: linkK is the index of an inner node (NODE_NONE: empty child, box is empty).
+// countK  > 0: child K is a leaf holding primitives [linkK, linkK + countK) of the global primitive
+//              array (bottom level) or instances [linkK, linkK + countK) (top level).
+// An empty box is stored as lo = +FLT_MAX, hi = -FLT_MAX so the slab test rejects it without NaN.
+VKRT_CONST uint BVH_NODE_TEXELS = 4;
+VKRT_CONST uint NODE_NONE = 0xffffffffu;
+struct BvhNode {
+    uvec4 xy0;
+    uvec4 xy1;
+    uvec4 z01;
+    uvec4 link;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Primitive: 48 bytes = 3 RGBA32UI texels; the leaf ranges of every bottom-level BVH index this
+// array directly (primitives are reordered so each leaf is contiguous).
+//   triangle: a = v0.xyz | tag, b = v1.xyz | 0, c = v2.xyz | 0
+//   sphere:   a = centre.xyz | tag, b = (radius, 0, 0) | 0, c = 0
+//   box:      a = lo.xyz | tag, b = hi.xyz | 0, c = 0
+// tag = kind (PRIM_KIND_*) in the low 2 bits; the rest is unused by traversal.
+VKRT_CONST uint PRIM_TEXELS = 3;
+VKRT_CONST uint PRIM_KIND_TRIANGLE = 0u;
+VKRT_CONST uint PRIM_KIND_SPHERE = 1u;
+VKRT_CONST uint PRIM_KIND_BOX = 2u;
+VKRT_CONST uint PRIM_KIND_MASK = 3u;
+struct Primitive {
+    uvec4 a;
+    uvec4 b;
+    uvec4 c;
+};
+
+// Per primitive, fetched once at the closest hit (never during traversal). 16 bytes.
+//   x: material index (the prototype's or the loose shape's own; an instance override wins)
+//   y, z, w: vertex attribute indices of a mesh triangle's corners, or ATTRIB_NONE (flat normal)
+VKRT_CONST uint ATTRIB_NONE = 0xffffffffu;
+struct PrimInfo {
+    uvec4 data;
+};
+
+// Mesh vertex attributes: normal.xyz + u, then v. 32 bytes.
+struct VertexAttrib {
+    vec4 normalU;
+    vec4 vPad;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Instance: one bottom-level BVH placed by an affine transform. 160 bytes.
+// Rays are transformed into object space without renormalising the direction, so hit distances
+// t are the same in both spaces (world units).
+VKRT_CONST uint MATERIAL_NONE = 0xffffffffu;
+struct Instance {
+    vec4 worldToObject[3];  // rows of the 3x4 inverse affine transform
+    vec4 objectToWorld[3];  // rows of the 3x4 affine transform
+    vec4 normalToWorld[3];  // rows of the inverse transpose of the 3x3 part (w unused)
+    uvec4 info;             // x: root node of the bottom-level BVH, y: material override or
+                            // MATERIAL_NONE, z: geometry group, w: unused
+};
+
+// ---------------------------------------------------------------------------------------------
+// Material (the format's <shader>). 80 bytes.
+VKRT_CONST uint SHADER_LAMBERTIAN = 0u;
+VKRT_CONST uint SHADER_BLINN_PHONG = 1u;
+VKRT_CONST uint SHADER_MIRROR = 2u;
+VKRT_CONST uint SHADER_GLAZE = 3u;
+VKRT_CONST uint SHADER_BLINN_PHONG_MIRRORED = 4u;
+VKRT_CONST uint SHADER_DIELECTRIC = 5u;
+VKRT_CONST uint SHADER_COOL_TO_WARM = 6u;
+VKRT_CONST uint TEXTURE_NONE = 0xffffffffu;
+struct Material {
+    vec4 diffuse;      // rgb diffuse (tint when textured), w unused
+    vec4 specular;     // rgb specular, w = phongExp
+    vec4 attenuation;  // rgb transmittance per unit distance (dielectric), w = refractive index
+    vec4 params;       // x = mirrorCoef, y = roughness, z, w unused
+    uvec4 ids;         // x = SHADER_* type, y = diffuse texture, z = specular texture, w unused
+};
+
+// ---------------------------------------------------------------------------------------------
+// Light. 80 bytes. A point light has zero edges; an area light is the rectangle
+// centre + s*edgeU + t*edgeV, s,t in [-1/2, 1/2]. No falloff, no emitter cosine (course convention).
+VKRT_CONST uint LIGHT_POINT = 0u;
+VKRT_CONST uint LIGHT_AREA = 1u;
+struct Light {
+    vec4 position;   // xyz: point position or area centre
+    vec4 intensity;  // rgb
+    vec4 edgeU;      // xyz: width  * tangent
+    vec4 edgeV;      // xyz: length * bitangent
+    uvec4 info;      // x: LIGHT_* type, y: area-light ordinal (sampling dimension), z, w unused
+};
+
+// Texture: texels[offset .. offset + width*height), row 0 = top row of the image, RGBA8 packed
+// little-endian (r in the low byte), values used linearly (no sRGB decode, like the course).
+struct TextureInfo {
+    uvec4 info;  // x: offset, y: width, z: height, w: unused
+};
+
+// ---------------------------------------------------------------------------------------------
+// Per-render constants (UBO, std140-compatible because every member is a 16-byte vector).
+VKRT_CONST uint CAMERA_PERSPECTIVE = 0u;
+VKRT_CONST uint CAMERA_ORTHOGRAPHIC = 1u;
+VKRT_CONST uint SAMPLER_JITTERED = 0u;
+VKRT_CONST uint SAMPLER_REGULAR = 1u;
+VKRT_CONST uint SAMPLER_RANDOM = 2u;
+VKRT_CONST uint SAMPLER_SOBOL = 3u;
+struct FrameParams {
+    vec4 cameraPosition;  // xyz eye, w unused
+    vec4 cameraU;         // xyz unit right vector, w = image plane width
+    vec4 cameraV;         // xyz unit up vector,    w = image plane height
+    vec4 cameraW;         // xyz unit backward vector (-gaze), w = focal length
+    vec4 background;      // rgb
+    uvec4 image;          // x width, y height, z camera type, w unused
+    uvec4 sampling;       // x sampler, y samples per pixel, z light samples, w gloss samples
+    uvec4 scene;          // x seed, y max depth, z light count, w top-level root node
+    uvec4 pixelGrid;      // SampleGrid of the rpp pixel samples (see sampling.h)
+    uvec4 lightGrid;      // SampleGrid of the rpp * lightSamples area-light samples
+    uvec4 glossGrid;      // SampleGrid of the rpp * glossSamples glossy directions
+};
+
+// Written by the kernel, read by the host after each submission.
+VKRT_CONST uint STATUS_LOOP_BUDGET_EXCEEDED = 1u;
+VKRT_CONST uint STATUS_RAY_STACK_OVERFLOW = 2u;
+struct RenderStatus {
+    uvec4 flags;       // x: STATUS_* bits, y: first offending pixel index, z: sample, w: unused
+};
+
+// Push constants: which pixels and which sample this dispatch computes.
+struct PassParams {
+    uvec4 tile;        // x, y origin, z width, w height (pixels)
+    uvec4 pass;        // x sample index, y workgroup interleave stride, z workgroups, w unused
+};
+
+// Specialization constant ids: the scene's feature set (the kernel is specialised per scene).
+VKRT_CONST uint SPEC_HAS_TRIANGLES = 0;
+VKRT_CONST uint SPEC_HAS_SPHERES = 1;
+VKRT_CONST uint SPEC_HAS_BOXES = 2;
+VKRT_CONST uint SPEC_HAS_INSTANCES = 3;     // a top-level BVH is traversed
+VKRT_CONST uint SPEC_HAS_AREA_LIGHTS = 4;
+VKRT_CONST uint SPEC_HAS_SPECULAR = 5;      // Blinn-Phong highlights
+VKRT_CONST uint SPEC_HAS_REFLECTION = 6;    // Mirror, Glaze, BlinnPhongMirrored
+VKRT_CONST uint SPEC_HAS_GLOSS = 7;         // roughness > 0 somewhere
+VKRT_CONST uint SPEC_HAS_DIELECTRIC = 8;
+VKRT_CONST uint SPEC_HAS_TEXTURES = 9;
+VKRT_CONST uint SPEC_HAS_COOL_TO_WARM = 10;
+VKRT_CONST uint SPEC_MAX_DEPTH = 11;        // recursion depth the scene can use
+VKRT_CONST uint SPEC_COUNT = 12;
+
+// Per invocation, the kernel counts loop iterations and stops (setting
+// STATUS_LOOP_BUDGET_EXCEEDED) before Mesa's silent 65,535-back-edge loop limit can cut it off.
+VKRT_CONST uint LOOP_BUDGET = 60000u;
+
+#ifdef __cplusplus
+static_assert(sizeof(BvhNode) == 64);
+static_assert(sizeof(Primitive) == 48);
+static_assert(sizeof(PrimInfo) == 16);
+static_assert(sizeof(VertexAttrib) == 32);
+static_assert(sizeof(Instance) == 160);
+static_assert(offsetof(Instance, info) == 144);
+static_assert(sizeof(Material) == 80);
+static_assert(sizeof(Light) == 80);
+static_assert(sizeof(TextureInfo) == 16);
+static_assert(sizeof(FrameParams) == 176);
+static_assert(sizeof(RenderStatus) == 16);
+static_assert(sizeof(PassParams) == 32);
+}  // namespace vkrt::gpu
+#endif
+
+#endif  // VKRT_DEVICE_HOST_H
