@@ -1,0 +1,35 @@
+// What a render is asked to do, shared by the CPU reference and the GPU renderer so both
+// compute the same image (docs/RENDERING.md).
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <optional>
+
+#include <glm/glm.hpp>
+
+namespace vkrt {
+
+// Values match gpu::SAMPLER_* in shaders/shared/device_host.h.
+enum class SamplerKind : std::uint32_t { Jittered = 0, Regular = 1, Random = 2, Sobol = 3 };
+
+struct RenderOptions {
+    int width = 250;             // the instructor's reference renders are 250x250
+    int height = 250;
+    int samplesPerPixel = 16;    // rpp; n*n jitter when it is a square (references used ~16)
+    int lightSamples = 1;        // area-light samples per pixel sample
+    int glossSamples = 1;        // glossy directions per pixel sample
+    int maxDepth = 4;            // reflection/refraction recursion (course default -k 4)
+    std::uint32_t seed = 0;
+    SamplerKind sampler = SamplerKind::Jittered;
+    std::optional<glm::vec3> background;  // overrides the scene's bgColor
+    int camera = 0;              // index into Scene::cameras
+    int threads = 0;             // CPU threads, 0 = all hardware threads
+    bool quiet = false;          // no progress bar
+    // Set asynchronously (Ctrl-C); renderers stop at the next tile or pass and throw RenderCancelled.
+    const std::atomic<bool>* cancel = nullptr;
+};
+
+struct RenderCancelled {};
+
+}  // namespace vkrt
