@@ -1,0 +1,43 @@
+// The scene's geometry as bvh_builder sees it: geometry groups and instances, and the way back
+// from a hit (instance, flat primitive) to the scene model, for shading. Both renderers use it.
+//
+// Groups: group 0 holds the loose spheres, boxes and triangles of Scene::shapes (world space,
+// placed by one identity instance); every mesh shape of Scene::shapes is a group with its own
+// identity instance; every prototype is a group placed by the scene's instances.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "bvh.h"
+#include "scene.h"
+
+namespace vkrt {
+
+// Where a group's input primitive came from.
+struct PrimOrigin {
+    const Shape* shape = nullptr;  // the loose shape, mesh shape or prototype
+    int triangle = -1;             // mesh triangle index, or -1
+};
+
+struct SceneAccel {
+    bvh::SceneBvh bvh;
+    std::vector<std::vector<PrimOrigin>> groupPrims;  // per group, per input primitive
+    std::vector<int> instanceOrigin;                  // per BVH instance: index into Scene::instances, or -1
+
+    // The primitive a hit refers to.
+    const PrimOrigin& origin(std::uint32_t instance, std::uint32_t flatPrim) const {
+        const std::uint32_t group = bvh.instances[instance].info.z;
+        return groupPrims[group][bvh.primSource[flatPrim]];
+    }
+    // The shader index a hit shades with: the instance's override, else the shape's own.
+    int shaderOf(std::uint32_t instance, std::uint32_t flatPrim) const {
+        const std::uint32_t override = bvh.instances[instance].info.y;
+        return override != gpu::MATERIAL_NONE ? static_cast<int>(override) : origin(instance, flatPrim).shape->shader;
+    }
+};
+
+// The scene must outlive the result (PrimOrigin points into it).
+SceneAccel buildSceneAccel(const Scene& scene, const bvh::BuildOptions& options = {});
+
+}  // namespace vkrt
