@@ -50,7 +50,9 @@ VKRT_CONST uint BINDING_STATUS = 11;       // SSBO RenderStatus
 // countK == 0: linkK is the index of an inner node (NODE_NONE: empty child, box is empty).
 // countK  > 0: child K is a leaf holding primitives [linkK, linkK + countK) of the global primitive
 //              array (bottom level) or instances [linkK, linkK + countK) (top level).
-// An empty box is stored as lo = +FLT_MAX, hi = -FLT_MAX so the slab test rejects it without NaN.
+// An empty child (countK == 0, linkK == NODE_NONE) stores lo = +FLT_MAX, hi = -FLT_MAX; a
+// min/max slab test would treat that inverted box as everything, so traversals skip an empty
+// child by its link, never by its box.
 VKRT_CONST uint BVH_NODE_TEXELS = 4;
 VKRT_CONST uint NODE_NONE = 0xffffffffu;
 struct BvhNode {
@@ -190,7 +192,12 @@ VKRT_CONST uint SPEC_HAS_DIELECTRIC = 8;
 VKRT_CONST uint SPEC_HAS_TEXTURES = 9;
 VKRT_CONST uint SPEC_HAS_COOL_TO_WARM = 10;
 VKRT_CONST uint SPEC_MAX_DEPTH = 11;        // recursion depth the scene can use
-VKRT_CONST uint SPEC_COUNT = 12;
+VKRT_CONST uint SPEC_PATH_STACK_SIZE = 12;   // pending reflection/refraction rays (maxDepth + glossSamples)
+VKRT_CONST uint SPEC_COUNT = 13;
+
+// Entries of the kernel's BVH traversal stack. The host refuses a BVH whose top-level depth plus
+// deepest bottom-level depth exceeds it, so the stack can never overflow at run time.
+VKRT_CONST uint TRAVERSAL_STACK_SIZE = 48u;
 
 // Per invocation, the kernel counts loop iterations and stops (setting
 // STATUS_LOOP_BUDGET_EXCEEDED) before Mesa's silent 65,535-back-edge loop limit can cut it off.
