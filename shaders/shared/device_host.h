@@ -170,7 +170,8 @@ struct FrameParams {
 VKRT_CONST uint STATUS_LOOP_BUDGET_EXCEEDED = 1u;
 VKRT_CONST uint STATUS_RAY_STACK_OVERFLOW = 2u;
 struct RenderStatus {
-    uvec4 flags;       // x: STATUS_* bits, y: first offending pixel index, z: sample, w: unused
+    uvec4 flags;       // x: STATUS_* bits, y: first offending pixel index + 1 (0: none), z: its sample,
+                       // w: number of samples whose radiance was NaN/Inf (replaced by black)
 };
 
 // Push constants: which pixels and which sample this dispatch computes.

@@ -1,0 +1,167 @@
+// The radiance of one camera sample: Whitted-style recursion with Cook's distribution effects,
+// written as a loop over an explicit stack of pending rays (GLSL has no recursion). Only
+// dielectrics (two branches) and depth-0 gloss samples push; everything else continues in place,
+// so the stack never holds more than MAX_DEPTH + glossSamples entries (PATH_STACK_SIZE).
+#ifndef VKRT_INTEGRATOR_GLSL
+#define VKRT_INTEGRATOR_GLSL
+
+const float FLT_MAX = 3.402823466e+38;
+const float MIN_RAY_WEIGHT = 1.0 / 1024.0;  // RENDERING.md §5: lighter rays are not traced
+
+struct PathRay {
+    vec3 origin;
+    vec3 dir;      // unit length
+    vec3 weight;
+    uint depth;
+};
+
+// Children of the current hit: the first becomes the next ray, the rest wait on the stack.
+struct PathQueue {
+    PathRay next;
+    bool hasNext;
+};
+
+PathRay g_pathStack[PATH_STACK_SIZE];
+uint g_pathTop = 0u;
+
+void emitRay(inout PathQueue q, vec3 origin, vec3 dir, vec3 weight, uint depth) {
+    if (max(max(weight.x, weight.y), weight.z) < MIN_RAY_WEIGHT) return;
+    PathRay r = PathRay(origin, dir, weight, depth);
+    if (!q.hasNext) {
+        q.next = r;
+        q.hasNext = true;
+    } else if (g_pathTop < PATH_STACK_SIZE) {
+        g_pathStack[g_pathTop++] = r;
+    } else {
+        atomicOr(status.flags.x, STATUS_RAY_STACK_OVERFLOW);
+    }
+}
+
+// The mirror direction perturbed within the square of side `roughness` in r's (U, V) basis.
+vec3 glossyDirection(vec3 r, float roughness, vec2 u) {
+    vec3 a = abs(r);
+    vec3 axis = (a.x <= a.y && a.x <= a.z) ? vec3(1.0, 0.0, 0.0) : (a.y <= a.z ? vec3(0.0, 1.0, 0.0) : vec3(0.0, 0.0, 1.0));
+    vec3 U = normalize(cross(r, axis));
+    vec3 V = cross(r, U);
+    return normalize(r + roughness * (u.x - 0.5) * U + roughness * (u.y - 0.5) * V);
+}
+
+// Reflection rays of a reflective material (mirror direction, or glossy samples of it).
+void emitReflection(inout PathQueue q, PathRay ray, Surface s, vec3 N, float roughness, vec3 weight, SampleKey key) {
+    if (ray.depth >= MAX_DEPTH || ray.depth >= frame.scene.y) return;
+    vec3 r = reflect(ray.dir, N);
+    if (!HAS_GLOSS || roughness <= 0.0) {
+        if (dot(r, s.geomNormal) > 0.0) emitRay(q, offsetTowards(s, r), r, weight, ray.depth + 1u);
+        return;
+    }
+    bool fanOut = ray.depth == 0u;  // gloss samples apply at primary hits only (RENDERING.md §5)
+    uint g = fanOut ? frame.sampling.w : 1u;
+    vec3 w = weight / float(g);
+    for (uint j = 0u; j < g; ++j) {
+        if (!chargeLoop()) break;
+        vec2 u = fanOut ? sample2D(frame.sampling.x, frame.glossGrid, key.pixel, key.index * g + j, dimGloss(0u), key.seed)
+                        : sample2D(frame.sampling.x, frame.pixelGrid, key.pixel, key.index, dimGloss(ray.depth), key.seed);
+        vec3 rg = glossyDirection(r, roughness, u);
+        if (dot(rg, s.geomNormal) > 0.0) emitRay(q, offsetTowards(s, rg), rg, w, ray.depth + 1u);
+    }
+}
+
+// Fresnel-weighted reflection and refraction at a dielectric boundary (RENDERING.md §6).
+void emitDielectric(inout PathQueue q, PathRay ray, Surface s, Material m, float hitDistance) {
+    bool entering = dot(ray.dir, s.geomNormal) < 0.0;
+    vec3 weight = ray.weight;
+    // Leaving the medium: Beer-Lambert over the distance travelled inside (per-unit transmittance).
+    if (!entering) weight *= pow(max(m.attenuation.rgb, vec3(0.0)), vec3(hitDistance));
+    if (ray.depth >= MAX_DEPTH || ray.depth >= frame.scene.y) return;
+    float eta = m.attenuation.w;
+    vec3 n = entering ? s.shadeNormal : -s.shadeNormal;  // faces the incoming ray
+    float n1 = entering ? 1.0 : eta;
+    float n2 = entering ? eta : 1.0;
+    float cosI = clamp(-dot(ray.dir, n), 0.0, 1.0);
+    float F;
+    vec3 refracted = ray.dir;
+    if (eta == 1.0) {
+        F = 0.0;  // index-matched: no reflection, no bending (exactly)
+    } else {
+        float ratio = n1 / n2;
+        float sin2T = ratio * ratio * (1.0 - cosI * cosI);
+        if (sin2T >= 1.0) {
+            F = 1.0;  // total internal reflection
+        } else {
+            float cosT = sqrt(1.0 - sin2T);
+            float rs = (n1 * cosI - n2 * cosT) / (n1 * cosI + n2 * cosT);
+            float rp = (n1 * cosT - n2 * cosI) / (n1 * cosT + n2 * cosI);
+            F = 0.5 * (rs * rs + rp * rp);
+            refracted = normalize(ratio * ray.dir + (ratio * cosI - cosT) * n);
+        }
+    }
+    if (F > 0.0) {
+        vec3 r = reflect(ray.dir, n);
+        emitRay(q, offsetTowards(s, r), r, weight * F, ray.depth + 1u);
+    }
+    if (F < 1.0) emitRay(q, offsetTowards(s, refracted), refracted, weight * (1.0 - F), ray.depth + 1u);
+}
+
+vec3 cameraSampleRadiance(vec3 origin, vec3 dir, SampleKey key) {
+    vec3 radiance = vec3(0.0);
+    g_pathTop = 0u;
+    PathRay ray = PathRay(origin, dir, vec3(1.0), 0u);
+    vec3 background = frame.background.rgb;
+    while (true) {
+        if (!chargeLoop()) break;
+        PathQueue q;
+        q.hasNext = false;
+        Hit hit;
+        if (!traceScene(ray.origin, ray.dir, FLT_MAX, false, hit)) {
+            radiance += ray.weight * background;
+        } else {
+            Surface s = surfaceAt(ray.origin, ray.dir, hit);
+            Material m = materials[s.material];
+            uint type = m.ids.x;
+            if (HAS_DIELECTRIC && type == SHADER_DIELECTRIC) {
+                emitDielectric(q, ray, s, m, hit.t);
+            } else {
+                // Two-sided shading: turn the normals towards the viewer.
+                vec3 V = -ray.dir;
+                if (dot(s.geomNormal, V) < 0.0) {
+                    s.geomNormal = -s.geomNormal;
+                    s.shadeNormal = -s.shadeNormal;
+                }
+                vec3 N = s.shadeNormal;
+                vec3 kd = m.diffuse.rgb;
+                vec3 ks = m.specular.rgb;
+                if (HAS_TEXTURES) {
+                    if (m.ids.y != TEXTURE_NONE) kd *= sampleTexture(m.ids.y, s.uv);
+                    if (m.ids.z != TEXTURE_NONE) ks *= sampleTexture(m.ids.z, s.uv);
+                }
+                vec3 local = vec3(0.0);
+                if (type != SHADER_MIRROR)
+                    local = directLighting(s, N, V, type, kd, ks, m.specular.w, ray.depth, key);
+                float mirror = m.params.x;
+                if (!HAS_REFLECTION || type == SHADER_LAMBERTIAN || type == SHADER_BLINN_PHONG ||
+                    type == SHADER_COOL_TO_WARM) {
+                    radiance += ray.weight * local;
+                } else if (type == SHADER_MIRROR) {
+                    emitReflection(q, ray, s, N, m.params.y, ray.weight, key);
+                } else if (type == SHADER_GLAZE) {
+                    radiance += ray.weight * local;
+                    emitReflection(q, ray, s, N, m.params.y, ray.weight * mirror, key);
+                } else {  // SHADER_BLINN_PHONG_MIRRORED
+                    radiance += ray.weight * (1.0 - mirror) * local;
+                    emitReflection(q, ray, s, N, m.params.y, ray.weight * mirror, key);
+                }
+            }
+        }
+        if (g_budgetExceeded) break;
+        if (q.hasNext) {
+            ray = q.next;
+        } else if (g_pathTop > 0u) {
+            ray = g_pathStack[--g_pathTop];
+        } else {
+            break;
+        }
+    }
+    return radiance;
+}
+
+#endif

@@ -1,0 +1,72 @@
+// Local shading: every light (and area-light sample) with its shadow ray, per the material's
+// model (docs/RENDERING.md §4, §5).
+#ifndef VKRT_SHADING_GLSL
+#define VKRT_SHADING_GLSL
+
+// Where a sample is in the sampling sequence (sampling.h keys).
+struct SampleKey {
+    uint pixel;
+    uint index;   // pixel sample s
+    uint seed;
+};
+
+// A shadow ray ends just short of the light (RENDERING.md §4): t is in units of (q - origin).
+const float SHADOW_T_MAX = 1.0 - 1.0 / 65536.0;
+
+bool visible(Surface s, vec3 towardsLight, vec3 lightPoint) {
+    vec3 origin = offsetTowards(s, towardsLight);
+    Hit ignored;
+    return !traceScene(origin, lightPoint - origin, SHADOW_T_MAX, true, ignored);
+}
+
+// Shading of one light position q with intensity I. N faces the viewer.
+vec3 lightFrom(Surface s, vec3 N, vec3 V, uint type, vec3 kd, vec3 ks, float phongExp, vec3 q, vec3 I) {
+    vec3 toLight = q - s.position;
+    float dist2 = dot(toLight, toLight);
+    if (!(dist2 > 0.0)) return vec3(0.0);
+    vec3 L = toLight * inversesqrt(dist2);
+    float nDotL = dot(N, L);
+    if (HAS_COOL_TO_WARM && type == SHADER_COOL_TO_WARM) {
+        // Gooch et al. 1998: blend from cool (facing away) to warm (facing the light); unshadowed.
+        vec3 kCool = vec3(0.0, 0.0, 0.4) + 0.2 * kd;
+        vec3 kWarm = vec3(0.4, 0.4, 0.0) + 0.6 * kd;
+        float t = 0.5 * (1.0 + nDotL);
+        return I * (t * kWarm + (1.0 - t) * kCool);
+    }
+    if (nDotL <= 0.0) return vec3(0.0);
+    if (!visible(s, L, q)) return vec3(0.0);
+    vec3 c = kd * nDotL;
+    if (HAS_SPECULAR && (type == SHADER_BLINN_PHONG || type == SHADER_BLINN_PHONG_MIRRORED)) {
+        vec3 H = normalizeOr(L + V, N);
+        float nDotH = max(dot(N, H), 0.0);
+        // pow(0, 0) is undefined in GLSL; the course's exponent 0 means a constant highlight of 1.
+        c += ks * (phongExp == 0.0 ? 1.0 : pow(nDotH, phongExp));
+    }
+    return c * I;
+}
+
+vec3 directLighting(Surface s, vec3 N, vec3 V, uint type, vec3 kd, vec3 ks, float phongExp, uint depth, SampleKey key) {
+    vec3 sum = vec3(0.0);
+    uint lightCount = frame.scene.z;
+    for (uint l = 0u; l < lightCount; ++l) {
+        if (!chargeLoop()) break;
+        Light light = lights[l];
+        if (HAS_AREA_LIGHTS && light.info.x == LIGHT_AREA) {
+            uint k = frame.sampling.z;
+            vec3 acc = vec3(0.0);
+            for (uint j = 0u; j < k; ++j) {
+                if (!chargeLoop()) break;
+                vec2 u = sample2D(frame.sampling.x, frame.lightGrid, key.pixel, key.index * k + j,
+                                  dimLight(depth, light.info.y), key.seed);
+                vec3 q = light.position.xyz + (u.x - 0.5) * light.edgeU.xyz + (u.y - 0.5) * light.edgeV.xyz;
+                acc += lightFrom(s, N, V, type, kd, ks, phongExp, q, light.intensity.rgb);
+            }
+            sum += acc / float(k);
+        } else {
+            sum += lightFrom(s, N, V, type, kd, ks, phongExp, light.position.xyz, light.intensity.rgb);
+        }
+    }
+    return sum;
+}
+
+#endif

@@ -1,0 +1,129 @@
+// What shading needs to know about a hit: world position, normals, texture coordinates and the
+// material, reconstructed once from the primitive (docs/RENDERING.md §3, §6, §7).
+#ifndef VKRT_SURFACE_GLSL
+#define VKRT_SURFACE_GLSL
+
+const float PI = 3.14159265358979;
+
+struct Surface {
+    vec3 position;     // world space, on the surface (not offset)
+    vec3 geomNormal;   // world space, unit, the primitive's outward side (sphere/box outward, triangle winding)
+    vec3 shadeNormal;  // world space, unit, same side as geomNormal
+    vec2 uv;
+    uint material;
+};
+
+vec3 rowTransformPoint(vec4 r0, vec4 r1, vec4 r2, vec3 p) {
+    return vec3(dot(r0.xyz, p) + r0.w, dot(r1.xyz, p) + r1.w, dot(r2.xyz, p) + r2.w);
+}
+
+vec3 rowTransformVector(vec4 r0, vec4 r1, vec4 r2, vec3 v) {
+    return vec3(dot(r0.xyz, v), dot(r1.xyz, v), dot(r2.xyz, v));
+}
+
+// A unit vector, or `fallback` when v is zero or not finite (degenerate geometry must not make NaN).
+vec3 normalizeOr(vec3 v, vec3 fallback) {
+    float len2 = dot(v, v);
+    if (!(len2 > 0.0) || isinf(len2)) return fallback;
+    return v * inversesqrt(len2);
+}
+
+Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
+    Surface s;
+    s.uv = vec2(0.0);
+    vec3 o = origin;
+    vec3 d = dir;
+    if (HAS_INSTANCES) {
+        o = rowTransformPoint(instances[hit.instance].worldToObject[0], instances[hit.instance].worldToObject[1],
+                              instances[hit.instance].worldToObject[2], origin);
+        d = rowTransformVector(instances[hit.instance].worldToObject[0], instances[hit.instance].worldToObject[1],
+                               instances[hit.instance].worldToObject[2], dir);
+    }
+
+    int base = int(hit.prim * PRIM_TEXELS);
+    uvec4 a = texelFetch(primitives, base);
+    uint kind = a.w & PRIM_KIND_MASK;
+    uvec4 info = primInfos[hit.prim].data;
+    vec3 p;
+    vec3 ng;
+    vec3 ns;
+    if (kind == PRIM_KIND_TRIANGLE) {
+        vec3 v0 = texelFloats(a);
+        vec3 v1 = texelFloats(texelFetch(primitives, base + 1));
+        vec3 v2 = texelFloats(texelFetch(primitives, base + 2));
+        float b0 = 1.0 - hit.bary.x - hit.bary.y;
+        // Barycentric reconstruction: accurate to a few ULPs of the vertices, unlike o + t*d.
+        p = b0 * v0 + hit.bary.x * v1 + hit.bary.y * v2;
+        ng = cross(v1 - v0, v2 - v0);
+        ns = ng;
+        s.uv = hit.bary;
+        if (info.y != ATTRIB_NONE) {
+            VertexAttrib a0 = vertexAttribs[info.y];
+            VertexAttrib a1 = vertexAttribs[info.z];
+            VertexAttrib a2 = vertexAttribs[info.w];
+            vec3 n = b0 * a0.normalU.xyz + hit.bary.x * a1.normalU.xyz + hit.bary.y * a2.normalU.xyz;
+            ns = dot(n, n) > 0.0 ? n : ng;
+            if (HAS_TEXTURES)
+                s.uv = b0 * vec2(a0.normalU.w, a0.vPad.x) + hit.bary.x * vec2(a1.normalU.w, a1.vPad.x) +
+                       hit.bary.y * vec2(a2.normalU.w, a2.vPad.x);
+        }
+    } else if (kind == PRIM_KIND_SPHERE) {
+        vec3 center = texelFloats(a);
+        float radius = uintBitsToFloat(texelFetch(primitives, base + 1).x);
+        vec3 q = o + hit.t * d;
+        vec3 n = normalizeOr(q - center, vec3(0.0, 1.0, 0.0));
+        p = center + radius * n;  // re-projected onto the sphere
+        ng = n;
+        ns = n;
+        if (HAS_TEXTURES) s.uv = vec2(0.5 + atan(n.x, n.z) / (2.0 * PI), 0.5 + asin(clamp(n.y, -1.0, 1.0)) / PI);
+    } else {
+        vec3 lo = texelFloats(a);
+        vec3 hi = texelFloats(texelFetch(primitives, base + 1));
+        // Which face: redo the slab test and take the axis that decided the entry (or exit).
+        vec3 invD = safeInverse(d);
+        vec3 t0 = (lo - o) * invD;
+        vec3 t1 = (hi - o) * invD;
+        vec3 tMin = min(t0, t1);
+        vec3 tMax = max(t0, t1);
+        float tEnter = max(max(tMin.x, tMin.y), tMin.z);
+        int axis;
+        float side;  // +1: the hi face, -1: the lo face
+        if (tEnter > 0.0) {
+            axis = (tMin.x >= tMin.y && tMin.x >= tMin.z) ? 0 : (tMin.y >= tMin.z ? 1 : 2);
+            side = d[axis] < 0.0 ? 1.0 : -1.0;
+        } else {
+            axis = (tMax.x <= tMax.y && tMax.x <= tMax.z) ? 0 : (tMax.y <= tMax.z ? 1 : 2);
+            side = d[axis] < 0.0 ? -1.0 : 1.0;
+        }
+        p = o + hit.t * d;
+        p[axis] = side > 0.0 ? hi[axis] : lo[axis];  // snapped onto the face plane
+        ng = vec3(0.0);
+        ng[axis] = side;
+        ns = ng;
+        if (HAS_TEXTURES) {
+            int b = (axis + 1) % 3;
+            int c = (axis + 2) % 3;
+            float eb = hi[b] - lo[b];
+            float ec = hi[c] - lo[c];
+            s.uv = vec2(eb > 0.0 ? (p[b] - lo[b]) / eb : 0.0, ec > 0.0 ? (p[c] - lo[c]) / ec : 0.0);
+        }
+    }
+
+    vec3 fallback = normalizeOr(-dir, vec3(0.0, 1.0, 0.0));
+    if (HAS_INSTANCES) {
+        Instance inst = instances[hit.instance];
+        p = rowTransformPoint(inst.objectToWorld[0], inst.objectToWorld[1], inst.objectToWorld[2], p);
+        ng = rowTransformVector(inst.normalToWorld[0], inst.normalToWorld[1], inst.normalToWorld[2], ng);
+        ns = rowTransformVector(inst.normalToWorld[0], inst.normalToWorld[1], inst.normalToWorld[2], ns);
+        s.material = inst.info.y != MATERIAL_NONE ? inst.info.y : info.x;
+    } else {
+        s.material = info.x;
+    }
+    s.position = p;
+    s.geomNormal = normalizeOr(ng, fallback);
+    s.shadeNormal = normalizeOr(ns, s.geomNormal);
+    if (dot(s.shadeNormal, s.geomNormal) < 0.0) s.shadeNormal = -s.shadeNormal;
+    return s;
+}
+
+#endif

@@ -1,0 +1,155 @@
+// Two-level BVH traversal: iterative, one fixed private stack (no recursion in GLSL).
+// Nodes hold both children's boxes (64 bytes, 4 texels), so each step decides both children
+// from one contiguous fetch; bottom-level leaves are intersected as soon as their box is hit.
+#ifndef VKRT_TRAVERSE_GLSL
+#define VKRT_TRAVERSE_GLSL
+
+struct Hit {
+    float t;
+    uint instance;  // index into instances[]
+    uint prim;      // index into the primitive array
+    vec2 bary;      // triangle: barycentric weights of v1 and v2
+};
+
+// Stack entries: an inner node index, an instance to enter (top bit set), or the marker that
+// returns from an instance's bottom level to the top level.
+const uint ENTRY_INSTANCE_BIT = 0x80000000u;
+const uint ENTRY_LEAVE_INSTANCE = 0xffffffffu;
+const uint ENTRY_NONE = 0xfffffffeu;
+
+vec3 texelFloats(uvec4 t) { return uintBitsToFloat(t.xyz); }
+
+// Slab test of one child box, conservative by 1 + 2*gamma(3) on the exit distance (Ize 2013,
+// "Robust BVH Ray Traversal") so rounding can never cull a box the ray truly enters.
+bool hitsBox(TraceRay ray, vec3 lo, vec3 hi, float tBest, out float tNear) {
+    vec3 t0 = (lo - ray.origin) * ray.invDir;
+    vec3 t1 = (hi - ray.origin) * ray.invDir;
+    vec3 tMin = min(t0, t1);
+    vec3 tMax = max(t0, t1);
+    tNear = max(max(max(tMin.x, tMin.y), tMin.z), 0.0);
+    float tFar = min(min(min(tMax.x, tMax.y), tMax.z), tBest) * 1.00000036;
+    return tNear <= tFar;
+}
+
+bool intersectPrimitive(TraceRay ray, uint prim, float tBest, out float tHit, out vec2 bary) {
+    tHit = 0.0;
+    bary = vec2(0.0);
+    int base = int(prim * PRIM_TEXELS);
+    uvec4 a = texelFetch(primitives, base);
+    uint kind = a.w & PRIM_KIND_MASK;
+    if (HAS_TRIANGLES && kind == PRIM_KIND_TRIANGLE) {
+        vec3 v1 = texelFloats(texelFetch(primitives, base + 1));
+        vec3 v2 = texelFloats(texelFetch(primitives, base + 2));
+        return intersectTriangle(ray, texelFloats(a), v1, v2, tBest, tHit, bary);
+    }
+    if (HAS_SPHERES && kind == PRIM_KIND_SPHERE) {
+        float radius = uintBitsToFloat(texelFetch(primitives, base + 1).x);
+        return intersectSphere(ray, texelFloats(a), radius, tBest, tHit);
+    }
+    if (HAS_BOXES && kind == PRIM_KIND_BOX) {
+        vec3 hi = texelFloats(texelFetch(primitives, base + 1));
+        return intersectBox(ray, texelFloats(a), hi, tBest, tHit);
+    }
+    return false;
+}
+
+// The world ray in an instance's object space (direction not renormalised: t is unchanged).
+TraceRay rayIntoInstance(vec3 origin, vec3 dir, uint instance) {
+    vec4 r0 = instances[instance].worldToObject[0];
+    vec4 r1 = instances[instance].worldToObject[1];
+    vec4 r2 = instances[instance].worldToObject[2];
+    vec3 o = vec3(dot(r0.xyz, origin) + r0.w, dot(r1.xyz, origin) + r1.w, dot(r2.xyz, origin) + r2.w);
+    vec3 d = vec3(dot(r0.xyz, dir), dot(r1.xyz, dir), dot(r2.xyz, dir));
+    return makeTraceRay(o, d);
+}
+
+// One child of a node whose box the ray hits: an inner node or an instance to visit later
+// (returned), or a bottom-level leaf intersected right away (ENTRY_NONE returned).
+uint visitChild(TraceRay ray, bool hitChild, uint childLink, uint count, bool inBottom, uint instance, bool anyHit,
+                inout Hit hit, inout bool found) {
+    if (!hitChild) return ENTRY_NONE;
+    if (count == 0u) return childLink;
+    if (!inBottom) return ENTRY_INSTANCE_BIT | childLink;  // top-level leaves hold one instance
+    for (uint i = 0u; i < count; ++i) {
+        if (!chargeLoop()) break;
+        float t;
+        vec2 bary;
+        if (intersectPrimitive(ray, childLink + i, hit.t, t, bary)) {
+            hit.t = t;
+            hit.instance = instance;
+            hit.prim = childLink + i;
+            hit.bary = bary;
+            found = true;
+            if (anyHit) break;
+        }
+    }
+    return ENTRY_NONE;
+}
+
+// Closest hit (anyHit = false) or any hit (shadow rays) with 0 < t < tMax.
+bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
+    hit.t = tMax;
+    hit.instance = 0u;
+    hit.prim = 0u;
+    hit.bary = vec2(0.0);
+    bool found = false;
+
+    TraceRay worldRay = makeTraceRay(origin, dir);
+    TraceRay ray = worldRay;
+    uint stack[TRAVERSAL_STACK_SIZE];
+    uint sp = 0u;
+    uint instance = 0u;
+    // Without instancing the scene is one identity instance whose bottom level is in world space.
+    bool inBottom = !HAS_INSTANCES;
+    uint entry = HAS_INSTANCES ? frame.scene.w : instances[0].info.x;
+
+    while (true) {
+        if (!chargeLoop()) break;
+        if (entry == ENTRY_LEAVE_INSTANCE) {
+            ray = worldRay;
+            inBottom = false;
+        } else if ((entry & ENTRY_INSTANCE_BIT) != 0u) {
+            instance = entry & ~ENTRY_INSTANCE_BIT;
+            ray = rayIntoInstance(origin, dir, instance);
+            inBottom = true;
+            if (sp >= TRAVERSAL_STACK_SIZE) { atomicOr(status.flags.x, STATUS_RAY_STACK_OVERFLOW); break; }
+            stack[sp++] = ENTRY_LEAVE_INSTANCE;
+            entry = instances[instance].info.x;
+            continue;
+        } else {
+            int base = int(entry * BVH_NODE_TEXELS);
+            uvec4 xy0 = texelFetch(bvhNodes, base);
+            uvec4 xy1 = texelFetch(bvhNodes, base + 1);
+            uvec4 z01 = texelFetch(bvhNodes, base + 2);
+            uvec4 link = texelFetch(bvhNodes, base + 3);
+            vec4 fxy0 = uintBitsToFloat(xy0);
+            vec4 fxy1 = uintBitsToFloat(xy1);
+            vec4 fz = uintBitsToFloat(z01);
+            float tNear0, tNear1;
+            bool hit0 = (link.z != 0u || link.x != NODE_NONE) &&
+                        hitsBox(ray, vec3(fxy0.x, fxy0.z, fz.x), vec3(fxy0.y, fxy0.w, fz.y), hit.t, tNear0);
+            bool hit1 = (link.w != 0u || link.y != NODE_NONE) &&
+                        hitsBox(ray, vec3(fxy1.x, fxy1.z, fz.z), vec3(fxy1.y, fxy1.w, fz.w), hit.t, tNear1);
+            uint next0 = visitChild(ray, hit0, link.x, link.z, inBottom, instance, anyHit, hit, found);
+            if (found && anyHit) return true;
+            uint next1 = visitChild(ray, hit1, link.y, link.w, inBottom, instance, anyHit, hit, found);
+            if (found && anyHit) return true;
+            if (next0 != ENTRY_NONE && next1 != ENTRY_NONE) {
+                bool swapOrder = tNear1 < tNear0;
+                uint nearEntry = swapOrder ? next1 : next0;
+                uint farEntry = swapOrder ? next0 : next1;
+                if (sp >= TRAVERSAL_STACK_SIZE) { atomicOr(status.flags.x, STATUS_RAY_STACK_OVERFLOW); break; }
+                stack[sp++] = farEntry;
+                entry = nearEntry;
+                continue;
+            }
+            if (next0 != ENTRY_NONE) { entry = next0; continue; }
+            if (next1 != ENTRY_NONE) { entry = next1; continue; }
+        }
+        if (sp == 0u) break;
+        entry = stack[--sp];
+    }
+    return found;
+}
+
+#endif
