@@ -1,0 +1,39 @@
+#include "camera.h"
+
+#include <cmath>
+
+namespace vkrt::cpu {
+
+CameraFrame makeCameraFrame(const Camera& camera, int width, int height) {
+    CameraFrame f;
+    f.type = camera.type;
+    f.eye = camera.position;
+    const glm::vec3 gaze = glm::normalize(camera.gaze);
+    f.w = -gaze;
+    // (0,1,0) is the course's up vector; it is parallel to a vertical gaze, so switch to -z there.
+    const glm::vec3 up = std::fabs(gaze.y) > 0.9999f ? glm::vec3(0.0f, 0.0f, -1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+    f.u = glm::normalize(glm::cross(up, f.w));
+    f.v = glm::cross(f.w, f.u);
+    f.focalLength = camera.focalLength;
+    f.planeWidth = camera.imagePlaneWidth;
+    f.planeHeight = camera.imagePlaneWidth * static_cast<float>(height) / static_cast<float>(width);
+    f.nx = width;
+    f.ny = height;
+    return f;
+}
+
+bvh::Ray cameraRay(const CameraFrame& f, int i, int j, glm::vec2 sample) {
+    const float a = f.planeWidth * ((static_cast<float>(i) + sample.x) / static_cast<float>(f.nx) - 0.5f);
+    const float b = f.planeHeight * (0.5f - (static_cast<float>(j) + sample.y) / static_cast<float>(f.ny));
+    bvh::Ray ray;
+    if (f.type == CameraType::Perspective) {
+        ray.origin = f.eye;
+        ray.dir = glm::normalize(-f.focalLength * f.w + a * f.u + b * f.v);
+    } else {
+        ray.origin = f.eye + a * f.u + b * f.v;
+        ray.dir = -f.w;
+    }
+    return ray;
+}
+
+}  // namespace vkrt::cpu

@@ -1,0 +1,29 @@
+// The CPU reference renderer: an independent, plainly written implementation of the image
+// defined in docs/RENDERING.md, against which the GPU kernels are checked.
+#pragma once
+
+#include <cstdint>
+
+#include "image.h"
+#include "render_options.h"
+#include "scene.h"
+#include "scene_accel.h"
+
+namespace vkrt {
+
+struct RenderStats {
+    double seconds = 0.0;
+    int threads = 0;
+    std::uint64_t cameraRays = 0;
+    std::uint64_t shadowRays = 0;
+    std::uint64_t reflectionRays = 0;      // mirror, glossy and dielectric reflections
+    std::uint64_t refractionRays = 0;
+    std::uint64_t nonFiniteSamples = 0;    // samples replaced by black; any is a bug (RENDERING.md §8)
+};
+
+// Renders options.width x options.height linear radiance. Bit-identical for any thread count.
+// Throws std::invalid_argument for bad options, RenderCancelled when *options.cancel becomes true.
+Image renderCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions& options,
+                RenderStats* stats = nullptr);
+
+}  // namespace vkrt

@@ -1,0 +1,192 @@
+#include "integrator.h"
+
+#include <cmath>
+
+#include "dielectric.h"
+#include "ray_offset.h"
+#include "sampling.h"
+#include "shading.h"
+#include "texture.h"
+
+namespace vkrt::cpu {
+
+namespace {
+
+// docs/RENDERING.md §6: a branch contributing less than this (times a radiance that is O(1) in the
+// course's scenes) is below a quarter of an 8-bit step, so it is not traced.
+constexpr float kMinBranchWeight = 1.0f / 1024.0f;
+
+// docs/RENDERING.md §4: a shadow ray (direction q - origin, so t = 1 is the light point q) stops
+// just short of the light, so the geometry a light sits on (a ceiling panel) does not shadow it.
+constexpr float kShadowRayEnd = 1.0f - 1.0f / 65536.0f;
+
+bool worthTracing(const glm::vec3& weight) {
+    return glm::max(weight.x, glm::max(weight.y, weight.z)) >= kMinBranchWeight;
+}
+
+glm::vec3 textured(const Scene& scene, glm::vec3 colour, int texture, glm::vec2 uv) {
+    return texture == kNoTexture ? colour : colour * sampleTexture(scene.textures[texture], uv);
+}
+
+}  // namespace
+
+glm::vec3 Integrator::cameraRadiance(const bvh::Ray& ray, SampleKey key) {
+    ++counts_.camera;
+    return trace(ray, 0, glm::vec3(1.0f), key);
+}
+
+glm::vec3 Integrator::trace(const bvh::Ray& ray, int depth, glm::vec3 weight, SampleKey key) {
+    bvh::Hit hit;
+    if (!bvh::intersectClosest(ctx_.accel->bvh, ray, hit)) return ctx_.background;
+    return shade(ray, hit, depth, weight, key);
+}
+
+bool Integrator::occluded(const glm::vec3& origin, const glm::vec3& lightPoint) {
+    ++counts_.shadow;
+    bvh::Ray shadow;
+    shadow.origin = origin;
+    shadow.dir = lightPoint - origin;
+    shadow.tmax = kShadowRayEnd;
+    return bvh::intersectAny(ctx_.accel->bvh, shadow);
+}
+
+glm::vec3 Integrator::shade(const bvh::Ray& ray, const bvh::Hit& hit, int depth, glm::vec3 weight, SampleKey key) {
+    const Scene& scene = *ctx_.scene;
+    const SurfacePoint sp = describeHit(*ctx_.accel, scene, ray, hit);
+    const Shader& shader = scene.shaders[sp.shader];
+    if (shader.type == ShaderType::Dielectric) return dielectric(ray, hit, shader, sp, depth, weight, key);
+
+    // Two-sided shading: Ng faces the incoming ray, N lies on Ng's side (surface.h keeps them together).
+    const bool backFacing = glm::dot(sp.geometricNormal, ray.dir) > 0.0f;
+    const glm::vec3 ng = backFacing ? -sp.geometricNormal : sp.geometricNormal;
+    const glm::vec3 n = backFacing ? -sp.shadingNormal : sp.shadingNormal;
+    const glm::vec3 view = -ray.dir;
+    const glm::vec3 kd = textured(scene, shader.diffuse, shader.diffuseTexture, sp.uv);
+    const glm::vec3 ks = textured(scene, shader.specular, shader.specularTexture, sp.uv);
+    const float m = shader.mirrorCoef;
+
+    switch (shader.type) {
+    case ShaderType::Lambertian:
+    case ShaderType::BlinnPhong:
+    case ShaderType::CoolToWarm:
+        return directLight(shader, sp, n, ng, view, kd, ks, depth, key);
+    case ShaderType::Mirror:
+        return reflection(ray, sp, n, ng, shader.roughness, depth, weight, key);
+    case ShaderType::Glaze: {
+        const glm::vec3 local = directLight(shader, sp, n, ng, view, kd, ks, depth, key);
+        return local + m * reflection(ray, sp, n, ng, shader.roughness, depth, weight * m, key);
+    }
+    case ShaderType::BlinnPhongMirrored: {
+        const glm::vec3 local = directLight(shader, sp, n, ng, view, kd, ks, depth, key);
+        return (1.0f - m) * local + m * reflection(ray, sp, n, ng, shader.roughness, depth, weight * m, key);
+    }
+    case ShaderType::Dielectric:
+        break;  // handled above
+    }
+    return glm::vec3(0.0f);
+}
+
+glm::vec3 Integrator::directLight(const Shader& shader, const SurfacePoint& sp, const glm::vec3& n,
+                                  const glm::vec3& ng, const glm::vec3& view, const glm::vec3& kd,
+                                  const glm::vec3& ks, int depth, SampleKey key) {
+    const bool shadowed = shader.type != ShaderType::CoolToWarm;
+    const bool specular = shader.type == ShaderType::BlinnPhong || shader.type == ShaderType::BlinnPhongMirrored;
+
+    // The contribution of one light point q with intensity I.
+    auto contribution = [&](const glm::vec3& q, const glm::vec3& intensity) -> glm::vec3 {
+        const glm::vec3 toLight = q - sp.position;
+        const float distance = glm::length(toLight);
+        if (!(distance > 0.0f)) return glm::vec3(0.0f);  // a light exactly on the point: no direction
+        const glm::vec3 l = toLight / distance;
+        if (!shadowed) return coolToWarm(kd, intensity, n, l);
+        if (glm::dot(n, l) <= 0.0f) return glm::vec3(0.0f);
+        const glm::vec3 origin = offsetRayOrigin(sp.position, sideOf(ng, l));
+        if (occluded(origin, q)) return glm::vec3(0.0f);
+        glm::vec3 c = lambertian(kd, intensity, n, l);
+        if (specular) c += blinnPhongSpecular(ks, shader.phongExp, intensity, n, l, view);
+        return c;
+    };
+
+    glm::vec3 sum(0.0f);
+    for (const LightSource& light : ctx_.lights) {
+        if (light.type == LightType::Point) {
+            sum += contribution(light.position, light.intensity);
+            continue;
+        }
+        glm::vec3 lightSum(0.0f);
+        const std::uint32_t dim = gpu::dimLight(static_cast<std::uint32_t>(depth), light.areaOrdinal);
+        for (std::uint32_t j = 0; j < ctx_.lightSamples; ++j) {
+            const glm::vec2 s = gpu::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel,
+                                              key.sample * ctx_.lightSamples + j, dim, ctx_.seed);
+            lightSum += contribution(lightPoint(light, s), light.intensity);
+        }
+        sum += lightSum / static_cast<float>(ctx_.lightSamples);
+    }
+    return sum;
+}
+
+glm::vec3 Integrator::reflection(const bvh::Ray& ray, const SurfacePoint& sp, const glm::vec3& n, const glm::vec3& ng,
+                                 float roughness, int depth, glm::vec3 weight, SampleKey key) {
+    if (depth >= ctx_.maxDepth) return glm::vec3(0.0f);
+    const glm::vec3 r = mirrorDirection(ray.dir, n);
+
+    auto traceFrom = [&](const glm::vec3& dir, const glm::vec3& branchWeight) -> glm::vec3 {
+        // A direction below the surface would start inside the object: no light comes from there.
+        if (glm::dot(dir, ng) <= 0.0f || !worthTracing(branchWeight)) return glm::vec3(0.0f);
+        ++counts_.reflection;
+        bvh::Ray next;
+        next.origin = offsetRayOrigin(sp.position, sideOf(ng, dir));
+        next.dir = dir;
+        return trace(next, depth + 1, branchWeight, key);
+    };
+
+    if (roughness == 0.0f) return traceFrom(r, weight);
+
+    // g directions fan out at primary hits only; deeper glossy hits take one direction from the
+    // pixel grid, so the ray count stays linear in the depth (RENDERING.md §2).
+    const bool fanOut = depth == 0;
+    const std::uint32_t g = fanOut ? ctx_.glossSamples : 1u;
+    const glm::uvec4& grid = fanOut ? ctx_.glossGrid : ctx_.pixelGrid;
+    const float invG = 1.0f / static_cast<float>(g);
+    const std::uint32_t dim = gpu::dimGloss(static_cast<std::uint32_t>(depth));
+    glm::vec3 sum(0.0f);
+    for (std::uint32_t j = 0; j < g; ++j) {
+        const glm::vec2 s = gpu::sample2D(ctx_.sampler, grid, key.pixel, key.sample * g + j, dim, ctx_.seed);
+        sum += traceFrom(glossyDirection(r, roughness, s), weight * invG);
+    }
+    return sum / static_cast<float>(g);
+}
+
+glm::vec3 Integrator::dielectric(const bvh::Ray& ray, const bvh::Hit& hit, const Shader& shader,
+                                 const SurfacePoint& sp, int depth, glm::vec3 weight, SampleKey key) {
+    const bool entering = glm::dot(ray.dir, sp.geometricNormal) < 0.0f;
+    const float eta = shader.refractiveIndex;
+    const float n1 = entering ? 1.0f : eta;
+    const float n2 = entering ? eta : 1.0f;
+    // Beer-Lambert over the distance travelled inside, applied where the ray leaves the medium.
+    const glm::vec3 transmittance = entering ? glm::vec3(1.0f) : beerLambert(shader.attenuation, hit.t);
+    const glm::vec3 n = entering ? sp.shadingNormal : -sp.shadingNormal;  // faces the incoming ray
+    const float f = fresnelDielectric(-glm::dot(ray.dir, n), n1, n2);
+    const glm::vec3 here = weight * transmittance;
+
+    glm::vec3 reflected(0.0f), refracted(0.0f);
+    if (depth < ctx_.maxDepth) {
+        if (worthTracing(here * f)) {
+            ++counts_.reflection;
+            bvh::Ray next;
+            next.dir = mirrorDirection(ray.dir, n);
+            next.origin = offsetRayOrigin(sp.position, sideOf(sp.geometricNormal, next.dir));
+            reflected = trace(next, depth + 1, here * f, key);
+        }
+        if (worthTracing(here * (1.0f - f))) {
+            ++counts_.refraction;
+            bvh::Ray next;
+            next.dir = refractDirection(ray.dir, n, n1, n2);
+            next.origin = offsetRayOrigin(sp.position, sideOf(sp.geometricNormal, next.dir));
+            refracted = trace(next, depth + 1, here * (1.0f - f), key);
+        }
+    }
+    return transmittance * (f * reflected + (1.0f - f) * refracted);
+}
+
+}  // namespace vkrt::cpu
