@@ -75,7 +75,9 @@ struct Texture {
 struct Mesh {
     std::string path;
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;   // same size as positions
+    std::vector<glm::vec3> normals;   // same size as positions; unit length, or zero for a vertex
+                                      // that touches no non-degenerate face (renderers then use the
+                                      // face normal). Generated ones are angle-weighted (mesh_normals.h).
     std::vector<glm::vec2> uvs;       // same size as positions, or empty
     std::vector<glm::uvec3> triangles;
 };
@@ -109,7 +111,8 @@ struct Scene {
     std::string path;                 // the XML file
     glm::vec3 background{0.0f};
     std::string envMapPrefix;         // recorded; not rendered (a warning says so)
-    std::vector<Camera> cameras;      // at least one
+    std::vector<Camera> cameras;      // at least one, in file order
+    int defaultCamera = 0;            // index into cameras: <sceneParameters><camera>name</camera>, else 0
     std::vector<Light> lights;
     std::vector<Shader> shaders;
     std::vector<Texture> textures;

@@ -1,0 +1,17 @@
+// <camera name=".." type="perspective|orthographic"> -> Camera (FORMAT.md §3.3).
+#pragma once
+
+#include <pugixml.hpp>
+
+#include "parse_context.h"
+#include "scene.h"
+
+namespace vkrt {
+
+// position is required; the gaze is lookatPoint - position when lookatPoint is given (it overrides
+// viewDir, as in LIB-boost), else viewDir. A zero gaze, focalLength <= 0 (perspective) or
+// imagePlaneWidth <= 0 is a SceneError. Defaults: focalLength 1, imagePlaneWidth 0.5. A missing
+// type means perspective; an unknown type is a warning and perspective.
+Camera parseCamera(const ParseContext& context, pugi::xml_node node);
+
+}  // namespace vkrt

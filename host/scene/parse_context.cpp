@@ -1,0 +1,75 @@
+#include "parse_context.h"
+
+#include <algorithm>
+#include <set>
+
+namespace vkrt {
+
+namespace {
+template <typename Names>
+bool contains(const Names& names, std::string_view name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+}  // namespace
+
+Issue ParseContext::issueAt(pugi::xml_node node, std::string problem, std::string value) const {
+    return Issue{source.path(), source.lineOf(node), node.name(), std::move(problem), std::move(value)};
+}
+
+void ParseContext::warn(Issue issue) const {
+    if (strict) throw SceneError(std::move(issue));
+    diagnostics.warn(std::move(issue));
+}
+
+void ParseContext::warn(pugi::xml_node node, std::string problem, std::string value) const {
+    warn(issueAt(node, std::move(problem), std::move(value)));
+}
+
+void ParseContext::fail(pugi::xml_node node, std::string problem, std::string value) const {
+    throw SceneError(issueAt(node, std::move(problem), std::move(value)));
+}
+
+std::string elementText(pugi::xml_node node) {
+    std::string text;
+    for (pugi::xml_node child : node.children())
+        if (child.type() == pugi::node_pcdata || child.type() == pugi::node_cdata) text += child.value();
+    return text;
+}
+
+void checkChildren(const ParseContext& context, pugi::xml_node node, const std::vector<std::string_view>& allowed,
+                   const std::vector<std::string_view>& repeatable) {
+    std::set<std::string_view> seen;
+    for (pugi::xml_node child : node.children()) {
+        if (child.type() != pugi::node_element) continue;  // text and comments are harmless
+        const std::string_view name = child.name();
+        if (contains(repeatable, name)) continue;
+        if (!contains(allowed, name)) {
+            context.warn(child, std::string("unknown element inside <") + node.name() + ">, ignored");
+        } else if (!seen.insert(name).second) {
+            context.warn(child, std::string("repeated inside <") + node.name() + ">, the first one is used");
+        }
+    }
+}
+
+void checkAttributes(const ParseContext& context, pugi::xml_node node, std::initializer_list<std::string_view> allowed) {
+    for (pugi::xml_attribute attribute : node.attributes()) {
+        const std::string_view name = attribute.name();
+        if (name == "name" || contains(allowed, name)) continue;
+        context.warn(node, "unknown attribute ignored", attribute.name());
+    }
+}
+
+pugi::xml_node requireChild(const ParseContext& context, pugi::xml_node node, const char* name) {
+    pugi::xml_node child = node.child(name);
+    if (!child) context.fail(node, std::string("missing required element <") + name + ">");
+    return child;
+}
+
+std::string requireAttribute(const ParseContext& context, pugi::xml_node node, const char* name) {
+    const pugi::xml_attribute attribute = node.attribute(name);
+    if (!attribute || std::string_view(attribute.value()).empty())
+        context.fail(node, std::string("missing required attribute ") + name);
+    return attribute.value();
+}
+
+}  // namespace vkrt

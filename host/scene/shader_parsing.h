@@ -1,0 +1,25 @@
+// <shader name=".." type=".."> definitions -> Shader (FORMAT.md §3.5, defaults of §7).
+#pragma once
+
+#include <map>
+#include <string>
+
+#include <pugixml.hpp>
+
+#include "parse_context.h"
+#include "scene.h"
+
+namespace vkrt {
+
+// Texture name -> index into Scene::textures, or kNoTexture for a texture that was defined but
+// could not be loaded (the shader then uses its tint colour alone).
+using TextureTable = std::map<std::string, int>;
+
+// Parses a shader definition. Type mapping: Phong -> BlinnPhong; BlinnPhong (or Phong) with
+// mirrorCoef > 0 -> BlinnPhongMirrored (2011/12 files); Diffuse (JSON era) -> Lambertian; any
+// other type -> warning, Lambertian with the shader's diffuse (grey 0.5 without one).
+// A parameter the type does not use (mirrorCoef on a Lambertian) is a warning. An undefined
+// texture name is a SceneError.
+Shader parseShader(const ParseContext& context, pugi::xml_node node, const TextureTable& textures);
+
+}  // namespace vkrt

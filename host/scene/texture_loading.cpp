@@ -1,0 +1,52 @@
+#include "texture_loading.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include <OpenImageIO/imageio.h>
+
+namespace vkrt {
+
+std::optional<Texture> loadTextureImage(const std::string& path, std::string& error) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) {
+        error = "texture file not found";
+        return std::nullopt;
+    }
+    auto input = OIIO::ImageInput::open(path);
+    if (!input) {
+        error = "cannot read texture image (" + OIIO::geterror() + ")";
+        return std::nullopt;
+    }
+    const OIIO::ImageSpec& spec = input->spec();
+    const int channels = spec.nchannels;
+    if (spec.width <= 0 || spec.height <= 0 || channels <= 0) {
+        error = "texture image is empty";
+        return std::nullopt;
+    }
+    const std::size_t texels = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
+    std::vector<std::uint8_t> pixels(texels * static_cast<std::size_t>(channels));
+    if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, pixels.data())) {
+        error = "cannot decode texture image (" + input->geterror() + ")";
+        return std::nullopt;
+    }
+
+    Texture texture;
+    texture.path = path;
+    texture.width = spec.width;
+    texture.height = spec.height;
+    texture.rgba8.resize(texels);
+    for (std::size_t i = 0; i < texels; ++i) {
+        const std::uint8_t* p = &pixels[i * static_cast<std::size_t>(channels)];
+        const bool grey = channels < 3;
+        const std::uint32_t r = p[0];
+        const std::uint32_t g = grey ? p[0] : p[1];
+        const std::uint32_t b = grey ? p[0] : p[2];
+        const std::uint32_t a = channels == 2 ? p[1] : channels >= 4 ? p[3] : 255u;
+        texture.rgba8[i] = r | (g << 8) | (b << 16) | (a << 24);
+    }
+    return texture;
+}
+
+}  // namespace vkrt

@@ -1,0 +1,275 @@
+#include "xml_loader.h"
+
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <string_view>
+
+#include <pugixml.hpp>
+
+#include "camera_parsing.h"
+#include "light_parsing.h"
+#include "parse_context.h"
+#include "shader_parsing.h"
+#include "shape_parsing.h"
+#include "texture_loading.h"
+#include "transform_parsing.h"
+#include "value_parsing.h"
+#include "xml_source.h"
+
+namespace vkrt {
+
+namespace {
+
+std::string trimmed(const std::string& text) {
+    const auto begin = text.find_first_not_of(" \t\r\n");
+    if (begin == std::string::npos) return {};
+    return text.substr(begin, text.find_last_not_of(" \t\r\n") - begin + 1);
+}
+
+bool isElement(pugi::xml_node node, std::string_view name) {
+    return node.type() == pugi::node_element && name == node.name();
+}
+
+// Two passes over the document (FORMAT.md §7.2), so that child and element order never matter:
+//   1. definitions by name: textures, shaders (top-level and inline in shapes), prototypes;
+//   2. everything placed in the scene: cameras, lights, shapes and instances, scene parameters.
+class SceneBuilder {
+public:
+    SceneBuilder(const ParseContext& context, Scene& scene) : context_(context), scene_(scene), meshes_(scene.meshes) {}
+
+    void build(pugi::xml_node root) {
+        checkAttributes(context_, root, {"bgColor", "envmapPrefix", "envMapPrefix"});
+        for (pugi::xml_node node : root.children("texture")) defineTexture(node);
+        for (pugi::xml_node node : root.children()) {
+            if (isElement(node, "shader")) defineShader(node, /*inlineInShape=*/false);
+            if (isElement(node, "shape") || isElement(node, "instance"))
+                for (pugi::xml_node child : node.children("shader"))
+                    if (child.attribute("type")) defineShader(child, /*inlineInShape=*/true);
+        }
+        for (pugi::xml_node node : root.children("instance")) definePrototype(node);
+
+        pugi::xml_node parameters;
+        for (pugi::xml_node node : root.children()) {
+            if (node.type() != pugi::node_element) continue;
+            const std::string_view name = node.name();
+            if (name == "camera") {
+                scene_.cameras.push_back(parseCamera(context_, node));
+            } else if (name == "light") {
+                if (auto light = parseLight(context_, node)) scene_.lights.push_back(*light);
+            } else if (name == "shape") {
+                placeShape(node);
+            } else if (name == "sceneParameters") {
+                if (parameters) context_.warn(node, "repeated inside <scene>, the first one is used");
+                else parameters = node;
+            } else if (name != "shader" && name != "texture" && name != "instance") {
+                context_.warn(node, "unknown element inside <scene>, ignored");
+            }
+        }
+        if (scene_.cameras.empty()) context_.fail(root, "the scene has no <camera>");
+        readSceneParameters(root, parameters);
+    }
+
+private:
+    void defineTexture(pugi::xml_node node) {
+        checkAttributes(context_, node, {"type"});
+        checkChildren(context_, node, {"sourcefile"});
+        const std::string name = requireAttribute(context_, node, "name");
+        const std::string_view type = node.attribute("type").value();
+        if (!type.empty() && type != "image")
+            context_.warn(node, "unknown texture type, read as an image file", std::string(type));
+        const pugi::xml_node source = requireChild(context_, node, "sourcefile");
+        const std::string relative = trimmed(elementText(source));
+        if (relative.empty()) context_.fail(source, "empty texture file name");
+        if (textures_.count(name)) {
+            context_.warn(node, "duplicate texture name, the first definition is kept", name);
+            return;
+        }
+        const std::string path = (context_.sceneDirectory / relative).lexically_normal().string();
+        std::string error;
+        std::optional<Texture> texture = loadTextureImage(path, error);
+        if (!texture) {
+            context_.warn(source, error + "; shaders using texture '" + name + "' show their tint colour", path);
+            textures_[name] = kNoTexture;
+            return;
+        }
+        texture->name = name;
+        texture->where = {context_.source.path(), context_.source.lineOf(node)};
+        textures_[name] = static_cast<int>(scene_.textures.size());
+        scene_.textures.push_back(std::move(*texture));
+    }
+
+    // Inline definitions (a full <shader name type> inside a shape) are registered globally like
+    // top-level ones (LIB-2012, LIB-boost) and may be nameless, used only by their shape.
+    void defineShader(pugi::xml_node node, bool inlineInShape) {
+        const std::string name = node.attribute("name").value();
+        if (name.empty() && !inlineInShape) context_.fail(node, "missing required attribute name");
+        Shader shader = parseShader(context_, node, textures_);
+        if (!name.empty()) {
+            if (const auto found = shaderByName_.find(name); found != shaderByName_.end()) {
+                const int kept = found->second;
+                context_.warn(node, "duplicate shader name, the first definition (line " +
+                                        std::to_string(scene_.shaders[kept].where.line) + ") is kept", name);
+                if (inlineInShape) inlineShaders_[node.internal_object()] = kept;
+                return;
+            }
+            shaderByName_[name] = static_cast<int>(scene_.shaders.size());
+        }
+        if (inlineInShape) inlineShaders_[node.internal_object()] = static_cast<int>(scene_.shaders.size());
+        scene_.shaders.push_back(std::move(shader));
+    }
+
+    // The shader a shape (or prototype, or instance) names: -1 when it has no <shader> child.
+    int shaderOf(pugi::xml_node shape) {
+        const pugi::xml_node reference = shape.child("shader");
+        if (!reference) return -1;
+        if (reference.attribute("type")) return inlineShaders_.at(reference.internal_object());
+        checkAttributes(context_, reference, {"ref"});
+        const std::string name = requireAttribute(context_, reference, "ref");
+        const auto found = shaderByName_.find(name);
+        if (found == shaderByName_.end()) context_.fail(reference, "unresolved shader reference", name);
+        return found->second;
+    }
+
+    // Geometry with its shader, as a loose shape or a prototype.
+    Shape parseShape(pugi::xml_node node, ShapeType type) {
+        std::vector<std::string_view> allowed = geometryChildren(type);
+        allowed.push_back("shader");
+        if (isElement(node, "shape")) allowed.push_back("transform");
+        checkChildren(context_, node, allowed);
+        Shape shape;
+        shape.name = node.attribute("name").value();
+        shape.type = type;
+        shape.where = {context_.source.path(), context_.source.lineOf(node)};
+        parseGeometry(context_, node, shape, meshes_);
+        shape.shader = shaderOf(node);
+        if (shape.shader < 0) context_.fail(node, "missing required element <shader>", shape.name);
+        return shape;
+    }
+
+    void definePrototype(pugi::xml_node node) {
+        checkAttributes(context_, node, {"type"});
+        const std::string name = requireAttribute(context_, node, "name");
+        const std::string typeName = requireAttribute(context_, node, "type");
+        if (prototypeByName_.count(name)) {
+            context_.warn(node, "duplicate instance name, the first definition is kept", name);
+            return;
+        }
+        const std::optional<ShapeType> type = shapeTypeFromName(typeName);
+        if (!type) {
+            context_.warn(node, "unknown prototype type, skipped", typeName);
+            prototypeByName_[name] = -1;
+            return;
+        }
+        prototypeByName_[name] = static_cast<int>(scene_.prototypes.size());
+        scene_.prototypes.push_back(parseShape(node, *type));
+    }
+
+    void placeShape(pugi::xml_node node) {
+        const std::string typeName = requireAttribute(context_, node, "type");
+        const std::string name = node.attribute("name").value();
+        if (typeName == "instance") {
+            checkAttributes(context_, node, {"type", "id"});
+            checkChildren(context_, node, {"shader", "transform"});
+            const std::string id = requireAttribute(context_, node, "id");
+            const auto found = prototypeByName_.find(id);
+            if (found == prototypeByName_.end()) context_.fail(node, "unresolved instance id", id);
+            if (found->second < 0) {
+                context_.warn(node, "instance of a skipped prototype, skipped", id);
+                return;
+            }
+            Instance instance;
+            instance.name = name;
+            instance.prototype = found->second;
+            instance.shaderOverride = shaderOf(node);
+            if (const pugi::xml_node transform = node.child("transform"))
+                instance.objectToWorld = parseTransform(context_, transform);
+            instance.where = {context_.source.path(), context_.source.lineOf(node)};
+            scene_.instances.push_back(instance);
+            return;
+        }
+        checkAttributes(context_, node, {"type"});
+        const std::optional<ShapeType> type = shapeTypeFromName(typeName);
+        if (!type) {
+            context_.warn(node, "unknown shape type, skipped", typeName);
+            return;
+        }
+        Shape shape = parseShape(node, *type);
+        if (const pugi::xml_node transform = node.child("transform")) {
+            // A transformed plain shape is an instance of a prototype of its own.
+            Instance instance;
+            instance.name = name;
+            instance.prototype = static_cast<int>(scene_.prototypes.size());
+            instance.objectToWorld = parseTransform(context_, transform);
+            instance.where = shape.where;
+            scene_.prototypes.push_back(std::move(shape));
+            scene_.instances.push_back(instance);
+        } else {
+            scene_.shapes.push_back(std::move(shape));
+        }
+    }
+
+    // Background and environment map: <sceneParameters> children win over the root attributes
+    // (FORMAT.md §7.3). Environment maps are recorded, not rendered; a warning says so.
+    void readSceneParameters(pugi::xml_node root, pugi::xml_node parameters) {
+        if (const pugi::xml_attribute bg = root.attribute("bgColor"))
+            scene_.background = parseVec3Text(context_, root, "scene bgColor", bg.value());
+        pugi::xml_node envNode = root;
+        std::string envPrefix;
+        for (const char* spelling : {"envmapPrefix", "envMapPrefix"})
+            if (const pugi::xml_attribute a = root.attribute(spelling)) envPrefix = trimmed(a.value());
+
+        if (parameters) {
+            checkAttributes(context_, parameters, {});
+            checkChildren(context_, parameters, {"bgColor", "envMapPrefix", "envmapPrefix", "envMapVertCross", "camera"});
+            if (const pugi::xml_node bg = parameters.child("bgColor")) scene_.background = parseVec3(context_, bg);
+            for (const char* spelling : {"envmapPrefix", "envMapPrefix", "envMapVertCross"}) {
+                if (const pugi::xml_node e = parameters.child(spelling)) {
+                    envNode = e;
+                    envPrefix = trimmed(elementText(e));
+                }
+            }
+            if (const pugi::xml_node camera = parameters.child("camera")) selectCamera(camera);
+        }
+        if (!envPrefix.empty()) {
+            scene_.envMapPrefix = envPrefix;
+            context_.warn(envNode, "environment maps are not rendered, the background colour is used", envPrefix);
+        }
+    }
+
+    void selectCamera(pugi::xml_node camera) {
+        const std::string name = trimmed(elementText(camera));
+        for (std::size_t i = 0; i < scene_.cameras.size(); ++i) {
+            if (scene_.cameras[i].name == name) {
+                scene_.defaultCamera = static_cast<int>(i);
+                return;
+            }
+        }
+        context_.fail(camera, "no camera of that name", name);
+    }
+
+    const ParseContext& context_;
+    Scene& scene_;
+    MeshLibrary meshes_;
+    TextureTable textures_;
+    std::map<std::string, int> shaderByName_;
+    std::map<const void*, int> inlineShaders_;   // inline <shader> node -> index into Scene::shaders
+    std::map<std::string, int> prototypeByName_; // -1: a skipped (unknown-type) prototype
+};
+
+}  // namespace
+
+Scene loadScene(const std::string& path, const LoadOptions& options, Diagnostics& diagnostics) {
+    const XmlSource source(path);
+    const ParseContext context{source, diagnostics, options.strict,
+                               std::filesystem::path(path).parent_path()};
+    const pugi::xml_node root = source.root();
+    if (std::string_view(root.name()) != "scene") context.fail(root, "the root element must be <scene>", root.name());
+
+    Scene scene;
+    scene.path = path;
+    SceneBuilder(context, scene).build(root);
+    return scene;
+}
+
+}  // namespace vkrt
