@@ -1,0 +1,39 @@
+// Compute pipelines from SPIR-V with specialization constants, and the descriptor and pipeline
+// layout every render kernel shares (the bindings of shaders/shared/device_host.h).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <vulkan/vulkan_raii.hpp>
+
+#include "context.h"
+
+namespace vkrt {
+
+struct SpecConstant {
+    std::uint32_t id;
+    std::uint32_t value;  // bool constants take VK_TRUE / VK_FALSE (32-bit)
+};
+
+vk::raii::ShaderModule makeShaderModule(const Context& context, std::span<const std::uint32_t> spirv);
+
+// Entry point "main". `cache` may be nullptr.
+vk::raii::Pipeline makeComputePipeline(const Context& context, const vk::raii::PipelineCache* cache,
+                                       vk::PipelineLayout layout, vk::ShaderModule module,
+                                       std::span<const SpecConstant> constants);
+
+// Set 0 = the twelve bindings of device_host.h; push constants = PassParams.
+class RenderLayout {
+public:
+    explicit RenderLayout(const Context& context);
+    vk::DescriptorSetLayout setLayout() const { return *setLayout_; }
+    vk::PipelineLayout pipelineLayout() const { return *pipelineLayout_; }
+
+private:
+    vk::raii::DescriptorSetLayout setLayout_;
+    vk::raii::PipelineLayout pipelineLayout_;
+};
+
+}  // namespace vkrt

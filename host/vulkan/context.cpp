@@ -1,0 +1,71 @@
+#include "context.h"
+
+#include <algorithm>
+
+#include "vulkan_errors.h"
+
+namespace vkrt {
+
+namespace {
+
+std::unique_ptr<ValidationLog> makeLog(bool validation) {
+    return validation ? std::make_unique<ValidationLog>() : nullptr;
+}
+
+// True when a memory type is device-local and host-visible/coherent (every type on a CPU
+// device, all memory of an integrated GPU): then mapping beats a staging copy.
+bool deviceLocalIsMappable(const vk::PhysicalDeviceMemoryProperties& memory) {
+    const auto wanted = vk::MemoryPropertyFlagBits::eDeviceLocal | vk::MemoryPropertyFlagBits::eHostVisible |
+                        vk::MemoryPropertyFlagBits::eHostCoherent;
+    for (std::uint32_t i = 0; i < memory.memoryTypeCount; ++i)
+        if ((memory.memoryTypes[i].propertyFlags & wanted) == wanted) return true;
+    return false;
+}
+
+}  // namespace
+
+Context::Context(const ContextOptions& options) : log_(makeLog(options.validation)), instance_(log_.get()) {
+    auto physical = instance_.physicalDevices();
+    std::vector<DeviceInfo> devices;
+    for (std::size_t i = 0; i < physical.size(); ++i) devices.push_back(describePhysicalDevice(physical[i], static_cast<int>(i)));
+    const int chosen = chooseDevice(devices, options.gpu);
+    physical_ = std::move(physical[chosen]);
+    info_ = devices[chosen];
+    queueFamily_ = static_cast<std::uint32_t>(computeQueueFamily(physical_));
+    memory_ = physical_.getMemoryProperties();
+
+    limits_ = limitsOf(info_);
+    std::optional<std::uint64_t> cap = options.maxBufferBytes;
+    std::string note = "limited for testing to " + std::to_string(cap.value_or(0)) + " bytes";
+    if (const auto env = maxBufferBytesFromEnvironment(); env && (!cap || *env < *cap)) {
+        cap = env;
+        note = "limited by VKRT_MAX_BUFFER_BYTES=" + std::to_string(*env);
+    }
+    if (cap) limits_ = capLimits(limits_, *cap, note);
+
+    // The "cpu" device type with mappable device-local memory is lavapipe's case; integrated GPUs
+    // would also qualify, but staying with staging there keeps one well-tested path per kind.
+    mapsDeviceMemory_ = !options.forceStaging && info_.type == "cpu" && deviceLocalIsMappable(memory_);
+
+    const float priority = 1.0f;
+    vk::DeviceQueueCreateInfo queueInfo({}, queueFamily_, 1, &priority);
+    vk::DeviceCreateInfo deviceInfo({}, queueInfo);
+    try {
+        device_ = vk::raii::Device(physical_, deviceInfo);
+    } catch (const vk::SystemError& e) {
+        throw VulkanUnavailable("cannot create a Vulkan device on " + info_.name + ": " + e.what());
+    }
+    queue_ = vk::raii::Queue(device_, queueFamily_, 0);
+}
+
+Context::~Context() {
+    // Work still queued when the owner unwinds (an exception mid-render) must finish before its
+    // buffers and pipelines are destroyed.
+    try {
+        if (*device_) device_.waitIdle();
+    } catch (const vk::SystemError&) {
+        // Device lost: nothing is running any more, destruction may proceed.
+    }
+}
+
+}  // namespace vkrt

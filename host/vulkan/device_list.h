@@ -1,0 +1,42 @@
+// The Vulkan devices of this machine, for `vkrt --list-devices` and for choosing one (`--gpu N`).
+// No Vulkan types here, so the command line can include it cheaply.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vkrt {
+
+struct DeviceInfo {
+    int index = 0;                 // position in the loader's list: the N of --gpu N
+    std::string name;
+    std::string type;              // "discrete", "integrated", "virtual", "cpu", "other"
+    std::string driver;            // driver name and version string
+    std::uint32_t apiVersion = 0;  // VK_MAKE_API_VERSION packed
+    std::uint64_t maxStorageBufferRange = 0;
+    std::uint64_t maxTexelBufferElements = 0;
+    std::uint64_t maxUniformBufferRange = 0;
+    std::uint64_t maxMemoryAllocationSize = 0;
+    std::uint64_t deviceLocalHeapBytes = 0;  // the largest device-local memory heap
+    std::uint32_t maxWorkGroupCountX = 0;
+    std::uint32_t subgroupSize = 0;
+    bool usable = false;           // Vulkan 1.2 with a compute queue
+    std::string unusableReason;    // why not, when !usable
+};
+
+// Enumerates every device; throws VulkanUnavailable when the Vulkan loader cannot be used.
+std::vector<DeviceInfo> listDevices();
+
+// One block per device: index, name, type, driver, API version, the limits vkrt checks.
+std::string formatDeviceList(const std::vector<DeviceInfo>& devices);
+
+// "1.3.230"
+std::string apiVersionString(std::uint32_t version);
+
+// The device to use: `requested` (>= 0, from --gpu) if it exists and is usable, else the first
+// usable device in the order discrete > integrated > virtual > cpu > other. Throws
+// VulkanUnavailable when nothing is usable, std::invalid_argument for a bad `requested`.
+int chooseDevice(const std::vector<DeviceInfo>& devices, int requested);
+
+}  // namespace vkrt

@@ -1,0 +1,111 @@
+#include "feature_set.h"
+
+#include <algorithm>
+#include <set>
+
+namespace vkrt {
+
+namespace {
+
+std::uint32_t pathStack(std::uint32_t maxDepth, const RenderOptions& options) {
+    // integrator.glsl: only dielectrics (two branches per level) and depth-0 gloss samples push,
+    // so at most maxDepth + glossSamples rays wait; at least one entry keeps the array legal.
+    return std::max<std::uint32_t>(1, maxDepth + static_cast<std::uint32_t>(std::max(options.glossSamples, 1)));
+}
+
+bool isIdentity(const gpu::Instance& instance) {
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c)
+            if (instance.objectToWorld[r][c] != (r == c ? 1.0f : 0.0f)) return false;
+    return true;
+}
+
+// Shader indices reachable from what is rendered: loose and mesh shapes, and instanced
+// prototypes under their instance's override. Unused <shader> elements switch nothing on.
+std::set<int> usedShaders(const Scene& scene) {
+    std::set<int> used;
+    for (const Shape& shape : scene.shapes) used.insert(shape.shader);
+    for (const Instance& instance : scene.instances)
+        used.insert(instance.shaderOverride >= 0 ? instance.shaderOverride : scene.prototypes.at(instance.prototype).shader);
+    return used;
+}
+
+}  // namespace
+
+std::array<std::uint32_t, gpu::SPEC_COUNT> FeatureSet::specializationValues() const {
+    std::array<std::uint32_t, gpu::SPEC_COUNT> v{};
+    v[gpu::SPEC_HAS_TRIANGLES] = triangles;
+    v[gpu::SPEC_HAS_SPHERES] = spheres;
+    v[gpu::SPEC_HAS_BOXES] = boxes;
+    v[gpu::SPEC_HAS_INSTANCES] = instances;
+    v[gpu::SPEC_HAS_AREA_LIGHTS] = areaLights;
+    v[gpu::SPEC_HAS_SPECULAR] = specular;
+    v[gpu::SPEC_HAS_REFLECTION] = reflection;
+    v[gpu::SPEC_HAS_GLOSS] = gloss;
+    v[gpu::SPEC_HAS_DIELECTRIC] = dielectric;
+    v[gpu::SPEC_HAS_TEXTURES] = textures;
+    v[gpu::SPEC_HAS_COOL_TO_WARM] = coolToWarm;
+    v[gpu::SPEC_MAX_DEPTH] = maxDepth;
+    v[gpu::SPEC_PATH_STACK_SIZE] = pathStackSize;
+    return v;
+}
+
+std::string FeatureSet::describe() const {
+    std::string s;
+    auto add = [&](bool on, const char* name) {
+        if (!on) return;
+        if (!s.empty()) s += ' ';
+        s += name;
+    };
+    add(triangles, "triangles");
+    add(spheres, "spheres");
+    add(boxes, "boxes");
+    add(instances, "instances");
+    add(areaLights, "area-lights");
+    add(specular, "specular");
+    add(reflection, "reflection");
+    add(gloss, "gloss");
+    add(dielectric, "dielectric");
+    add(textures, "textures");
+    add(coolToWarm, "cool-to-warm");
+    add(true, ("depth=" + std::to_string(maxDepth) + " stack=" + std::to_string(pathStackSize)).c_str());
+    return s;
+}
+
+FeatureSet deriveFeatureSet(const Scene& scene, const SceneAccel& accel, const RenderOptions& options) {
+    FeatureSet f;
+    f.triangles = f.spheres = f.boxes = false;
+    for (const gpu::Primitive& p : accel.bvh.prims) {
+        const std::uint32_t kind = p.a.w & gpu::PRIM_KIND_MASK;
+        f.triangles |= kind == gpu::PRIM_KIND_TRIANGLE;
+        f.spheres |= kind == gpu::PRIM_KIND_SPHERE;
+        f.boxes |= kind == gpu::PRIM_KIND_BOX;
+    }
+    f.instances = !(accel.bvh.instances.size() == 1 && isIdentity(accel.bvh.instances[0]));
+    f.areaLights = std::any_of(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.type == LightType::Area; });
+
+    f.specular = f.reflection = f.gloss = f.dielectric = f.textures = f.coolToWarm = false;
+    for (const int index : usedShaders(scene)) {
+        const Shader& s = scene.shaders.at(index);
+        f.specular |= s.type == ShaderType::BlinnPhong || s.type == ShaderType::BlinnPhongMirrored;
+        f.reflection |= s.type == ShaderType::Mirror || s.type == ShaderType::Glaze || s.type == ShaderType::BlinnPhongMirrored;
+        f.dielectric |= s.type == ShaderType::Dielectric;
+        // Conservative: roughness only matters on reflecting shaders, but switching gloss on for
+        // a rough Lambertian costs a little speed, never a wrong image.
+        f.gloss |= s.roughness > 0.0f;
+        f.textures |= s.diffuseTexture != kNoTexture || s.specularTexture != kNoTexture;
+        f.coolToWarm |= s.type == ShaderType::CoolToWarm;
+    }
+    f.maxDepth = (f.reflection || f.dielectric) ? static_cast<std::uint32_t>(std::max(options.maxDepth, 0)) : 0u;
+    f.pathStackSize = pathStack(f.maxDepth, options);
+    return f;
+}
+
+FeatureSet generalFeatureSet(const RenderOptions& options) {
+    FeatureSet f;  // every flag defaults to on
+    f.maxDepth = static_cast<std::uint32_t>(std::max(options.maxDepth, 0));
+    f.pathStackSize = pathStack(f.maxDepth, options);
+    return f;
+}
+
+}  // namespace vkrt

@@ -1,0 +1,47 @@
+// What a scene uses, as the specialization constants of the render kernel (SPEC_* in
+// shaders/shared/device_host.h): the driver's compiler removes every path a scene cannot reach.
+#pragma once
+
+#include <array>
+#include <compare>
+#include <cstdint>
+#include <string>
+
+#include "device_host.h"
+#include "render_options.h"
+#include "scene.h"
+#include "scene_accel.h"
+
+namespace vkrt {
+
+struct FeatureSet {
+    bool triangles = true;
+    bool spheres = true;
+    bool boxes = true;
+    bool instances = true;      // anything but one identity instance: traverse the top level
+    bool areaLights = true;
+    bool specular = true;       // Blinn-Phong highlights
+    bool reflection = true;     // Mirror, Glaze, BlinnPhongMirrored
+    bool gloss = true;          // roughness > 0 on a used shader
+    bool dielectric = true;
+    bool textures = true;
+    bool coolToWarm = true;
+    std::uint32_t maxDepth = 4;        // 0 when nothing reflects or refracts, else options.maxDepth
+    std::uint32_t pathStackSize = 5;   // pending rays: maxDepth + glossSamples (integrator.glsl)
+
+    auto operator<=>(const FeatureSet&) const = default;
+
+    // Values indexed by SPEC_* id.
+    std::array<std::uint32_t, gpu::SPEC_COUNT> specializationValues() const;
+    // "triangles spheres area-lights reflection depth=4 stack=5", for logs and benchmark tables.
+    std::string describe() const;
+};
+
+// The features the scene's shapes, instances, shaders and lights actually use.
+FeatureSet deriveFeatureSet(const Scene& scene, const SceneAccel& accel, const RenderOptions& options);
+
+// Every feature on (the general kernel of the specialisation benchmark), at the depth and
+// gloss-sample count of `options`.
+FeatureSet generalFeatureSet(const RenderOptions& options);
+
+}  // namespace vkrt

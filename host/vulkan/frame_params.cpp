@@ -1,0 +1,65 @@
+#include "frame_params.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "sampling.h"
+
+namespace vkrt {
+
+CameraBasis cameraBasis(const glm::vec3& gaze) {
+    const glm::vec3 g = glm::normalize(gaze);
+    const glm::vec3 up = std::abs(g.y) > 0.9999f ? glm::vec3(0.0f, 0.0f, -1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+    CameraBasis b;
+    b.w = -g;
+    b.u = glm::normalize(glm::cross(up, b.w));
+    b.v = glm::cross(b.w, b.u);
+    return b;
+}
+
+namespace {
+
+void require(bool ok, const std::string& what) {
+    if (!ok) throw std::invalid_argument("GPU render: " + what);
+}
+
+}  // namespace
+
+gpu::FrameParams makeFrameParams(const Scene& scene, const SceneAccel& accel, const RenderOptions& options) {
+    require(options.width > 0 && options.height > 0,
+            "image size " + std::to_string(options.width) + "x" + std::to_string(options.height) + " has no pixels");
+    require(options.samplesPerPixel >= 1, "samples per pixel must be at least 1, not " + std::to_string(options.samplesPerPixel));
+    require(options.lightSamples >= 1, "light samples must be at least 1, not " + std::to_string(options.lightSamples));
+    require(options.glossSamples >= 1, "gloss samples must be at least 1, not " + std::to_string(options.glossSamples));
+    require(options.maxDepth >= 0, "max depth must not be negative, not " + std::to_string(options.maxDepth));
+    require(options.camera >= 0 && options.camera < static_cast<int>(scene.cameras.size()),
+            "camera " + std::to_string(options.camera) + " does not exist (the scene has " + std::to_string(scene.cameras.size()) +
+                " camera(s))");
+
+    const Camera& camera = scene.cameras[options.camera];
+    const CameraBasis basis = cameraBasis(camera.gaze);
+    const float planeWidth = camera.imagePlaneWidth;
+    const float planeHeight = planeWidth * static_cast<float>(options.height) / static_cast<float>(options.width);
+    const auto rpp = static_cast<std::uint32_t>(options.samplesPerPixel);
+    const auto lightSamples = static_cast<std::uint32_t>(options.lightSamples);
+    const auto glossSamples = static_cast<std::uint32_t>(options.glossSamples);
+
+    gpu::FrameParams f{};
+    f.cameraPosition = glm::vec4(camera.position, 0.0f);
+    f.cameraU = glm::vec4(basis.u, planeWidth);
+    f.cameraV = glm::vec4(basis.v, planeHeight);
+    f.cameraW = glm::vec4(basis.w, camera.focalLength);
+    f.background = glm::vec4(options.background.value_or(scene.background), 0.0f);
+    f.image = glm::uvec4(static_cast<std::uint32_t>(options.width), static_cast<std::uint32_t>(options.height),
+                         camera.type == CameraType::Orthographic ? gpu::CAMERA_ORTHOGRAPHIC : gpu::CAMERA_PERSPECTIVE, 0u);
+    f.sampling = glm::uvec4(static_cast<std::uint32_t>(options.sampler), rpp, lightSamples, glossSamples);
+    f.scene = glm::uvec4(options.seed, static_cast<std::uint32_t>(options.maxDepth), static_cast<std::uint32_t>(scene.lights.size()),
+                         accel.bvh.topRoot);
+    f.pixelGrid = gpu::makeSampleGrid(rpp);
+    f.lightGrid = gpu::makeSampleGrid(rpp * lightSamples);
+    f.glossGrid = gpu::makeSampleGrid(rpp * glossSamples);
+    return f;
+}
+
+}  // namespace vkrt

@@ -1,0 +1,122 @@
+#include "gpu_scene.h"
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <stdexcept>
+
+namespace vkrt {
+
+namespace {
+
+template <class T>
+std::uint64_t bytesOf(const std::vector<T>& items) {
+    return std::max<std::uint64_t>(1, items.size()) * sizeof(T);
+}
+
+// The data for a binding, padded to the planned size with zeros (empty tables, the status).
+template <class T>
+std::vector<std::byte> padded(const std::vector<T>& items, std::uint64_t bytes) {
+    std::vector<std::byte> data(bytes, std::byte{0});
+    if (!items.empty()) std::memcpy(data.data(), items.data(), items.size() * sizeof(T));
+    return data;
+}
+
+vk::BufferUsageFlags usageOf(BufferKind kind) {
+    const vk::BufferUsageFlags transfers = vk::BufferUsageFlagBits::eTransferDst | vk::BufferUsageFlagBits::eTransferSrc;
+    switch (kind) {
+    case BufferKind::Storage: return transfers | vk::BufferUsageFlagBits::eStorageBuffer;
+    case BufferKind::UniformTexel: return transfers | vk::BufferUsageFlagBits::eUniformTexelBuffer;
+    case BufferKind::Uniform: return transfers | vk::BufferUsageFlagBits::eUniformBuffer;
+    case BufferKind::Plain: return transfers;
+    }
+    return transfers;
+}
+
+}  // namespace
+
+std::vector<BufferPlan> planSceneBuffers(const SceneTables& tables, const bvh::SceneBvh& bvh, std::uint64_t pixels) {
+    std::vector<BufferPlan> plan(gpu::BINDING_STATUS + 1);
+    plan[gpu::BINDING_NODES] = {"BVH nodes", BufferKind::UniformTexel, bytesOf(bvh.nodes)};
+    plan[gpu::BINDING_PRIMS] = {"primitives", BufferKind::UniformTexel, bytesOf(bvh.prims)};
+    plan[gpu::BINDING_PRIM_INFO] = {"primitive info", BufferKind::Storage, bytesOf(tables.primInfos)};
+    plan[gpu::BINDING_VERTEX_ATTRIBS] = {"vertex attributes", BufferKind::Storage, bytesOf(tables.vertexAttribs)};
+    plan[gpu::BINDING_INSTANCES] = {"instances", BufferKind::Storage, bytesOf(bvh.instances)};
+    plan[gpu::BINDING_SHADERS] = {"materials", BufferKind::Storage, bytesOf(tables.materials)};
+    plan[gpu::BINDING_LIGHTS] = {"lights", BufferKind::Storage, bytesOf(tables.lights)};
+    plan[gpu::BINDING_TEXTURES] = {"texture info", BufferKind::Storage, bytesOf(tables.textures)};
+    plan[gpu::BINDING_TEXELS] = {"texels", BufferKind::Storage, bytesOf(tables.texels)};
+    plan[gpu::BINDING_FRAME] = {"frame parameters", BufferKind::Uniform, sizeof(gpu::FrameParams)};
+    plan[gpu::BINDING_ACCUM] = {"accumulation (one vec4 per pixel)", BufferKind::Storage, std::max<std::uint64_t>(1, pixels) * sizeof(glm::vec4)};
+    plan[gpu::BINDING_STATUS] = {"render status", BufferKind::Storage, sizeof(gpu::RenderStatus)};
+    return plan;
+}
+
+void checkSceneBuffers(const BufferLimits& limits, const std::vector<BufferPlan>& plan) {
+    std::uint64_t total = 0;
+    for (const BufferPlan& p : plan) {
+        checkBufferFits(limits, p.name, p.kind, p.bytes);
+        total += p.bytes;
+    }
+    checkTotalFits(limits, total);
+}
+
+GpuScene::GpuScene(const Context& context, Transfers& transfers, const RenderLayout& layout, const SceneTables& tables,
+                   const bvh::SceneBvh& bvh, const gpu::FrameParams& frame) {
+    const std::uint64_t pixels = static_cast<std::uint64_t>(frame.image.x) * frame.image.y;
+    const std::vector<BufferPlan> plan = planSceneBuffers(tables, bvh, pixels);
+    checkSceneBuffers(context.limits(), plan);
+
+    buffers_.reserve(plan.size());
+    for (std::size_t binding = 0; binding < plan.size(); ++binding) {
+        const BufferPlan& p = plan[binding];
+        const MemoryUse use = binding == gpu::BINDING_STATUS ? MemoryUse::Shared : MemoryUse::Device;
+        buffers_.emplace_back(context, p.name, p.bytes, usageOf(p.kind), use);
+        bytes_ += p.bytes;
+    }
+    auto upload = [&](std::uint32_t binding, const auto& items) {
+        transfers.upload(buffers_[binding], padded(items, plan[binding].bytes));
+    };
+    upload(gpu::BINDING_NODES, bvh.nodes);
+    upload(gpu::BINDING_PRIMS, bvh.prims);
+    upload(gpu::BINDING_PRIM_INFO, tables.primInfos);
+    upload(gpu::BINDING_VERTEX_ATTRIBS, tables.vertexAttribs);
+    upload(gpu::BINDING_INSTANCES, bvh.instances);
+    upload(gpu::BINDING_SHADERS, tables.materials);
+    upload(gpu::BINDING_LIGHTS, tables.lights);
+    upload(gpu::BINDING_TEXTURES, tables.textures);
+    upload(gpu::BINDING_TEXELS, tables.texels);
+    upload(gpu::BINDING_FRAME, std::vector<gpu::FrameParams>{frame});
+    transfers.zero(buffers_[gpu::BINDING_ACCUM]);
+    transfers.zero(buffers_[gpu::BINDING_STATUS]);
+
+    views_.push_back(makeTexelView(context, buffers_[gpu::BINDING_NODES]));
+    views_.push_back(makeTexelView(context, buffers_[gpu::BINDING_PRIMS]));
+
+    const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, 2),
+                              vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 9),
+                              vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, 1)};
+    pool_ = vk::raii::DescriptorPool(context.device(),
+                                     vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, sizes));
+    const vk::DescriptorSetLayout setLayout = layout.setLayout();
+    set_ = std::move(vk::raii::DescriptorSets(context.device(), vk::DescriptorSetAllocateInfo(*pool_, setLayout)).front());
+
+    std::vector<vk::DescriptorBufferInfo> infos(plan.size());
+    std::vector<vk::WriteDescriptorSet> writes;
+    const vk::BufferView texelViews[] = {*views_[0], *views_[1]};
+    for (std::uint32_t binding = 0; binding < plan.size(); ++binding) {
+        vk::WriteDescriptorSet write(*set_, binding, 0, 1, vk::DescriptorType::eStorageBuffer);
+        if (plan[binding].kind == BufferKind::UniformTexel) {
+            write.descriptorType = vk::DescriptorType::eUniformTexelBuffer;
+            write.pTexelBufferView = &texelViews[binding == gpu::BINDING_NODES ? 0 : 1];
+        } else {
+            if (plan[binding].kind == BufferKind::Uniform) write.descriptorType = vk::DescriptorType::eUniformBuffer;
+            infos[binding] = vk::DescriptorBufferInfo(buffers_[binding].handle(), 0, VK_WHOLE_SIZE);
+            write.pBufferInfo = &infos[binding];
+        }
+        writes.push_back(write);
+    }
+    context.device().updateDescriptorSets(writes, {});
+}
+
+}  // namespace vkrt

@@ -1,0 +1,56 @@
+// One render's device data: every table of device_host.h uploaded into its buffer, the
+// accumulation and status buffers, and the descriptor set binding them all. Every buffer is
+// checked against the device limits before anything is allocated.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan_raii.hpp>
+
+#include "buffer.h"
+#include "bvh.h"
+#include "compute_pipeline.h"
+#include "context.h"
+#include "device_limits.h"
+#include "scene_tables.h"
+
+namespace vkrt {
+
+// A buffer about to be created: its name (for errors), how it is bound, and its bytes.
+struct BufferPlan {
+    std::string name;
+    BufferKind kind;
+    std::uint64_t bytes;
+};
+
+// The buffers a render needs, in binding order; empty tables get one zeroed element because
+// Vulkan has no empty buffers.
+std::vector<BufferPlan> planSceneBuffers(const SceneTables& tables, const bvh::SceneBvh& bvh, std::uint64_t pixels);
+
+// Throws DeviceLimitExceeded for the first buffer over a limit, or when all together exceed the heap.
+void checkSceneBuffers(const BufferLimits& limits, const std::vector<BufferPlan>& plan);
+
+class GpuScene {
+public:
+    GpuScene(const Context& context, Transfers& transfers, const RenderLayout& layout, const SceneTables& tables,
+             const bvh::SceneBvh& bvh, const gpu::FrameParams& frame);
+
+    vk::DescriptorSet descriptorSet() const { return *set_; }
+    const Buffer& accum() const { return buffers_[gpu::BINDING_ACCUM]; }
+    // Mapped: the host reads it after every submission.
+    const gpu::RenderStatus& status() const { return *reinterpret_cast<const gpu::RenderStatus*>(buffers_[gpu::BINDING_STATUS].mapped()); }
+    std::uint64_t bytes() const { return bytes_; }
+
+private:
+    std::vector<Buffer> buffers_;  // indexed by binding
+    std::vector<vk::raii::BufferView> views_;  // nodes, primitives
+    vk::raii::DescriptorPool pool_ = nullptr;
+    vk::raii::DescriptorSet set_ = nullptr;
+    std::uint64_t bytes_ = 0;
+};
+
+}  // namespace vkrt

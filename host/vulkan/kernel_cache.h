@@ -1,0 +1,34 @@
+// One render kernel, specialised per feature set: pipelines are created on first use and kept
+// (lavapipe's LLVM compile takes ~0.05 s or more per variant), plus a VkPipelineCache so drivers
+// that cache compiled code can reuse it across variants.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <vector>
+
+#include <vulkan/vulkan_raii.hpp>
+
+#include "compute_pipeline.h"
+#include "context.h"
+#include "feature_set.h"
+
+namespace vkrt {
+
+class KernelCache {
+public:
+    KernelCache(const Context& context, const RenderLayout& layout, const std::vector<std::uint32_t>& spirv);
+
+    // The pipeline for `features`; *creationSeconds gets the time spent creating it (0 if cached).
+    const vk::raii::Pipeline& pipeline(const FeatureSet& features, double* creationSeconds = nullptr);
+    std::size_t size() const { return pipelines_.size(); }
+
+private:
+    const Context& context_;
+    const RenderLayout& layout_;
+    vk::raii::ShaderModule module_;
+    vk::raii::PipelineCache cache_;
+    std::map<FeatureSet, vk::raii::Pipeline> pipelines_;
+};
+
+}  // namespace vkrt

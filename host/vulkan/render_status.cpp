@@ -1,0 +1,38 @@
+#include "render_status.h"
+
+#include <sstream>
+#include <string>
+
+#include "vulkan_errors.h"
+
+namespace vkrt {
+
+void throwIfKernelFailed(const gpu::RenderStatus& status, std::uint32_t imageWidth) {
+    const std::uint32_t flags = status.flags.x;
+    if (flags == 0) return;
+    std::string where = "(the kernel did not record the pixel)";
+    if (status.flags.y != 0 && imageWidth > 0) {
+        const std::uint32_t pixel = status.flags.y - 1;  // stored + 1 so that 0 means "none"
+        where = "at pixel (" + std::to_string(pixel % imageWidth) + ", " + std::to_string(pixel / imageWidth) + "), sample " +
+                std::to_string(status.flags.z);
+    }
+    std::string message = "the GPU kernel could not compute the image correctly " + where + ":";
+    if (flags & gpu::STATUS_LOOP_BUDGET_EXCEEDED)
+        message += " one sample needed more than " + std::to_string(gpu::LOOP_BUDGET) +
+                   " loop iterations (the kernel stops there because lavapipe before Mesa 25 silently cuts every "
+                   "invocation off at 65,535); reduce --max-depth, --gloss-samples or --light-samples, or the scene's "
+                   "geometry overlap;";
+    if (flags & gpu::STATUS_RAY_STACK_OVERFLOW)
+        message += " a ray stack overflowed (BVH traversal stack of " + std::to_string(gpu::TRAVERSAL_STACK_SIZE) +
+                   " entries, or the pending reflection/refraction rays); reduce --max-depth or --gloss-samples;";
+    const std::uint32_t known = gpu::STATUS_LOOP_BUDGET_EXCEEDED | gpu::STATUS_RAY_STACK_OVERFLOW;
+    if (flags & ~known) {
+        std::ostringstream hex;
+        hex << std::hex << (flags & ~known);
+        message += " unknown status flags 0x" + hex.str() + ";";
+    }
+    message.pop_back();
+    throw GpuKernelError(message);
+}
+
+}  // namespace vkrt

@@ -1,0 +1,14 @@
+// Turns the kernel's RenderStatus (device_host.h) into an error a user can act on.
+#pragma once
+
+#include <cstdint>
+
+#include "device_host.h"
+
+namespace vkrt {
+
+// Throws GpuKernelError when a STATUS_* flag is set, naming the flag's meaning, the first
+// offending pixel (x, y) and sample when the kernel recorded them, and what to reduce.
+void throwIfKernelFailed(const gpu::RenderStatus& status, std::uint32_t imageWidth);
+
+}  // namespace vkrt

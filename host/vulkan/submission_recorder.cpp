@@ -1,0 +1,31 @@
+#include "submission_recorder.h"
+
+#include "commands.h"
+
+namespace vkrt {
+
+gpu::PassParams passParams(const TileRect& tile, std::uint32_t sample) {
+    const std::uint32_t workgroups = ((tile.width + 7) / 8) * ((tile.height + 7) / 8);
+    gpu::PassParams p{};
+    p.tile = glm::uvec4(tile.x, tile.y, tile.width, tile.height);
+    p.pass = glm::uvec4(sample, interleaveStride(workgroups), workgroups, 0u);
+    return p;
+}
+
+void recordSubmission(const vk::raii::CommandBuffer& commands, vk::Pipeline pipeline, vk::PipelineLayout layout,
+                      vk::DescriptorSet set, const Submission& submission) {
+    // The previous submission's additions to the accumulation buffer come first (in-order
+    // sample sums), and the host's writes (status reset, uploads) are covered by the submit.
+    computeToComputeBarrier(commands);
+    commands.bindPipeline(vk::PipelineBindPoint::eCompute, pipeline);
+    commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, layout, 0, set, {});
+    for (std::uint32_t s = 0; s < submission.sampleCount; ++s) {
+        const gpu::PassParams params = passParams(submission.tile, submission.firstSample + s);
+        if (s > 0) computeToComputeBarrier(commands);  // pass s adds to the sums pass s-1 wrote
+        commands.pushConstants<gpu::PassParams>(layout, vk::ShaderStageFlagBits::eCompute, 0, params);
+        commands.dispatch(params.pass.z, 1, 1);
+    }
+    computeToHostBarrier(commands);  // status (every submission) and accumulation (at the end)
+}
+
+}  // namespace vkrt

@@ -1,0 +1,18 @@
+// Records one submission of the render: a run of sample passes over one tile, one dispatch per
+// pass, with the barriers that keep a pixel's samples accumulating in order.
+#pragma once
+
+#include <vulkan/vulkan_raii.hpp>
+
+#include "device_host.h"
+#include "tile_planner.h"
+
+namespace vkrt {
+
+// PassParams for sample `sample` of `tile` (device_host.h; render.comp's block mapping).
+gpu::PassParams passParams(const TileRect& tile, std::uint32_t sample);
+
+void recordSubmission(const vk::raii::CommandBuffer& commands, vk::Pipeline pipeline, vk::PipelineLayout layout,
+                      vk::DescriptorSet set, const Submission& submission);
+
+}  // namespace vkrt

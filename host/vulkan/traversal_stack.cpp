@@ -1,0 +1,50 @@
+#include "traversal_stack.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "vulkan_errors.h"
+
+namespace vkrt {
+
+std::uint32_t innerDepth(const std::vector<gpu::BvhNode>& nodes, std::uint32_t root) {
+    if (root == gpu::NODE_NONE) return 0;
+    // Iterative: a degenerate BVH can be thousands of levels deep.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pending{{root, 1}};
+    std::uint32_t deepest = 0;
+    while (!pending.empty()) {
+        const auto [index, depth] = pending.back();
+        pending.pop_back();
+        if (index >= nodes.size())
+            throw std::logic_error("BVH node link " + std::to_string(index) + " is outside the " + std::to_string(nodes.size()) +
+                                   " nodes");
+        if (depth > nodes.size()) throw std::logic_error("the BVH's node links form a cycle");
+        deepest = std::max(deepest, depth);
+        const gpu::BvhNode& node = nodes[index];
+        for (int child = 0; child < 2; ++child) {
+            const std::uint32_t link = node.link[child];
+            const std::uint32_t count = node.link[2 + child];
+            if (count == 0 && link != gpu::NODE_NONE) pending.emplace_back(link, depth + 1);
+        }
+    }
+    return deepest;
+}
+
+std::uint32_t traversalStackNeed(const bvh::SceneBvh& bvh, bool instancing) {
+    if (!instancing) return bvh.instances.empty() ? 0 : innerDepth(bvh.nodes, bvh.instances[0].info.x);
+    std::uint32_t deepestBottom = 0;
+    for (const gpu::Instance& instance : bvh.instances) deepestBottom = std::max(deepestBottom, innerDepth(bvh.nodes, instance.info.x));
+    return innerDepth(bvh.nodes, bvh.topRoot) + 1 + deepestBottom;
+}
+
+void checkTraversalStack(const bvh::SceneBvh& bvh, bool instancing, std::uint32_t capacity) {
+    const std::uint32_t need = traversalStackNeed(bvh, instancing);
+    if (need > capacity)
+        throw DeviceLimitExceeded("the scene's BVH needs a traversal stack of " + std::to_string(need) +
+                                  " entries but the kernel's TRAVERSAL_STACK_SIZE is " + std::to_string(capacity) +
+                                  " (shaders/shared/device_host.h); the BVH is unusually deep: check for degenerate geometry");
+}
+
+}  // namespace vkrt

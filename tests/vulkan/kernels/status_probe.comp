@@ -1,0 +1,19 @@
+#version 460
+// Test kernel: reports a failure the way render.comp does, at pixel (5, 3), sample 1: the loop
+// budget flag, or the ray-stack flag when the scene uses gloss (so one kernel tests both).
+#extension GL_GOOGLE_include_directive : require
+#include "device_host.h"
+#include "test_bindings.glsl"
+
+layout(local_size_x = 64) in;
+
+void main() {
+    uint x, y;
+    if (!tilePixel(x, y)) return;
+    uint pixel = y * frame.image.x + x;
+    if (x == 5u && y == 3u && pass.pass.x == 1u) {
+        atomicOr(status.flags.x, HAS_GLOSS ? STATUS_RAY_STACK_OVERFLOW : STATUS_LOOP_BUDGET_EXCEEDED);
+        if (atomicCompSwap(status.flags.y, 0u, pixel + 1u) == 0u) status.flags.z = pass.pass.x;
+    }
+    accum[pixel].rgb += vec3(1.0);
+}
