@@ -36,6 +36,7 @@ struct BuildOptions {
     int maxLeafSize = 8;         // a leaf is forced to split above this many primitives
     float traversalCost = 1.0f;  // SAH cost of visiting an inner node, relative to...
     float intersectionCost = 1.0f;  // ...intersecting one primitive (see docs/BVH.md for the measurement)
+    int maxBottomDepth = 40;     // node levels of a bottom-level tree (deeper SAH splits become median splits)
 };
 
 struct GroupRange {
@@ -51,6 +52,9 @@ struct BuildStats {
     std::size_t nodeCount = 0;
     std::size_t leafCount = 0;
     std::size_t bytes = 0;        // nodes + primitives + instances as uploaded
+    int bottomDepth = 0;          // nodes on the longest root-to-leaf path of any bottom level
+    int topDepth = 0;             // the same for the top level; a kernel's traversal stack needs at
+                                  // most bottomDepth + topDepth entries
 };
 
 // The flattened two-level BVH: exactly what is uploaded to the GPU.
@@ -64,6 +68,9 @@ struct SceneBvh {
     BuildStats stats;
 };
 
+// Throws std::invalid_argument (one line naming the group/instance, the primitive and the value) on
+// bad input: a non-finite coordinate, a negative radius, an inverted box, an unknown group index, or
+// a transform that is singular, non-finite or not affine.
 SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
                        const std::vector<InstanceInput>& instances, const BuildOptions& options = {});
 
@@ -80,6 +87,7 @@ struct Hit {
     std::uint32_t instance = 0;  // index into SceneBvh::instances
     std::uint32_t prim = 0;      // index into SceneBvh::prims (primSource maps it back)
     float u = 0.0f, v = 0.0f;    // triangle: barycentric weights of v1 and v2
+    int face = -1;               // box: face hit, 0..5 = -x, +x, -y, +y, -z, +z (see intersect.h)
 };
 
 // Closest hit with 0 < t < ray.tmax; false if none.

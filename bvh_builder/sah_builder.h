@@ -1,0 +1,59 @@
+// Binned SAH builder (Wald 2007, "On fast Construction of SAH-based Bounding Volume Hierarchies"):
+// a binary tree over primitive references, before any GPU layout is chosen (flatten.h does that).
+//
+// Rules, each in one sentence:
+//  - Split candidates: `bins` equal-width bins over the centroid bounds on each of the 3 axes;
+//    the cheapest plane of all axes wins (ties: lowest axis, then lowest plane).
+//  - Cost of a split: C_trav + C_isect * (A_left * N_left + A_right * N_right) / A_node;
+//    cost of a leaf: C_isect * N.
+//  - A node becomes a leaf when it holds <= maxLeafSize primitives and no split is cheaper;
+//    above maxLeafSize it is always split.
+//  - When the centroids cannot be binned (all identical), or the SAH split would let the tree grow
+//    deeper than maxDepth, the node is split at the median along its widest centroid axis (by count
+//    when every centroid is identical), so the build always terminates and the depth stays bounded.
+//  - Children are built in parallel as independent subtrees; the tree is identical for any number
+//    of threads because every step (min/max binning, in-place partition) is order-independent or
+//    runs on one thread per subtree.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "aabb.h"
+#include "thread_pool.h"
+
+namespace vkrt::bvh {
+
+struct SahParams {
+    int bins = 16;
+    int maxLeafSize = 8;
+    float traversalCost = 1.0f;
+    float intersectionCost = 1.0f;
+    int maxDepth = 64;  // inner-node levels, root = 1
+};
+
+// count > 0: a leaf over refs[first, first + count); count == 0: inner node with two children.
+struct BuildNode {
+    Aabb box;
+    std::uint32_t left = 0, right = 0;
+    std::uint32_t first = 0, count = 0;
+    bool leaf() const { return count > 0; }
+};
+
+struct BuildTree {
+    std::vector<BuildNode> nodes;  // empty when there were no primitives
+    std::uint32_t root = 0;
+};
+
+// Reorders refs so that every leaf's references are contiguous, in depth-first order of the tree.
+BuildTree buildSah(std::span<PrimRef> refs, const SahParams& params, ThreadPool& pool);
+
+// The SAH cost of a tree relative to its root box: sum over inner nodes of C_trav * A/A_root plus
+// sum over leaves of C_isect * N * A/A_root.
+double sahCost(const BuildTree& tree, const SahParams& params);
+
+// Inner-node levels on the longest root-to-leaf path (a tree that is one leaf has depth 0).
+int innerDepth(const BuildTree& tree);
+
+}  // namespace vkrt::bvh

@@ -1,0 +1,145 @@
+// buildSceneBvh: bottom levels (one per group), then the top level over the instances, flattened
+// into one node array, with stats.
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+#include "bvh.h"
+#include "flatten.h"
+#include "primitives.h"
+#include "sah_builder.h"
+#include "top_level.h"
+
+namespace vkrt::bvh {
+
+namespace {
+
+// Groups at least this large are built one after another with the whole pool; smaller ones are
+// built side by side, one thread each.
+constexpr std::size_t kLargeGroup = 32 * 1024;
+// References are made in chunks of this many primitives (bounds + validation in parallel).
+constexpr std::size_t kRefChunk = 16 * 1024;
+// No tree can be deeper than the CPU traversal's stack (traverse.cpp).
+constexpr int kMaxTreeDepth = 64;
+
+struct GroupBuild {
+    std::vector<PrimRef> refs;
+    BuildTree tree;
+    Aabb bounds;
+};
+
+void validateOptions(const BuildOptions& o) {
+    if (o.maxBottomDepth < 1 || o.maxBottomDepth > kMaxTreeDepth)
+        throw std::invalid_argument("bvh: maxBottomDepth must be in [1, " + std::to_string(kMaxTreeDepth) + "], got " +
+                                    std::to_string(o.maxBottomDepth));
+}
+
+// Builds the PrimRefs of one group (validating every primitive) and its SAH tree.
+void buildGroup(const std::vector<PrimitiveInput>& prims, std::size_t groupIndex, const SahParams& params,
+                ThreadPool& pool, GroupBuild& out) {
+    out.refs.resize(prims.size());
+    const std::size_t chunks = (prims.size() + kRefChunk - 1) / kRefChunk;
+    std::vector<Aabb> partial(chunks);
+    pool.parallelFor(chunks, [&](std::size_t c) {
+        const std::size_t end = std::min(prims.size(), (c + 1) * kRefChunk);
+        for (std::size_t i = c * kRefChunk; i < end; ++i) {
+            validate(prims[i], groupIndex, i);
+            const Aabb b = boundsOf(prims[i]);
+            partial[c].grow(b);
+            out.refs[i] = PrimRef::make(b, static_cast<std::uint32_t>(i));
+        }
+    });
+    for (const Aabb& b : partial) out.bounds.grow(b);
+    out.tree = buildSah(out.refs, params, pool);
+}
+
+}  // namespace
+
+SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
+                       const std::vector<InstanceInput>& instances, const BuildOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    validateOptions(options);
+    for (std::size_t i = 0; i < instances.size(); ++i)
+        if (instances[i].group >= groups.size())
+            throw std::invalid_argument("bvh: instance " + std::to_string(i) + " refers to group " +
+                                        std::to_string(instances[i].group) + ", but there are only " +
+                                        std::to_string(groups.size()) + " groups");
+    std::size_t totalPrims = 0;
+    for (const auto& g : groups) totalPrims += g.size();
+    if (totalPrims >= gpu::NODE_NONE)
+        throw std::invalid_argument("bvh: " + std::to_string(totalPrims) + " primitives exceed the 32-bit index range");
+
+    const SahParams params{options.bins, options.maxLeafSize, options.traversalCost, options.intersectionCost,
+                           options.maxBottomDepth};
+    ThreadPool pool(options.threads);
+
+    // Bottom levels: large groups use the whole pool, small ones run side by side.
+    std::vector<GroupBuild> built(groups.size());
+    std::vector<std::size_t> small;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        if (groups[g].size() >= kLargeGroup) buildGroup(groups[g], g, params, pool, built[g]);
+        else small.push_back(g);
+    }
+    pool.parallelFor(small.size(), [&](std::size_t k) {
+        const std::size_t g = small[k];
+        ThreadPool local(1);
+        buildGroup(groups[g], g, params, local, built[g]);
+    });
+
+    // Flatten in group order, so the layout does not depend on which thread built what.
+    SceneBvh bvh;
+    bvh.prims.resize(totalPrims);
+    bvh.primSource.resize(totalPrims);
+    bvh.groups.resize(groups.size());
+    std::uint32_t firstPrim = 0;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        GroupBuild& b = built[g];
+        GroupRange& range = bvh.groups[g];
+        range.firstPrim = firstPrim;
+        range.primCount = static_cast<std::uint32_t>(groups[g].size());
+        range.lo = b.bounds.lo;
+        range.hi = b.bounds.hi;
+        for (std::size_t i = 0; i < b.refs.size(); ++i) {
+            const std::uint32_t source = b.refs[i].id();
+            bvh.prims[firstPrim + i] = encode(groups[g][source]);
+            bvh.primSource[firstPrim + i] = source;
+        }
+        const FlattenResult flat =
+            flatten(b.tree, [&](const BuildNode& leaf) { return firstPrim + leaf.first; }, bvh.nodes);
+        range.rootNode = flat.root;
+        bvh.stats.leafCount += flat.leafCount;
+        bvh.stats.bottomDepth = std::max(bvh.stats.bottomDepth, flat.depth);
+        bvh.stats.sahCost += sahCost(b.tree, params);
+        firstPrim += range.primCount;
+        b = GroupBuild{};  // release the references early
+    }
+
+    // Top level.
+    std::vector<Aabb> worldBoxes(instances.size());
+    bvh.instances.resize(instances.size());
+    for (std::size_t i = 0; i < instances.size(); ++i) {
+        const GroupRange& g = bvh.groups[instances[i].group];
+        bvh.instances[i] = makeInstance(instances[i], g.rootNode, i);
+        worldBoxes[i] = worldBounds(Aabb{g.lo, g.hi}, instances[i].objectToWorld);
+    }
+    // The top level may use what the bottom levels leave of the kernels' stack
+    // (TRAVERSAL_STACK_SIZE), but never less than a balanced tree over the instances needs.
+    int balancedDepth = 1;
+    while ((std::size_t{1} << balancedDepth) < instances.size()) ++balancedDepth;
+    SahParams topParams = params;
+    topParams.maxDepth = std::min(kMaxTreeDepth, std::max(balancedDepth,
+        static_cast<int>(gpu::TRAVERSAL_STACK_SIZE) - bvh.stats.bottomDepth));
+    const FlattenResult top = buildTopLevel(worldBoxes, topParams, pool, bvh.nodes);
+    bvh.topRoot = top.root;
+    bvh.stats.topDepth = top.depth;
+    bvh.stats.leafCount += top.leafCount;
+
+    bvh.stats.nodeCount = bvh.nodes.size();
+    bvh.stats.bytes = bvh.nodes.size() * sizeof(gpu::BvhNode) + bvh.prims.size() * sizeof(gpu::Primitive) +
+                      bvh.instances.size() * sizeof(gpu::Instance);
+    bvh.stats.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return bvh;
+}
+
+}  // namespace vkrt::bvh

@@ -1,0 +1,86 @@
+#include "thread_pool.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace vkrt::bvh {
+
+ThreadPool::ThreadPool(int threads) {
+    if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    for (int i = 1; i < threads; ++i) workers_.emplace_back([this] { workerLoop(); });
+}
+
+ThreadPool::~ThreadPool() {
+    {
+        std::lock_guard lock(mutex_);
+        stopping_ = true;
+    }
+    wake_.notify_all();
+    for (std::thread& t : workers_) t.join();
+}
+
+// Claims and runs items of the current job until none are left. Items are coarse (a chunk of
+// primitives, a subtree, a group), so a mutex per claim costs nothing measurable.
+void ThreadPool::drain() {
+    std::unique_lock lock(mutex_);
+    while (job_ && next_ < jobCount_) {
+        const std::size_t i = next_++;
+        const auto* fn = job_;
+        lock.unlock();
+        std::exception_ptr error;
+        try {
+            (*fn)(i);
+        } catch (...) {
+            error = std::current_exception();
+        }
+        lock.lock();
+        if (error && !error_) error_ = error;
+        if (++finished_ == jobCount_) done_.notify_all();
+    }
+}
+
+void ThreadPool::workerLoop() {
+    std::size_t seen = 0;
+    for (;;) {
+        {
+            std::unique_lock lock(mutex_);
+            wake_.wait(lock, [&] { return stopping_ || (job_ && generation_ != seen); });
+            if (stopping_) return;
+            seen = generation_;
+        }
+        drain();
+    }
+}
+
+void ThreadPool::parallelFor(std::size_t count, const std::function<void(std::size_t)>& fn) {
+    if (count == 0) return;
+    if (workers_.empty() || count == 1) {
+        std::exception_ptr error;
+        for (std::size_t i = 0; i < count; ++i) {
+            try {
+                fn(i);
+            } catch (...) {
+                if (!error) error = std::current_exception();
+            }
+        }
+        if (error) std::rethrow_exception(error);
+        return;
+    }
+    {
+        std::lock_guard lock(mutex_);
+        job_ = &fn;
+        jobCount_ = count;
+        next_ = 0;
+        finished_ = 0;
+        error_ = nullptr;
+        ++generation_;
+    }
+    wake_.notify_all();
+    drain();
+    std::unique_lock lock(mutex_);
+    done_.wait(lock, [&] { return finished_ == jobCount_; });
+    job_ = nullptr;
+    if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
+}
+
+}  // namespace vkrt::bvh

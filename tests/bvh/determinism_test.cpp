@@ -1,0 +1,41 @@
+// The build's output must not depend on the number of threads (bit-identical arrays).
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "scene_gen.h"
+
+namespace vkrt::bvh::test {
+namespace {
+
+template <class T>
+bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+TEST(Determinism, ThreadCountDoesNotChangeTheResult) {
+    std::mt19937 rng(21);
+    TestScene scene;
+    // A group large enough for the parallel top phase and parallel binning, small groups built
+    // side by side, and enough instances for a real top level.
+    scene.groups.push_back(randomTriangles(rng, 200000, 100.0f, 0.5f));
+    for (int g = 0; g < 12; ++g) scene.groups.push_back(randomSpheresAndBoxes(rng, 500 + 300 * g, 10.0f, 0.5f));
+    for (std::uint32_t g = 0; g < scene.groups.size(); ++g)
+        scene.instances.push_back({g, randomTransform(rng, 100.0f, g % 2 == 0), gpu::MATERIAL_NONE});
+    BuildOptions options;
+    options.threads = 1;
+    const SceneBvh reference = buildSceneBvh(scene.groups, scene.instances, options);
+    for (int threads : {2, 3, 4, 7}) {
+        options.threads = threads;
+        const SceneBvh bvh = buildSceneBvh(scene.groups, scene.instances, options);
+        EXPECT_TRUE(sameBytes(bvh.nodes, reference.nodes)) << threads << " threads";
+        EXPECT_TRUE(sameBytes(bvh.prims, reference.prims)) << threads << " threads";
+        EXPECT_TRUE(sameBytes(bvh.primSource, reference.primSource)) << threads << " threads";
+        EXPECT_TRUE(sameBytes(bvh.instances, reference.instances)) << threads << " threads";
+        EXPECT_EQ(bvh.topRoot, reference.topRoot);
+        EXPECT_EQ(bvh.stats.sahCost, reference.stats.sahCost);
+    }
+}
+
+}  // namespace
+}  // namespace vkrt::bvh::test
