@@ -1,0 +1,151 @@
+#include "app.h"
+
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <iostream>
+#include <memory>
+
+#include "command_line.h"
+#include "cpu_renderer.h"
+#include "device_list.h"
+#include "gpu_renderer.h"
+#include "image_compare.h"
+#include "interrupt.h"
+#include "scene_accel.h"
+#include "vulkan_errors.h"
+#include "xml_loader.h"
+
+namespace vkrt {
+
+namespace {
+
+constexpr int kExitFailure = 1;
+constexpr int kExitInterrupted = 130;
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+Scene loadWithWarnings(const CommandLine& cl) {
+    Diagnostics diagnostics(cl.strict);
+    Scene scene = loadScene(cl.scenePath, LoadOptions{cl.strict}, diagnostics);
+    for (const std::string& line : diagnostics.messages()) std::cerr << "warning: " << line << "\n";
+    if (cl.render.camera >= static_cast<int>(scene.cameras.size()))
+        throw std::invalid_argument("--camera " + std::to_string(cl.render.camera) + ": " + cl.scenePath + " has " +
+                                    std::to_string(scene.cameras.size()) + " camera(s)");
+    return scene;
+}
+
+GpuRendererOptions gpuOptions(const CommandLine& cl) {
+    GpuRendererOptions options;
+    options.gpu = cl.gpuIndex;
+    options.validation = cl.validate;
+    if (!cl.shaderDir.empty()) options.shaderDir = cl.shaderDir;
+    return options;
+}
+
+struct DeviceRender {
+    Image image;
+    std::string device;
+    double seconds = 0.0;
+};
+
+DeviceRender renderOnCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions& options) {
+    RenderStats stats;
+    Image image = renderCpu(scene, accel, options, &stats);
+    if (stats.nonFiniteSamples > 0)
+        std::cerr << "warning: " << stats.nonFiniteSamples << " samples were NaN/Inf and were replaced by black\n";
+    return {std::move(image), "cpu (" + std::to_string(stats.threads) + " threads)", stats.seconds};
+}
+
+DeviceRender renderOnGpu(GpuRenderer& gpu, const Scene& scene, const SceneAccel& accel, const RenderOptions& options,
+                         bool general) {
+    GpuRenderStats stats;
+    GpuRenderSettings settings;
+    settings.variant = general ? KernelVariant::General : KernelVariant::Specialised;
+    Image image = gpu.render(scene, accel, options, &stats, settings);
+    if (stats.nonFiniteSamples > 0)
+        std::cerr << "warning: " << stats.nonFiniteSamples << " samples were NaN/Inf and were replaced by black\n";
+    if (auto log = gpu.validationLog(); log && log->count() > 0)
+        std::cerr << "warning: " << log->count() << " Vulkan validation message(s):\n" << log->text();
+    return {std::move(image), stats.device, stats.renderSeconds + stats.readbackSeconds};
+}
+
+// --device auto: the GPU when a Vulkan device exists, else the CPU reference with a message.
+std::unique_ptr<GpuRenderer> openGpu(const CommandLine& cl) {
+    if (cl.device == DeviceChoice::Cpu) return nullptr;
+    try {
+        return std::make_unique<GpuRenderer>(gpuOptions(cl));
+    } catch (const VulkanUnavailable& e) {
+        if (cl.device == DeviceChoice::Gpu) throw;
+        std::cerr << "note: no usable Vulkan device (" << e.what() << "); rendering on the CPU reference\n";
+        return nullptr;
+    }
+}
+
+int runRender(const CommandLine& cl) {
+    const auto start = std::chrono::steady_clock::now();
+    const Scene scene = loadWithWarnings(cl);
+    const SceneAccel accel = buildSceneAccel(scene);
+    std::unique_ptr<GpuRenderer> gpu = openGpu(cl);
+    DeviceRender result = gpu ? renderOnGpu(*gpu, scene, accel, cl.render, cl.general)
+                              : renderOnCpu(scene, accel, cl.render);
+    writeImage(result.image, cl.outputPath);
+    if (!cl.render.quiet)
+        std::fprintf(stderr, "%s: %dx%d, %d rpp on %s: render %.2fs, total %.2fs -> %s\n", cl.scenePath.c_str(),
+                     cl.render.width, cl.render.height, cl.render.samplesPerPixel, result.device.c_str(),
+                     result.seconds, secondsSince(start), cl.outputPath.c_str());
+    return 0;
+}
+
+int runCompare(const CommandLine& cl) {
+    const Scene scene = loadWithWarnings(cl);
+    const SceneAccel accel = buildSceneAccel(scene);
+    GpuRenderer gpu(gpuOptions(cl));
+    const DeviceRender onGpu = renderOnGpu(gpu, scene, accel, cl.render, cl.general);
+    const DeviceRender onCpu = renderOnCpu(scene, accel, cl.render);
+    const ImageDifference diff = compareImages(onGpu.image, onCpu.image);
+    writeImage(diff.heatMap, cl.heatMapPath);
+    std::printf("scene            %s (%dx%d, %d rpp, seed %u)\n", cl.scenePath.c_str(), cl.render.width,
+                cl.render.height, cl.render.samplesPerPixel, cl.render.seed);
+    std::printf("gpu              %s, %.3f s\n", onGpu.device.c_str(), onGpu.seconds);
+    std::printf("cpu              %s, %.3f s\n", onCpu.device.c_str(), onCpu.seconds);
+    std::printf("max abs diff     %.4f (%d/255)\n", diff.maxAbs, static_cast<int>(diff.maxAbs * 255.0 + 0.5));
+    std::printf("mean abs diff    %.6f (%.3f/255)\n", diff.meanAbs, diff.meanAbs * 255.0);
+    std::printf("pixels > 1/255   %.3f%%\n", 100.0 * diff.fractionOver1);
+    std::printf("pixels > 2/255   %.3f%%\n", 100.0 * diff.fractionOver2);
+    std::printf("psnr             %.2f dB\n", diff.psnr);
+    std::printf("heat map         %s\n", cl.heatMapPath.c_str());
+    return 0;
+}
+
+int runListDevices() {
+    std::cout << formatDeviceList(listDevices());
+    return 0;
+}
+
+}  // namespace
+
+int runVkrt(int argc, const char* const* argv) {
+    ParseResult parsed = parseCommandLine(argc, argv);
+    if (!parsed.commandLine) return parsed.exitCode;
+    CommandLine cl = *parsed.commandLine;
+    cl.render.cancel = installInterruptHandler();
+    try {
+        switch (cl.command) {
+        case Command::ListDevices: return runListDevices();
+        case Command::Compare: return runCompare(cl);
+        case Command::Render: return runRender(cl);
+        }
+    } catch (const RenderCancelled&) {
+        std::cerr << "vkrt: interrupted\n";
+        return kExitInterrupted;
+    } catch (const std::exception& e) {
+        std::cerr << "vkrt: error: " << e.what() << "\n";
+        return kExitFailure;
+    }
+    return kExitFailure;
+}
+
+}  // namespace vkrt

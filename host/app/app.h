@@ -1,0 +1,10 @@
+// The vkrt program: parses the command line and runs the command.
+#pragma once
+
+namespace vkrt {
+
+// Returns the process exit code: 0 success, 1 bad scene or failed render, 2 usage error,
+// 130 interrupted by Ctrl-C.
+int runVkrt(int argc, const char* const* argv);
+
+}  // namespace vkrt

@@ -1,0 +1,38 @@
+// The vkrt command line: `vkrt scene.xml [options]`, `vkrt compare scene.xml [options]`,
+// `vkrt --list-devices`, plus the course's -i -o -w -h -r -k spellings.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "render_options.h"
+
+namespace vkrt {
+
+enum class Command { Render, Compare, ListDevices };
+enum class DeviceChoice { Auto, Cpu, Gpu };
+
+struct CommandLine {
+    Command command = Command::Render;
+    std::string scenePath;
+    std::string outputPath;       // default: <scene name>.png in the current directory
+    RenderOptions render;
+    bool strict = false;
+    DeviceChoice device = DeviceChoice::Auto;
+    int gpuIndex = -1;            // -1: best device
+    bool validate = false;        // Vulkan validation layers
+    std::string shaderDir;        // compile kernels from this GLSL tree at run time
+    bool general = false;         // GPU: run the general kernel instead of the scene-specialised one
+    std::string heatMapPath;      // compare: difference heat map (default <scene name>_diff.png)
+};
+
+// Parses argv. Returns the command line, or the exit code to stop with (0 after --help,
+// 2 after a usage error; the message has been printed).
+struct ParseResult {
+    std::optional<CommandLine> commandLine;
+    int exitCode = 0;
+};
+ParseResult parseCommandLine(int argc, const char* const* argv);
+
+}  // namespace vkrt
