@@ -6,10 +6,10 @@ namespace vkrt {
 
 namespace {
 
-// A value may be element text spanning lines, or a whole paragraph of garbage: keep the message on
-// one line and short enough to read, while still showing where the text went wrong.
-std::string oneLine(const std::string& value) {
-    constexpr std::size_t kMaxChars = 80;
+// A value may be element text spanning lines, or a whole paragraph of garbage, and a problem may
+// quote a library's multi-line message: keep the message on one line. Values are also shortened
+// past kMaxChars, which is long enough for any real path but not for a pasted paragraph.
+std::string oneLine(const std::string& value, std::size_t kMaxChars) {
     std::string flat;
     bool lastWasSpace = false;
     for (char c : value) {
@@ -18,6 +18,8 @@ std::string oneLine(const std::string& value) {
         flat += space ? ' ' : c;
         lastWasSpace = space;
     }
+    while (!flat.empty() && flat.back() == ' ') flat.pop_back();
+    if (!flat.empty() && flat.front() == ' ') flat.erase(0, 1);  // runs were collapsed to one space
     if (flat.size() > kMaxChars) flat = flat.substr(0, kMaxChars) + "...";
     return flat;
 }
@@ -25,8 +27,8 @@ std::string oneLine(const std::string& value) {
 }  // namespace
 
 std::string Issue::message() const {
-    std::string text = file + ":" + std::to_string(line) + ": " + element + ": " + problem;
-    if (!value.empty()) text += " '" + oneLine(value) + "'";
+    std::string text = file + ":" + std::to_string(line) + ": " + element + ": " + oneLine(problem, std::string::npos);
+    if (!value.empty()) text += " '" + oneLine(value, 240) + "'";
     return text;
 }
 

@@ -70,7 +70,8 @@ glm::vec3 vec3At(const std::vector<tinyobj::real_t>& values, int index) {
 
 Mesh loadObjMesh(const std::string& path) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) throw std::runtime_error("mesh file not found");
+    if (!std::filesystem::exists(path, ec)) throw std::runtime_error("mesh file not found");
+    if (!std::filesystem::is_regular_file(path, ec)) throw std::runtime_error("mesh path is not a regular file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw std::runtime_error("cannot open mesh file");
 

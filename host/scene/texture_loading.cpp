@@ -14,7 +14,10 @@ std::optional<Texture> loadTextureImage(const std::string& path, std::string& er
         error = "texture file not found";
         return std::nullopt;
     }
-    auto input = OIIO::ImageInput::open(path);
+    // Texels as stored: OpenImageIO would otherwise premultiply colour by alpha on reading.
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto input = OIIO::ImageInput::open(path, &config);
     if (!input) {
         error = "cannot read texture image (" + OIIO::geterror() + ")";
         return std::nullopt;

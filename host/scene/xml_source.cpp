@@ -1,6 +1,7 @@
 #include "xml_source.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -12,6 +13,9 @@ namespace vkrt {
 namespace {
 
 std::string readWholeFile(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) throw SceneError({path, 0, "xml", "scene file not found", path});
+    if (!std::filesystem::is_regular_file(path, ec)) throw SceneError({path, 0, "xml", "not a regular file", path});
     std::ifstream in(path, std::ios::binary);
     if (!in) throw SceneError({path, 0, "xml", "cannot open the scene file", path});
     std::ostringstream buffer;

@@ -1,0 +1,195 @@
+// Malformed input: every class gets one SceneError naming file:line, the element and the value.
+#include "scene_test_files.h"
+
+namespace vkrt::test {
+namespace {
+
+using BadInput = SceneFiles;
+
+const std::string kShader = "<shader name=\"s\" type=\"Lambertian\"><diffuse>1 1 1</diffuse></shader>\n";
+
+std::string sphere(const std::string& radius) {
+    return "<shape name=\"ball\" type=\"sphere\"><shader ref=\"s\"/><center>0 0 -3</center><radius>" + radius +
+           "</radius></shape>";
+}
+
+TEST_F(BadInput, MissingSceneFile) {
+    Diagnostics diagnostics;
+    const std::string path = (dir / "absent.xml").string();
+    try {
+        loadScene(path, {}, diagnostics);
+        FAIL();
+    } catch (const SceneError& error) {
+        EXPECT_EQ(error.issue().file, path);
+        EXPECT_NE(std::string(error.what()).find("not found"), std::string::npos) << error.what();
+    }
+}
+
+TEST_F(BadInput, DirectoryInsteadOfAFile) {
+    Diagnostics diagnostics;
+    EXPECT_THROW(loadScene(dir.string(), {}, diagnostics), SceneError);
+}
+
+TEST_F(BadInput, MalformedXmlNamesTheLineAndText) {
+    const std::string xml = "<?xml version=\"1.0\"?>\n<scene>\n<camera>\n<position>0 0 0</positon>\n</camera>\n</scene>\n";
+    const Issue issue = errorOf(xml);
+    EXPECT_EQ(issue.file, scenePath);
+    EXPECT_EQ(issue.line, 4);
+    EXPECT_EQ(issue.element, "xml");
+    EXPECT_NE(issue.problem.find("malformed XML"), std::string::npos) << issue.message();
+    EXPECT_FALSE(issue.value.empty());
+}
+
+TEST_F(BadInput, EmptyFileAndTruncatedFile) {
+    EXPECT_EQ(errorOf("").element, "xml");
+    const Issue truncated = errorOf(sceneWith(kShader).substr(0, 90));
+    EXPECT_EQ(truncated.element, "xml");
+    EXPECT_GE(truncated.line, 1);
+}
+
+TEST_F(BadInput, RootMustBeScene) {
+    expectIssue(errorOf("<?xml version=\"1.0\"?>\n<world/>\n"), 2, "world", "world");
+}
+
+TEST_F(BadInput, SceneWithoutCamera) {
+    const Issue issue = errorOf("<scene>\n<light type=\"point\"><position>0 1 0</position><intensity>1 1 1</intensity></light>\n</scene>\n");
+    expectIssue(issue, 1, "scene", "");
+    EXPECT_NE(issue.problem.find("<camera>"), std::string::npos);
+}
+
+TEST_F(BadInput, CameraWithoutPositionOrDirection) {
+    const Issue noPosition = errorOf("<scene>\n<camera><viewDir>0 0 -1</viewDir></camera>\n</scene>");
+    expectIssue(noPosition, 2, "camera", "");
+    EXPECT_NE(noPosition.problem.find("<position>"), std::string::npos);
+    const Issue noDirection = errorOf("<scene>\n<camera><position>0 0 0</position></camera>\n</scene>");
+    expectIssue(noDirection, 2, "camera", "");
+    EXPECT_NE(noDirection.problem.find("<viewDir>"), std::string::npos);
+}
+
+TEST_F(BadInput, ZeroViewDirAndLookatAtTheEye) {
+    expectIssue(errorOf("<scene>\n<camera><position>0 0 0</position>\n<viewDir>0 0.0 -0</viewDir></camera>\n</scene>"), 3,
+                "viewDir", "0 0.0 -0");
+    expectIssue(errorOf("<scene>\n<camera><position>1 2 3</position>\n<lookatPoint>1 2 3</lookatPoint></camera>\n</scene>"), 3,
+                "lookatPoint", "1 2 3");
+}
+
+TEST_F(BadInput, NonPositiveFocalLengthOrImagePlaneWidth) {
+    expectIssue(errorOf("<scene>\n<camera><position>0 0 0</position><viewDir>0 0 -1</viewDir>\n<focalLength>0</focalLength></camera>\n</scene>"),
+                3, "focalLength", "0");
+    expectIssue(
+        errorOf("<scene>\n<camera><position>0 0 0</position><viewDir>0 0 -1</viewDir>\n<imagePlaneWidth>-0.5</imagePlaneWidth></camera>\n</scene>"),
+        3, "imagePlaneWidth", "-0.5");
+}
+
+TEST_F(BadInput, SphereWithoutRadius) {
+    const std::string xml = sceneWith(kShader + "<shape name=\"ball\" type=\"sphere\"><shader ref=\"s\"/><center>0 0 0</center></shape>");
+    const Issue issue = errorOf(xml);
+    expectIssue(issue, lineOf(xml, "name=\"ball\""), "shape", "");
+    EXPECT_EQ(issue.problem, "missing required element <radius>");
+}
+
+TEST_F(BadInput, NegativeAndZeroRadius) {
+    for (const char* radius : {"-1", "0", "-0.0"}) {
+        SCOPED_TRACE(radius);
+        const std::string xml = sceneWith(kShader + sphere(radius));
+        expectIssue(errorOf(xml), lineOf(xml, "<radius>"), "radius", radius);
+    }
+}
+
+TEST_F(BadInput, InvertedBox) {
+    const std::string xml = sceneWith(kShader +
+        "<shape name=\"b\" type=\"box\"><shader ref=\"s\"/>\n<minPt>0 2 0</minPt>\n<maxPt>1 1 1</maxPt></shape>");
+    const Issue issue = errorOf(xml);
+    expectIssue(issue, lineOf(xml, "<minPt>"), "minPt", "0 2 0 > 1 1 1");
+    EXPECT_NE(issue.problem.find("y axis"), std::string::npos) << issue.problem;
+}
+
+TEST_F(BadInput, AreaLightZeroNormalAndNonPositiveSizes) {
+    const auto area = [](const std::string& normal, const std::string& width, const std::string& length) {
+        return sceneWith("<light type=\"area\"><position>0 5 0</position><intensity>1 1 1</intensity>\n<normal>" + normal +
+                         "</normal>\n<width>" + width + "</width>\n<length>" + length + "</length></light>");
+    };
+    expectIssue(errorOf(area("0 0 0", "1", "1")), 5, "normal", "0 0 0");
+    expectIssue(errorOf(area("0 -1 0", "-2", "1")), 6, "width", "-2");
+    expectIssue(errorOf(area("0 -1 0", "2", "-1")), 7, "length", "-1");
+    expectIssue(errorOf(area("0 -1 0", "0", "1")), 6, "width", "0");
+    const Issue missing = errorOf(sceneWith("<light type=\"area\"><position>0 5 0</position><intensity>1 1 1</intensity><normal>0 -1 0</normal></light>"));
+    expectIssue(missing, 4, "light", "");
+    EXPECT_NE(missing.problem.find("<width>"), std::string::npos);
+}
+
+TEST_F(BadInput, LightWithoutTypeOrIntensity) {
+    expectIssue(errorOf(sceneWith("<light><position>0 5 0</position><intensity>1 1 1</intensity></light>")), 4, "light", "");
+    const Issue issue = errorOf(sceneWith("<light type=\"point\"><position>0 5 0</position></light>"));
+    EXPECT_NE(issue.problem.find("<intensity>"), std::string::npos);
+}
+
+TEST_F(BadInput, ShapeWithoutShader) {
+    const std::string xml = sceneWith(kShader + "<shape name=\"lonely\" type=\"sphere\"><center>0 0 0</center><radius>1</radius></shape>");
+    const Issue issue = errorOf(xml);
+    expectIssue(issue, lineOf(xml, "lonely"), "shape", "lonely");
+    EXPECT_NE(issue.problem.find("<shader>"), std::string::npos);
+    const std::string proto = sceneWith(kShader + "<instance name=\"p\" type=\"sphere\"><center>0 0 0</center><radius>1</radius></instance>");
+    EXPECT_EQ(errorOf(proto).element, "instance");
+}
+
+TEST_F(BadInput, ShapeWithoutType) {
+    expectIssue(errorOf(sceneWith(kShader + "<shape name=\"x\"><shader ref=\"s\"/></shape>")), 5, "shape", "");
+}
+
+TEST_F(BadInput, UnresolvedShaderReference) {
+    const std::string xml = sceneWith(kShader +
+        "<shape type=\"sphere\"><center>0 0 0</center><radius>1</radius>\n<shader ref=\"Grey Mat\"/></shape>");
+    const Issue issue = errorOf(xml);
+    expectIssue(issue, lineOf(xml, "Grey Mat"), "shader", "Grey Mat");
+    EXPECT_NE(issue.problem.find("unresolved shader"), std::string::npos);
+    // ... also as an instance's override.
+    const std::string instance = sceneWith(kShader +
+        "<instance name=\"p\" type=\"sphere\"><shader ref=\"s\"/><center>0 0 0</center><radius>1</radius></instance>\n"
+        "<shape type=\"instance\" id=\"p\">\n<shader ref=\"nope\"/></shape>");
+    expectIssue(errorOf(instance), lineOf(instance, "nope"), "shader", "nope");
+}
+
+TEST_F(BadInput, UnresolvedOrMissingInstanceId) {
+    const std::string xml = sceneWith(kShader + "<shape name=\"egg\" type=\"instance\" id=\"eggBase\"/>");
+    const Issue issue = errorOf(xml);
+    expectIssue(issue, lineOf(xml, "egg"), "shape", "eggBase");
+    EXPECT_NE(issue.problem.find("unresolved instance id"), std::string::npos);
+    const Issue noId = errorOf(sceneWith(kShader + "<shape name=\"egg\" type=\"instance\"/>"));
+    EXPECT_NE(noId.problem.find("id"), std::string::npos);
+}
+
+TEST_F(BadInput, MissingMeshFile) {
+    const std::string xml = sceneWith(kShader +
+        "<instance name=\"dragon\" type=\"mesh\">\n<file>objFiles/dragon.obj</file><shader ref=\"s\"/></instance>");
+    const Issue issue = errorOf(xml);
+    expectIssue(issue, lineOf(xml, "<file>"), "file", (dir / "objFiles/dragon.obj").string());
+    EXPECT_NE(issue.problem.find("not found"), std::string::npos);
+}
+
+TEST_F(BadInput, UnreadableOrEmptyOrBrokenMeshFile) {
+    std::filesystem::create_directories(dir / "adir.obj");
+    write("empty.obj", "# nothing here\nv 0 0 0\n");
+    write("badindex.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n");
+    write("zeroindex.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n");
+    for (const char* file : {"adir.obj", "empty.obj", "badindex.obj", "zeroindex.obj"}) {
+        SCOPED_TRACE(file);
+        const std::string xml = sceneWith(kShader + "<shape type=\"mesh\"><shader ref=\"s\"/>\n<file>" + std::string(file) + "</file></shape>");
+        expectIssue(errorOf(xml), 6, "file", (dir / file).string());
+    }
+}
+
+TEST_F(BadInput, UnknownCameraNameInSceneParameters) {
+    const std::string xml = sceneWith("<sceneParameters>\n<camera>side</camera>\n</sceneParameters>");
+    expectIssue(errorOf(xml), lineOf(xml, "<camera>side"), "camera", "side");
+}
+
+TEST_F(BadInput, LineNumbersAreRightWithCrLfLineEnds) {
+    std::string xml = sceneWith(kShader + "\n\n" + sphere("-2"));
+    std::string crlf;
+    for (char c : xml) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+    expectIssue(errorOf(crlf), lineOf(xml, "<radius>"), "radius", "-2");
+}
+
+}  // namespace
+}  // namespace vkrt::test

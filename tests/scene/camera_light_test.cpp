@@ -1,0 +1,164 @@
+// <camera>, <light>, background and environment-map forms (FORMAT.md §3.1-3.4).
+#include "scene_test_files.h"
+
+namespace vkrt::test {
+namespace {
+
+using CameraParsing = SceneFiles;
+using LightParsing = SceneFiles;
+using BackgroundParsing = SceneFiles;
+
+std::string sceneWithCameras(const std::string& cameras, const std::string& extra = "") {
+    return "<scene>\n" + cameras + "\n" + extra + "\n</scene>\n";
+}
+
+TEST_F(CameraParsing, PerspectiveWithViewDirAndAllChildren) {
+    const Scene scene = loadClean(sceneWithCameras(
+        "<camera name=\"main\" type=\"perspective\"><position>0 3.0 4.0</position><viewDir>0 -1.5 -3.0</viewDir>"
+        "<focalLength>0.40</focalLength><imagePlaneWidth>0.25</imagePlaneWidth></camera>"));
+    ASSERT_EQ(scene.cameras.size(), 1u);
+    const Camera& c = scene.cameras[0];
+    EXPECT_EQ(c.name, "main");
+    EXPECT_EQ(c.type, CameraType::Perspective);
+    EXPECT_EQ(c.position, glm::vec3(0, 3, 4));
+    EXPECT_EQ(c.gaze, glm::vec3(0, -1.5f, -3));  // kept as written, not normalised
+    EXPECT_FLOAT_EQ(c.focalLength, 0.4f);
+    EXPECT_FLOAT_EQ(c.imagePlaneWidth, 0.25f);
+    EXPECT_EQ(c.where.line, 2);
+    EXPECT_EQ(scene.defaultCamera, 0);
+}
+
+TEST_F(CameraParsing, DefaultsFocalLengthOneAndImagePlaneWidthHalf) {
+    const Scene scene = loadClean(sceneWithCameras("<camera><position>1 2 3</position><viewDir>0 0 -1</viewDir></camera>"));
+    EXPECT_EQ(scene.cameras[0].type, CameraType::Perspective);  // no type attribute
+    EXPECT_EQ(scene.cameras[0].focalLength, 1.0f);
+    EXPECT_EQ(scene.cameras[0].imagePlaneWidth, 0.5f);
+}
+
+TEST_F(CameraParsing, LookatPointOverridesViewDirWhicheverComesFirst) {
+    const Scene scene = loadClean(sceneWithCameras(
+        "<camera><lookatPoint>0 0.0 -3.0</lookatPoint><position>0 6.0 1.0</position><viewDir>1 0 0</viewDir></camera>"));
+    EXPECT_EQ(scene.cameras[0].gaze, glm::vec3(0, -6, -4));
+}
+
+TEST_F(CameraParsing, OrthographicIsSupported) {
+    const Scene scene = loadClean(sceneWithCameras(
+        "<camera type=\"orthographic\"><position>0 0 5</position><viewDir>0 0 -1</viewDir><imagePlaneWidth>4</imagePlaneWidth></camera>"));
+    EXPECT_EQ(scene.cameras[0].type, CameraType::Orthographic);
+    EXPECT_EQ(scene.cameras[0].imagePlaneWidth, 4.0f);
+}
+
+TEST_F(CameraParsing, SeveralCamerasAreKeptInOrderAndSceneParametersCanPickOne) {
+    const std::string cameras =
+        "<camera name=\"a\"><position>0 0 0</position><viewDir>0 0 -1</viewDir></camera>\n"
+        "<camera name=\"b\"><position>1 0 0</position><viewDir>0 0 -1</viewDir></camera>\n"
+        "<camera name=\"c\"><position>2 0 0</position><viewDir>0 0 -1</viewDir></camera>";
+    const Scene first = loadClean(sceneWithCameras(cameras));
+    ASSERT_EQ(first.cameras.size(), 3u);
+    EXPECT_EQ(first.cameras[0].name, "a");
+    EXPECT_EQ(first.cameras[1].name, "b");
+    EXPECT_EQ(first.cameras[2].name, "c");
+    EXPECT_EQ(first.defaultCamera, 0);
+    const Scene picked = loadClean(sceneWithCameras(cameras, "<sceneParameters><camera> b </camera></sceneParameters>"));
+    EXPECT_EQ(picked.defaultCamera, 1);
+}
+
+TEST_F(CameraParsing, UnknownCameraTypeWarnsAndIsPerspective) {
+    const std::string xml = sceneWithCameras("<camera type=\"fisheye\"><position>0 0 0</position><viewDir>0 0 -1</viewDir></camera>");
+    Diagnostics diagnostics;
+    EXPECT_EQ(load(xml, diagnostics).cameras[0].type, CameraType::Perspective);
+    ASSERT_EQ(diagnostics.warnings().size(), 1u);
+    expectIssue(diagnostics.warnings()[0], 2, "camera", "fisheye");
+}
+
+TEST_F(LightParsing, PointLight) {
+    const Scene scene = loadClean(sceneWith("<light type=\"point\"><position>0 10 0</position><intensity>1.0 0.5 0.25</intensity></light>"));
+    ASSERT_EQ(scene.lights.size(), 1u);
+    EXPECT_EQ(scene.lights[0].type, LightType::Point);
+    EXPECT_EQ(scene.lights[0].position, glm::vec3(0, 10, 0));
+    EXPECT_EQ(scene.lights[0].intensity, glm::vec3(1, 0.5f, 0.25f));
+    EXPECT_EQ(scene.lights[0].where.line, 4);
+}
+
+TEST_F(LightParsing, AreaLightNormalIsNormalisedAndSizesKept) {
+    // happyBuddha puts normal last; student files use non-unit normals like 10 10 10.
+    const Scene scene = loadClean(sceneWith(
+        "<light type=\"area\"><position>10.0 8.0 1.0</position><intensity>0.8 0.8 0.8</intensity>"
+        "<width>8</width><length>4</length><normal>10 10 10</normal></light>"));
+    const Light& light = scene.lights[0];
+    EXPECT_EQ(light.type, LightType::Area);
+    EXPECT_EQ(light.position, glm::vec3(10, 8, 1));
+    const float k = 1.0f / std::sqrt(3.0f);
+    EXPECT_NEAR(light.normal.x, k, 1e-6f);
+    EXPECT_NEAR(light.normal.y, k, 1e-6f);
+    EXPECT_NEAR(light.normal.z, k, 1e-6f);
+    EXPECT_EQ(light.width, 8.0f);
+    EXPECT_EQ(light.length, 4.0f);
+}
+
+TEST_F(LightParsing, AreaChildrenOnAPointLightAreIgnoredSilently) {
+    // solarSystem.xml, oneSphereUpPt.xml; even a zero normal there is not looked at.
+    const Scene scene = loadClean(sceneWith(
+        "<light type=\"point\" name=\"main-light\"><position>1 2 3</position><intensity>1 1 1</intensity>"
+        "<normal>0 0 0</normal><width>-1</width><length>4</length></light>"));
+    ASSERT_EQ(scene.lights.size(), 1u);
+    EXPECT_EQ(scene.lights[0].type, LightType::Point);
+}
+
+TEST_F(LightParsing, UnknownLightTypeWarnsAndIsSkipped) {
+    const std::string xml = sceneWith(
+        "<light type=\"spot\"><position>0 1 0</position><intensity>1 1 1</intensity></light>\n"
+        "<light type=\"point\"><position>0 2 0</position><intensity>1 1 1</intensity></light>");
+    Diagnostics diagnostics;
+    const Scene scene = load(xml, diagnostics);
+    ASSERT_EQ(scene.lights.size(), 1u);
+    EXPECT_EQ(scene.lights[0].position.y, 2.0f);
+    ASSERT_EQ(diagnostics.warnings().size(), 1u);
+    expectIssue(diagnostics.warnings()[0], lineOf(xml, "spot"), "light", "spot");
+}
+
+TEST_F(BackgroundParsing, DefaultIsBlack) {
+    const Scene scene = loadClean(sceneWith(""));
+    EXPECT_EQ(scene.background, glm::vec3(0.0f));
+    EXPECT_TRUE(scene.envMapPrefix.empty());
+}
+
+TEST_F(BackgroundParsing, RootAttribute) {
+    EXPECT_EQ(loadClean(sceneWith("", " bgColor=\"0.5 0.25 1\"")).background, glm::vec3(0.5f, 0.25f, 1.0f));
+}
+
+TEST_F(BackgroundParsing, SceneParametersElementWinsOverTheAttribute) {
+    const Scene scene = loadClean(
+        sceneWith("<sceneParameters><bgColor>0.1 0.2 0.3</bgColor></sceneParameters>", " bgColor=\"1 0 0\""));
+    EXPECT_EQ(scene.background, glm::vec3(0.1f, 0.2f, 0.3f));
+}
+
+TEST_F(BackgroundParsing, MalformedAttributeNamesTheAttribute) {
+    const Issue issue = errorOf(sceneWith("", " bgColor=\"0.5 0.5\""));
+    expectIssue(issue, 2, "scene bgColor", "0.5 0.5");
+}
+
+TEST_F(BackgroundParsing, EnvMapPrefixAttributeIsRecordedWithAWarning) {
+    const std::string xml = sceneWith("", " bgColor=\"1 0 0\" envmapPrefix=\"data/reef_\"");
+    Diagnostics diagnostics;
+    const Scene scene = load(xml, diagnostics);
+    EXPECT_EQ(scene.envMapPrefix, "data/reef_");
+    EXPECT_EQ(scene.background, glm::vec3(1, 0, 0));
+    ASSERT_EQ(diagnostics.warnings().size(), 1u);
+    expectIssue(diagnostics.warnings()[0], 2, "scene", "data/reef_");
+    EXPECT_NE(diagnostics.warnings()[0].problem.find("not rendered"), std::string::npos);
+}
+
+TEST_F(BackgroundParsing, EnvMapPrefixElementWinsAndWarnsOnce) {
+    const std::string xml = sceneWith(
+        "<sceneParameters>\n<bgColor>0.5 0.5 0.6</bgColor>\n<envMapPrefix>images/reef_</envMapPrefix>\n</sceneParameters>",
+        " envmapPrefix=\"data/reef_\"");
+    Diagnostics diagnostics;
+    const Scene scene = load(xml, diagnostics);
+    EXPECT_EQ(scene.envMapPrefix, "images/reef_");
+    ASSERT_EQ(diagnostics.warnings().size(), 1u);
+    expectIssue(diagnostics.warnings()[0], lineOf(xml, "<envMapPrefix>"), "envMapPrefix", "images/reef_");
+}
+
+}  // namespace
+}  // namespace vkrt::test

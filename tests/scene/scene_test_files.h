@@ -1,0 +1,44 @@
+// A scratch directory per test for small XML/OBJ/image files, and helpers to load them.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "diagnostics.h"
+#include "scene.h"
+#include "xml_loader.h"
+
+namespace vkrt::test {
+
+// `<scene>` holding one default camera followed by `body` (one line each for the declaration,
+// the root and the camera, so `body` starts on line 4).
+std::string sceneWith(const std::string& body, const std::string& rootAttributes = "");
+
+// 1-based line of the first occurrence of `needle` in `text` (computed independently of the
+// loader, from the text the test wrote).
+int lineOf(const std::string& text, const std::string& needle);
+
+class SceneFiles : public ::testing::Test {
+protected:
+    void SetUp() override;
+    void TearDown() override;
+
+    // Writes `text` to dir/name and returns the path.
+    std::string write(const std::string& name, const std::string& text) const;
+    Scene load(const std::string& xml, Diagnostics& diagnostics, bool strict = false) const;
+    // Loads and expects no warnings at all.
+    Scene loadClean(const std::string& xml) const;
+    // Loads expecting a SceneError; returns its issue (a failed expectation when none is thrown).
+    Issue errorOf(const std::string& xml, bool strict = false) const;
+
+    // The issue is about scenePath at `line`, names `element` and quotes `value`, and its one-line
+    // message reads "<file>:<line>: <element>: <problem> '<value>'".
+    void expectIssue(const Issue& issue, int line, const std::string& element, const std::string& value) const;
+
+    std::filesystem::path dir;
+    std::string scenePath;  // where load()/errorOf() write the XML
+};
+
+}  // namespace vkrt::test
