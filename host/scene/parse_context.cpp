@@ -36,6 +36,12 @@ std::string elementText(pugi::xml_node node) {
     return text;
 }
 
+std::string trimmed(const std::string& text) {
+    const auto begin = text.find_first_not_of(" \t\r\n");
+    if (begin == std::string::npos) return {};
+    return text.substr(begin, text.find_last_not_of(" \t\r\n") - begin + 1);
+}
+
 void checkChildren(const ParseContext& context, pugi::xml_node node, const std::vector<std::string_view>& allowed,
                    const std::vector<std::string_view>& repeatable) {
     std::set<std::string_view> seen;

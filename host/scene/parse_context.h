@@ -31,6 +31,9 @@ struct ParseContext {
 // All character data of an element (comments inside a value are skipped, not a terminator).
 std::string elementText(pugi::xml_node node);
 
+// `text` without leading and trailing whitespace (names and paths written as element text).
+std::string trimmed(const std::string& text);
+
 // Warns about element children whose names are not in `allowed` ("unknown element ... ignored")
 // and about a repeated child of a name in `allowed` (the first one is used). `repeatable` names
 // may appear any number of times.

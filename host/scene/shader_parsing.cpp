@@ -54,12 +54,6 @@ const char* typeName(ShaderType type) {
     return "?";
 }
 
-std::string trimmed(const std::string& text) {
-    const auto begin = text.find_first_not_of(" \t\r\n");
-    if (begin == std::string::npos) return {};
-    return text.substr(begin, text.find_last_not_of(" \t\r\n") - begin + 1);
-}
-
 int lookUpTexture(const ParseContext& context, pugi::xml_node at, const std::string& name,
                   const TextureTable& textures) {
     const auto found = textures.find(name);

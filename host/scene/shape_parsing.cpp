@@ -28,10 +28,8 @@ std::vector<std::string_view> geometryChildren(ShapeType type) {
 
 int MeshLibrary::meshFor(const ParseContext& context, pugi::xml_node file) {
     checkAttributes(context, file, {});
-    const std::string written = elementText(file);
-    const auto begin = written.find_first_not_of(" \t\r\n");
-    if (begin == std::string::npos) context.fail(file, "empty mesh file name");
-    const std::string relative = written.substr(begin, written.find_last_not_of(" \t\r\n") - begin + 1);
+    const std::string relative = trimmed(elementText(file));
+    if (relative.empty()) context.fail(file, "empty mesh file name");
 
     const std::filesystem::path resolved = (context.sceneDirectory / relative).lexically_normal();
     const std::string key = std::filesystem::absolute(resolved).lexically_normal().string();

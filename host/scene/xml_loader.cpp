@@ -21,12 +21,6 @@ namespace vkrt {
 
 namespace {
 
-std::string trimmed(const std::string& text) {
-    const auto begin = text.find_first_not_of(" \t\r\n");
-    if (begin == std::string::npos) return {};
-    return text.substr(begin, text.find_last_not_of(" \t\r\n") - begin + 1);
-}
-
 bool isElement(pugi::xml_node node, std::string_view name) {
     return node.type() == pugi::node_element && name == node.name();
 }

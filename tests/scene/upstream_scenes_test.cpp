@@ -2,7 +2,10 @@
 // listed here, strict mode rejects exactly the warned ones, and selected facts read back right.
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <map>
+#include <random>
+#include <sstream>
 #include <set>
 #include <vector>
 
@@ -249,6 +252,50 @@ TEST(UpstreamFacts, LightsLegacyShadersAndStrayText) {
     const Scene boxes = loadUpstream("boxSphereTest.xml", diagnostics);  // <shader ref> after geometry
     EXPECT_EQ(boxes.shapes.size(), 825u);
     EXPECT_TRUE(diagnostics.warnings().empty());
+}
+
+// Damaged copies of real files: every load either succeeds with a consistent scene or throws a
+// SceneError with a one-line message naming the file; never another exception or a crash.
+// Deterministic (fixed seed) so a failure reproduces.
+class DamagedUpstream : public SceneFiles {};
+
+TEST_F(DamagedUpstream, EveryMutationLoadsOrFailsWithASceneError) {
+    std::mt19937 random(5721);
+    const std::string alphabet = "<>/\"=& \n0123456789.-+eExnaif";
+    int loaded = 0, rejected = 0;
+    for (const char* name : {"oneSphere.xml", "threeEggs.xml", "table.xml", "CornellRoom_wWater.xml"}) {
+        std::ifstream in(upstreamPath(name), std::ios::binary);
+        std::stringstream buffer;
+        buffer << in.rdbuf();
+        const std::string original = buffer.str();
+        for (int round = 0; round < 250; ++round) {
+            std::string text = original;
+            const int edits = 1 + static_cast<int>(random() % 3);
+            for (int e = 0; e < edits && !text.empty(); ++e) {
+                const std::size_t at = random() % text.size();
+                const std::size_t span = std::min<std::size_t>(1 + random() % 12, text.size() - at);
+                switch (random() % 3) {
+                    case 0: text.erase(at, span); break;
+                    case 1: text.insert(at, 1, alphabet[random() % alphabet.size()]); break;
+                    default: text.insert(at, text.substr(at, span)); break;
+                }
+            }
+            Diagnostics diagnostics;
+            try {
+                const Scene scene = load(text, diagnostics);
+                expectConsistent(scene);
+                ++loaded;
+            } catch (const SceneError& error) {
+                const std::string message = error.what();
+                EXPECT_EQ(message.rfind(scenePath + ":", 0), 0u) << message;
+                EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+                ++rejected;
+            }
+        }
+    }
+    // Both outcomes must occur, or the mutations are not exercising anything.
+    EXPECT_GT(loaded, 50);
+    EXPECT_GT(rejected, 50);
 }
 
 }  // namespace
