@@ -153,6 +153,28 @@ TEST_F(ShaderParsing, NegativePhongExpAndNonPositiveRefractiveIndexAreErrors) {
     expectIssue(errorOf(ior), 4, "refractiveIndex", "0");
 }
 
+TEST_F(ShaderParsing, NegativeRoughnessIsAnError) {
+    const std::string xml = sceneWith("<shader name=\"m\" type=\"Mirror\"><roughness>-0.1</roughness></shader>");
+    expectIssue(errorOf(xml), 4, "roughness", "-0.1");
+}
+
+TEST_F(ShaderParsing, JsonEraDiffuseIsLambertian) {
+    const Scene scene = loadClean(sceneWith("<shader name=\"d\" type=\"Diffuse\"><diffuse>0.2 0.3 0.4</diffuse></shader>"));
+    EXPECT_EQ(scene.shaders[0].type, ShaderType::Lambertian);
+    EXPECT_EQ(scene.shaders[0].diffuse, glm::vec3(0.2f, 0.3f, 0.4f));
+}
+
+TEST_F(ShaderParsing, UnknownAttributeAndRepeatedChildWarn) {
+    const std::string xml = sceneWith(
+        "<shader name=\"l\" type=\"Lambertian\" glossy=\"yes\">\n<diffuse>1 0 0</diffuse>\n<diffuse>0 1 0</diffuse>\n</shader>");
+    Diagnostics diagnostics;
+    const Scene scene = load(xml, diagnostics);
+    EXPECT_EQ(scene.shaders[0].diffuse, glm::vec3(1, 0, 0));  // the first one
+    ASSERT_EQ(diagnostics.warnings().size(), 2u);
+    expectIssue(diagnostics.warnings()[0], 4, "shader", "glossy");
+    expectIssue(diagnostics.warnings()[1], 6, "diffuse", "");
+}
+
 TEST_F(ShaderParsing, ShaderWithoutTypeOrNameIsAnError) {
     const std::string noType = sceneWith("<shader name=\"b\"><diffuse>1 1 1</diffuse></shader>");
     const Issue issue = errorOf(noType);
