@@ -68,7 +68,7 @@ DeviceRender renderOnGpu(GpuRenderer& gpu, const Scene& scene, const SceneAccel&
     if (stats.nonFiniteSamples > 0)
         std::cerr << "warning: " << stats.nonFiniteSamples << " samples were NaN/Inf and were replaced by black\n";
     if (auto log = gpu.validationLog(); log && log->count() > 0)
-        std::cerr << "warning: " << log->count() << " Vulkan validation message(s):\n" << log->text();
+        std::cerr << "warning: " << log->count() << " Vulkan validation message(s):\n" << log->joined();
     return {std::move(image), stats.device, stats.renderSeconds + stats.readbackSeconds};
 }
 

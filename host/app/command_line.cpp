@@ -76,6 +76,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
                            "Usage: vkrt scene.xml [options]  |  vkrt compare scene.xml [options]  |  vkrt --list-devices",
                  compare ? "vkrt compare" : "vkrt"};
     app.set_help_flag("--help", "Print this help and exit");
+    app.option_defaults()->always_capture_default();
     std::string bg, sampler = "jittered", device = "auto";
     addRenderOptions(app, cl, bg, sampler, device);
     bool listDevices = false;
