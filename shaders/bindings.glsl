@@ -31,6 +31,4 @@ layout(std140, set = 0, binding = BINDING_FRAME) uniform FrameBuffer { FramePara
 layout(std430, set = 0, binding = BINDING_ACCUM) buffer AccumBuffer { vec4 accum[]; };
 layout(std430, set = 0, binding = BINDING_STATUS) coherent buffer StatusBuffer { RenderStatus status; };
 
-layout(push_constant) uniform PushConstants { PassParams pass; };
-
 #endif

@@ -17,6 +17,8 @@
 #include "integrator.glsl"
 #include "camera.glsl"
 
+layout(push_constant) uniform PushConstants { PassParams pass; };
+
 // 64 invocations = one 8x8 pixel block; each group of 8 lanes (lavapipe's subgroup) is a 4x2
 // patch, so lanes that run in lockstep trace neighbouring, coherent rays.
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;

@@ -39,6 +39,8 @@ VKRT_CONST uint BINDING_TEXELS = 8;        // SSBO uint[] (RGBA8 packed texels o
 VKRT_CONST uint BINDING_FRAME = 9;         // UBO FrameParams
 VKRT_CONST uint BINDING_ACCUM = 10;        // SSBO vec4[] per-pixel radiance sum (rgb), w unused
 VKRT_CONST uint BINDING_STATUS = 11;       // SSBO RenderStatus
+VKRT_CONST uint BINDING_RAYS = 12;         // trace_rays.comp only: SSBO TraceRayInput[]
+VKRT_CONST uint BINDING_HITS = 13;         // trace_rays.comp only: SSBO TraceHitOutput[]
 
 // ---------------------------------------------------------------------------------------------
 // BVH node: 64 bytes = 4 RGBA32UI texels, both children's boxes side by side (Aila & Laine 2009),
@@ -180,6 +182,19 @@ struct PassParams {
     uvec4 pass;        // x sample index, y workgroup interleave stride, z workgroups, w unused
 };
 
+// Ray-throughput benchmark (shaders/trace_rays.comp, tools/bench): rays in, hits out, so the GPU
+// traces exactly the rays the CPU traversal and the Embree peer trace.
+struct TraceRayInput {
+    vec4 origin;     // xyz origin, w = tMax (hits need 0 < t < tMax, t in units of |dir|)
+    vec4 direction;  // xyz direction, w unused
+};
+struct TraceHitOutput {
+    uvec4 hit;       // x = floatBits(t) or 0xffffffff for a miss, y = primitive, z = instance, w unused
+};
+struct TraceParams {
+    uvec4 rays;      // x = ray count, y = 1 for any-hit (shadow) queries, 0 for closest hit, z, w unused
+};
+
 // Specialization constant ids: the scene's feature set (the kernel is specialised per scene).
 VKRT_CONST uint SPEC_HAS_TRIANGLES = 0;
 VKRT_CONST uint SPEC_HAS_SPHERES = 1;
@@ -217,6 +232,9 @@ static_assert(sizeof(TextureInfo) == 16);
 static_assert(sizeof(FrameParams) == 176);
 static_assert(sizeof(RenderStatus) == 16);
 static_assert(sizeof(PassParams) == 32);
+static_assert(sizeof(TraceRayInput) == 32);
+static_assert(sizeof(TraceHitOutput) == 16);
+static_assert(sizeof(TraceParams) == 16);
 }  // namespace vkrt::gpu
 #endif
 

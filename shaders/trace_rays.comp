@@ -1,0 +1,27 @@
+#version 460
+// Ray-throughput kernel for the benchmarks: trace a list of rays (closest or any hit) through the
+// same traversal the render kernel uses, and write each hit. The host builds the rays with the
+// Embree peer's camera rule, so both trace the same rays.
+#extension GL_GOOGLE_include_directive : require
+
+#include "device_host.h"
+#include "bindings.glsl"
+#include "budget.glsl"
+#include "intersect.glsl"
+#include "traverse.glsl"
+
+layout(std430, set = 0, binding = BINDING_RAYS) readonly buffer RayBuffer { TraceRayInput rays[]; };
+layout(std430, set = 0, binding = BINDING_HITS) writeonly buffer HitBuffer { TraceHitOutput hits[]; };
+layout(push_constant) uniform TracePush { TraceParams trace; };
+
+layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
+
+void main() {
+    uint i = gl_GlobalInvocationID.x;
+    if (i >= trace.rays.x) return;
+    TraceRayInput r = rays[i];
+    Hit hit;
+    bool found = traceScene(r.origin.xyz, r.direction.xyz, r.origin.w, trace.rays.y != 0u, hit);
+    if (g_budgetExceeded) atomicOr(status.flags.x, STATUS_LOOP_BUDGET_EXCEEDED);
+    hits[i].hit = found ? uvec4(floatBitsToUint(hit.t), hit.prim, hit.instance, 0u) : uvec4(0xffffffffu, 0u, 0u, 0u);
+}
