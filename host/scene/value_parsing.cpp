@@ -27,7 +27,8 @@ std::string describe(const float* values, int count) {
     for (int i = 0; i < count; ++i) {
         char buffer[32];
         std::snprintf(buffer, sizeof buffer, "%g", static_cast<double>(values[i]));
-        out += (i ? " " : "") + std::string(buffer);
+        if (i > 0) out += ' ';
+        out += buffer;
     }
     return out;
 }
