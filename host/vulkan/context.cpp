@@ -8,8 +8,8 @@ namespace vkrt {
 
 namespace {
 
-std::unique_ptr<ValidationLog> makeLog(bool validation) {
-    return validation ? std::make_unique<ValidationLog>() : nullptr;
+std::shared_ptr<ValidationLog> makeLog(bool validation) {
+    return validation ? std::make_shared<ValidationLog>() : nullptr;
 }
 
 // True when a memory type is device-local and host-visible/coherent (every type on a CPU

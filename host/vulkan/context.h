@@ -26,7 +26,7 @@ struct ContextOptions {
     bool forceStaging = false;
 };
 
-// Not copyable or movable: the validation messenger points at the log inside.
+// Not copyable or movable: the validation messenger points at the log.
 class Context {
 public:
     // Throws VulkanUnavailable when no usable device exists.
@@ -45,11 +45,12 @@ public:
     // Device-local buffers are written and read through a mapping (CPU devices and unified
     // memory), instead of staging copies.
     bool mapsDeviceMemory() const { return mapsDeviceMemory_; }
-    // nullptr when validation is off.
-    const ValidationLog* validationLog() const { return log_.get(); }
+    // nullptr when validation is off. Shared so that a test can still read the messages sent
+    // while this context is destroyed.
+    std::shared_ptr<const ValidationLog> validationLog() const { return log_; }
 
 private:
-    std::unique_ptr<ValidationLog> log_;  // declared first: outlives the messenger
+    std::shared_ptr<ValidationLog> log_;  // declared first: outlives the messenger
     VulkanInstance instance_;
     vk::raii::PhysicalDevice physical_ = nullptr;
     vk::raii::Device device_ = nullptr;

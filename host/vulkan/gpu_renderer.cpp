@@ -71,7 +71,7 @@ GpuRenderer::GpuRenderer(const GpuRendererOptions& options) : impl_(std::make_un
 GpuRenderer::~GpuRenderer() = default;
 
 std::string GpuRenderer::deviceName() const { return impl_->context.info().name; }
-const ValidationLog* GpuRenderer::validationLog() const { return impl_->context.validationLog(); }
+std::shared_ptr<const ValidationLog> GpuRenderer::validationLog() const { return impl_->context.validationLog(); }
 std::size_t GpuRenderer::pipelineCount() const { return impl_->kernels.size(); }
 
 Image GpuRenderer::render(const Scene& scene, const SceneAccel& accel, const RenderOptions& options, GpuRenderStats* statsOut,

@@ -71,8 +71,8 @@ public:
                  const GpuRenderSettings& settings = {});
 
     std::string deviceName() const;
-    // nullptr unless validation is on.
-    const ValidationLog* validationLog() const;
+    // nullptr unless validation is on; stays readable after the renderer is destroyed.
+    std::shared_ptr<const ValidationLog> validationLog() const;
     // Kernel variants created so far (one per distinct feature set).
     std::size_t pipelineCount() const;
 

@@ -40,12 +40,13 @@ std::uint64_t TilePlanner::budgetPixelSamples() const {
     return std::max<std::uint64_t>(static_cast<std::uint64_t>(budget), kBlock * kBlock);
 }
 
-void TilePlanner::startTile(std::uint64_t budget) {
+TileRect TilePlanner::newTile(std::uint64_t budget) {
     const std::uint32_t rowsLeft = height_ - cursorY_;
     const std::uint32_t columnsLeft = width_ - cursorX_;
+    TileRect tile;
     if (policy_.fixedTileWidth) {
         if (cursorX_ == 0) bandHeight_ = std::min(policy_.fixedTileHeight, rowsLeft);
-        tile_ = {cursorX_, cursorY_, std::min(policy_.fixedTileWidth, columnsLeft), bandHeight_};
+        tile = {cursorX_, cursorY_, std::min(policy_.fixedTileWidth, columnsLeft), bandHeight_};
     } else {
         // The tile holds at most `budget` pixels (a submission runs at least one sample pass).
         const std::uint64_t pixels = std::min<std::uint64_t>(budget, static_cast<std::uint64_t>(policy_.maxWorkgroups) * kBlock * kBlock);
@@ -59,30 +60,50 @@ void TilePlanner::startTile(std::uint64_t budget) {
         // Partial blocks at the image edge can push the count over; narrow until it fits.
         while (workgroupsOf(tileWidth, bandHeight_) > policy_.maxWorkgroups && tileWidth > kBlock)
             tileWidth = std::max(kBlock, roundDownToBlock(tileWidth / 2));
-        tile_ = {cursorX_, cursorY_, tileWidth, bandHeight_};
+        tile = {cursorX_, cursorY_, tileWidth, bandHeight_};
     }
-    haveTile_ = true;
-    nextSample_ = 0;
+    cursorX_ += tile.width;
+    if (cursorX_ >= width_) {
+        cursorX_ = 0;
+        cursorY_ += bandHeight_;
+    }
+    return tile;
+}
+
+void TilePlanner::splitFront(std::uint64_t budget) {
+    Piece& front = pieces_.front();
+    TileRect& t = front.tile;
+    if (t.pixels() <= budget) return;
+    Piece rest = front;
+    if (t.height > kBlock) {  // split off whole rows first: they keep the tile's full width
+        const std::uint32_t rows = std::clamp(roundDownToBlock(budget / t.width), kBlock, t.height - 1);
+        rest.tile.y = t.y + rows;
+        rest.tile.height = t.height - rows;
+        t.height = rows;
+    } else if (t.width > kBlock) {
+        const std::uint32_t columns = std::clamp(roundDownToBlock(budget / t.height), kBlock, t.width - 1);
+        rest.tile.x = t.x + columns;
+        rest.tile.width = t.width - columns;
+        t.width = columns;
+    } else {
+        return;  // one block: the smallest piece of work there is
+    }
+    pieces_.insert(pieces_.begin() + 1, rest);
 }
 
 Submission TilePlanner::next() {
     const std::uint64_t budget = budgetPixelSamples();
-    if (!haveTile_) startTile(budget);
-    std::uint32_t count = samples_ - nextSample_;
+    if (pieces_.empty()) pieces_.push_back({newTile(budget), 0});
+    else if (!policy_.fixedTileWidth) splitFront(budget);
+    Piece& piece = pieces_.front();
+    std::uint32_t count = samples_ - piece.nextSample;
     if (policy_.fixedSamplesPerSubmission) count = std::min(count, policy_.fixedSamplesPerSubmission);
-    else count = static_cast<std::uint32_t>(std::clamp<std::uint64_t>(budget / tile_.pixels(), 1, count));
+    else count = static_cast<std::uint32_t>(std::clamp<std::uint64_t>(budget / piece.tile.pixels(), 1, count));
 
-    const Submission submission{tile_, nextSample_, count};
-    lastPixelSamples_ = tile_.pixels() * count;
-    nextSample_ += count;
-    if (nextSample_ == samples_) {
-        haveTile_ = false;
-        cursorX_ += tile_.width;
-        if (cursorX_ >= width_) {
-            cursorX_ = 0;
-            cursorY_ += bandHeight_;
-        }
-    }
+    const Submission submission{piece.tile, piece.nextSample, count};
+    lastPixelSamples_ = piece.tile.pixels() * count;
+    piece.nextSample += count;
+    if (piece.nextSample == samples_) pieces_.pop_front();
     return submission;
 }
 

@@ -5,9 +5,13 @@
 // Order: tiles in raster order (bands of rows, left to right within a band); each tile runs all
 // its samples in order 0..rpp-1 before the next tile starts, so every pixel's sum is accumulated
 // in sample order whatever the tiling. A pixel's value therefore never depends on the tiling.
+// When a tile turns out too expensive for one sample pass per submission (it was sized from a
+// cheaper region), its remaining work is split into smaller pieces that each continue from the
+// tile's next sample, so only the first submission after a jump in cost can overshoot.
 #pragma once
 
 #include <cstdint>
+#include <deque>
 
 namespace vkrt {
 
@@ -38,7 +42,7 @@ class TilePlanner {
 public:
     TilePlanner(std::uint32_t width, std::uint32_t height, std::uint32_t samples, const TilingPolicy& policy);
 
-    bool done() const { return cursorY_ >= height_; }
+    bool done() const { return pieces_.empty() && cursorY_ >= height_; }
     // The next piece of work; only valid when !done().
     Submission next();
     // How long the submission returned by the last next() took; adapts the following sizes.
@@ -46,15 +50,19 @@ public:
     double fractionDone() const { return static_cast<double>(donePixelSamples_) / static_cast<double>(totalPixelSamples_); }
 
 private:
+    // Part of a tile whose pixels have all received samples [0, nextSample).
+    struct Piece {
+        TileRect tile;
+        std::uint32_t nextSample = 0;
+    };
     std::uint64_t budgetPixelSamples() const;
-    void startTile(std::uint64_t budget);
+    TileRect newTile(std::uint64_t budget);
+    void splitFront(std::uint64_t budget);
 
     std::uint32_t width_, height_, samples_;
     TilingPolicy policy_;
-    // The current tile and the band of rows it belongs to.
-    TileRect tile_;
-    bool haveTile_ = false;
-    std::uint32_t nextSample_ = 0;
+    std::deque<Piece> pieces_;  // the current tile's unfinished pieces, in order
+    // Where the next tile starts, and the height of the band of rows it belongs to.
     std::uint32_t cursorX_ = 0, cursorY_ = 0, bandHeight_ = 0;
     // Measurements.
     double secondsPerPixelSample_ = 0.0;  // 0 until the first report
