@@ -27,10 +27,12 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-Scene loadWithWarnings(const CommandLine& cl) {
+// Loads the scene, prints its warnings, and settles which camera renders.
+Scene loadWithWarnings(CommandLine& cl) {
     Diagnostics diagnostics(cl.strict);
     Scene scene = loadScene(cl.scenePath, LoadOptions{cl.strict}, diagnostics);
     for (const std::string& line : diagnostics.messages()) std::cerr << "warning: " << line << "\n";
+    cl.render.camera = cl.camera.value_or(scene.defaultCamera);
     if (cl.render.camera >= static_cast<int>(scene.cameras.size()))
         throw std::invalid_argument("--camera " + std::to_string(cl.render.camera) + ": " + cl.scenePath + " has " +
                                     std::to_string(scene.cameras.size()) + " camera(s)");
@@ -84,7 +86,7 @@ std::unique_ptr<GpuRenderer> openGpu(const CommandLine& cl) {
     }
 }
 
-int runRender(const CommandLine& cl) {
+int runRender(CommandLine& cl) {
     const auto start = std::chrono::steady_clock::now();
     const Scene scene = loadWithWarnings(cl);
     const SceneAccel accel = buildSceneAccel(scene);
@@ -99,7 +101,7 @@ int runRender(const CommandLine& cl) {
     return 0;
 }
 
-int runCompare(const CommandLine& cl) {
+int runCompare(CommandLine& cl) {
     const Scene scene = loadWithWarnings(cl);
     const SceneAccel accel = buildSceneAccel(scene);
     GpuRenderer gpu(gpuOptions(cl));

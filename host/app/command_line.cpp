@@ -44,7 +44,7 @@ void addRenderOptions(CLI::App& app, CommandLine& cl, std::string& bg, std::stri
     app.add_option("--sampler", sampler, "Sample pattern: jittered (Cook 1984), regular or random")
         ->check(CLI::IsMember({"jittered", "regular", "random"}));
     app.add_option("--bg", bg, "Background colour r,g,b (overrides the scene's bgColor)");
-    app.add_option("--camera", cl.render.camera, "Which camera of the scene (index, default 0)")
+    app.add_option("--camera", cl.camera, "Which camera of the scene (index; default: the one <sceneParameters> names, else the first)")
         ->check(CLI::NonNegativeNumber);
     app.add_option("--threads", cl.render.threads, "CPU threads (default: all cores)")->check(CLI::Range(0, 1024));
     app.add_option("--device", device, "Renderer: gpu (Vulkan), cpu (reference) or auto (gpu if available)")

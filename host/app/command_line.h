@@ -25,6 +25,7 @@ struct CommandLine {
     std::string shaderDir;        // compile kernels from this GLSL tree at run time
     bool general = false;         // GPU: run the general kernel instead of the scene-specialised one
     std::string heatMapPath;      // compare: difference heat map (default <scene name>_diff.png)
+    std::optional<int> camera;    // --camera; default: the scene's <sceneParameters><camera>, else the first
 };
 
 // Parses argv. Returns the command line, or the exit code to stop with (0 after --help,
