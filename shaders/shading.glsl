@@ -37,10 +37,11 @@ vec3 lightFrom(Surface s, vec3 N, vec3 V, uint type, vec3 kd, vec3 ks, float pho
     if (!visible(s, L, q)) return vec3(0.0);
     vec3 c = kd * nDotL;
     if (HAS_SPECULAR && (type == SHADER_BLINN_PHONG || type == SHADER_BLINN_PHONG_MIRRORED)) {
-        vec3 H = normalizeOr(L + V, N);
+        // L = -V leaves the half vector undefined: no highlight (as the CPU reference does).
+        vec3 H = normalizeOr(L + V, vec3(0.0));
         float nDotH = max(dot(N, H), 0.0);
         // pow(0, 0) is undefined in GLSL; the course's exponent 0 means a constant highlight of 1.
-        c += ks * (phongExp == 0.0 ? 1.0 : pow(nDotH, phongExp));
+        if (dot(H, H) > 0.0) c += ks * (phongExp == 0.0 ? 1.0 : pow(nDotH, phongExp));
     }
     return c * I;
 }
