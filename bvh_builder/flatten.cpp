@@ -20,16 +20,16 @@ struct Flattener {
         result.depth = std::max(result.depth, depth);
         const auto index = static_cast<std::uint32_t>(out.size());
         out.emplace_back();
-        const BuildNode& node = tree.nodes[buildIndex];
+        const BuildNode& node = tree[buildIndex];
         const std::uint32_t children[2] = {node.left, node.right};
         for (int k = 0; k < 2; ++k) {
-            const BuildNode& child = tree.nodes[children[k]];
+            const BuildNode& child = tree[children[k]];
             if (child.leaf()) {
                 ++result.leafCount;
-                setChild(out[index], k, child.box, leafLink(child), child.count);
+                setChild(out[index], k, child.box(), leafLink(child), child.count);
             } else {
                 const std::uint32_t c = emit(children[k], depth + 1);
-                setChild(out[index], k, child.box, c, 0);
+                setChild(out[index], k, child.box(), c, 0);
             }
         }
         return index;
@@ -43,13 +43,13 @@ FlattenResult flatten(const BuildTree& tree, const std::function<std::uint32_t(c
     FlattenResult result;
     result.root = static_cast<std::uint32_t>(out.size());
     result.depth = 1;
-    if (tree.nodes.empty() || tree.nodes[tree.root].leaf()) {
+    if (tree.empty() || tree[tree.root].leaf()) {
         gpu::BvhNode node{};
         setEmptyChild(node, 0);
         setEmptyChild(node, 1);
-        if (!tree.nodes.empty()) {
-            const BuildNode& leaf = tree.nodes[tree.root];
-            setChild(node, 0, leaf.box, leafLink(leaf), leaf.count);
+        if (!tree.empty()) {
+            const BuildNode& leaf = tree[tree.root];
+            setChild(node, 0, leaf.box(), leafLink(leaf), leaf.count);
             result.leafCount = 1;
         }
         out.push_back(node);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <stdexcept>
 #include <string>
 
@@ -10,6 +11,8 @@ namespace vkrt::bvh {
 namespace {
 
 constexpr int kMaxBins = 64;
+// Nodes with at most this many references use the exact sweep instead of bins.
+constexpr std::uint32_t kSweepSize = 16;
 // Above this many references a node's binning is spread over the pool, and its children are
 // split further before being handed out as subtree jobs; below it one thread builds the subtree.
 constexpr std::uint32_t kParallelNodeSize = 16 * 1024;
@@ -24,8 +27,32 @@ struct Range {
     std::uint32_t size() const { return end - begin; }
 };
 
-// Maps twice-centroids to bin indices per axis. Shared by binning and partitioning so both put a
-// reference in the same bin.
+struct Bounds2 {
+    Box4 bounds, centroids;
+    void add(const PrimRef& r) {
+        bounds.grow(r.lo, r.hi);
+        centroids.growPoint(r.centroid2());
+    }
+};
+
+inline float lane(__m128 v, int i) {
+    alignas(16) float f[4];
+    _mm_store_ps(f, v);
+    return f[i];
+}
+
+// Half the surface area of a box held in SSE registers, without leaving them.
+inline float halfArea(__m128 lo, __m128 hi) {
+    const __m128 e = _mm_max_ps(_mm_sub_ps(hi, lo), _mm_setzero_ps());
+    const __m128 eYZX = _mm_shuffle_ps(e, e, _MM_SHUFFLE(3, 0, 2, 1));
+    const __m128 p = _mm_mul_ps(e, eYZX);  // xy, yz, zx, -
+    const __m128 sum = _mm_add_ss(p, _mm_add_ss(_mm_shuffle_ps(p, p, 1), _mm_movehl_ps(p, p)));
+    return _mm_cvtss_f32(sum);
+}
+
+// Maps twice-centroids to bin indices per axis. Binning and partitioning use the same arithmetic
+// (the SSE lanes here, the scalar Axis below: IEEE operations give the same bits), so a reference
+// is partitioned into the bin it was counted in.
 struct BinMapper {
     __m128 origin;
     __m128 scale;
@@ -34,11 +61,9 @@ struct BinMapper {
 
     BinMapper(const Box4& centroids, int binCount) : bins(binCount) {
         origin = centroids.lo;
-        alignas(16) float lo[4], hi[4], s[4] = {0, 0, 0, 0};
-        _mm_store_ps(lo, centroids.lo);
-        _mm_store_ps(hi, centroids.hi);
+        alignas(16) float s[4] = {0, 0, 0, 0};
         for (int a = 0; a < 3; ++a) {
-            const float extent = hi[a] - lo[a];
+            const float extent = lane(centroids.hi, a) - lane(centroids.lo, a);
             // (1 - 2^-20) keeps the largest centroid inside the last bin despite rounding.
             const float k = extent > 0.0f ? static_cast<float>(binCount) * (1.0f - 0x1p-20f) / extent : 0.0f;
             usable[a] = extent > 0.0f && k < 1e30f;  // a denormal extent would give an infinite scale
@@ -53,71 +78,118 @@ struct BinMapper {
         f = _mm_min_ps(_mm_max_ps(f, _mm_setzero_ps()), _mm_set1_ps(static_cast<float>(bins - 1)));
         return _mm_cvttps_epi32(f);
     }
-    int binOf(__m128 centroid2, int axis) const {
-        alignas(16) std::int32_t b[4];
-        _mm_store_si128(reinterpret_cast<__m128i*>(b), binOf(centroid2));
-        return b[axis];
-    }
+    struct Axis {
+        float origin, scale, last;
+        int axis;
+        int operator()(const PrimRef& r) const {
+            const float* lo = reinterpret_cast<const float*>(&r.lo);
+            const float* hi = reinterpret_cast<const float*>(&r.hi);
+            const float f = ((lo[axis] + hi[axis]) - origin) * scale;
+            return static_cast<int>(std::min(std::max(f, 0.0f), last));
+        }
+    };
+    Axis axis(int a) const { return {lane(origin, a), lane(scale, a), static_cast<float>(bins - 1), a}; }
 };
 
+// Per-axis bins; only the first `bins` entries of each axis are reset and read.
 struct Bins {
-    std::array<std::array<Box4, kMaxBins>, 3> box;
-    std::array<std::array<std::uint32_t, kMaxBins>, 3> count{};
+    __m128 lo[3][kMaxBins], hi[3][kMaxBins];
+    std::uint32_t count[3][kMaxBins];
 
-    void add(std::span<const PrimRef> refs, const BinMapper& mapper) {
-        alignas(16) std::int32_t b[4];
-        for (const PrimRef& r : refs) {
-            _mm_store_si128(reinterpret_cast<__m128i*>(b), mapper.binOf(r.centroid2()));
-            box[0][b[0]].grow(r.lo, r.hi);
-            ++count[0][b[0]];
-            box[1][b[1]].grow(r.lo, r.hi);
-            ++count[1][b[1]];
-            box[2][b[2]].grow(r.lo, r.hi);
-            ++count[2][b[2]];
+    void reset(int bins) {
+        const __m128 big = _mm_set1_ps(FLT_MAX), small = _mm_set1_ps(-FLT_MAX);
+        for (int a = 0; a < 3; ++a)
+            for (int i = 0; i < bins; ++i) {
+                lo[a][i] = big;
+                hi[a][i] = small;
+                count[a][i] = 0;
+            }
+    }
+    void add(const PrimRef& r, const BinMapper& mapper) {
+        // Lanes are extracted in registers: storing the vector and reloading single lanes would
+        // defeat store-to-load forwarding and stall every reference.
+        const __m128i bin = mapper.binOf(r.centroid2());
+        const int b[3] = {_mm_cvtsi128_si32(bin), _mm_extract_epi32(bin, 1), _mm_extract_epi32(bin, 2)};
+        for (int a = 0; a < 3; ++a) {
+            lo[a][b[a]] = _mm_min_ps(lo[a][b[a]], r.lo);
+            hi[a][b[a]] = _mm_max_ps(hi[a][b[a]], r.hi);
+            ++count[a][b[a]];
         }
     }
     void merge(const Bins& o, int bins) {
         for (int a = 0; a < 3; ++a)
             for (int i = 0; i < bins; ++i) {
-                box[a][i].grow(o.box[a][i]);
+                lo[a][i] = _mm_min_ps(lo[a][i], o.lo[a][i]);
+                hi[a][i] = _mm_max_ps(hi[a][i], o.hi[a][i]);
                 count[a][i] += o.count[a][i];
             }
     }
 };
 
+// Bins a run of references. Neighbouring references of a mesh usually fall in the same bin, and
+// updating one bin twice in a row waits for the previous update; alternating two sets of bins
+// halves that dependency chain. min/max merging is exact, so the result is the same.
+void binRefs(const PrimRef* refs, std::uint32_t n, const BinMapper& mapper, Bins& out) {
+    out.reset(mapper.bins);
+    Bins odd;
+    odd.reset(mapper.bins);
+    std::uint32_t i = 0;
+    for (; i + 1 < n; i += 2) {
+        out.add(refs[i], mapper);
+        odd.add(refs[i + 1], mapper);
+    }
+    if (i < n) out.add(refs[i], mapper);
+    out.merge(odd, mapper.bins);
+}
+
 struct Split {
-    int axis = -1;  // -1: no SAH split found
-    int bin = 0;    // references with bin index < bin go left
+    int axis = -1;  // -1: no split found
+    int plane = 0;  // bins: references with bin index < plane go left; sweep: the first `plane` in order
     float cost = 0.0f;
 };
 
-Split bestSplit(const Bins& bins, const BinMapper& mapper, float nodeArea, const SahParams& p) {
+// Sweeps the planes between non-empty bins only, so a node's cost after binning is
+// O(min(n, bins)). Ties keep the lowest axis, then the lowest plane.
+Split bestBinnedSplit(const Bins& bins, const BinMapper& mapper, float nodeArea, const SahParams& p) {
     Split best;
+    std::array<int, kMaxBins> used{};
     std::array<float, kMaxBins> rightArea{};
     std::array<std::uint32_t, kMaxBins> rightCount{};
+    const float areaScale = p.intersectionCost / nodeArea;
     for (int a = 0; a < 3; ++a) {
         if (!mapper.usable[a]) continue;
-        Box4 acc;
+        int m = 0;
+        for (int i = 0; i < mapper.bins; ++i)
+            if (bins.count[a][i] > 0) used[m++] = i;
+        if (m < 2) continue;
+        __m128 lo = _mm_set1_ps(FLT_MAX), hi = _mm_set1_ps(-FLT_MAX);
         std::uint32_t n = 0;
-        for (int i = mapper.bins - 1; i > 0; --i) {  // rightArea[i]: bins [i, bins)
-            acc.grow(bins.box[a][i]);
-            n += bins.count[a][i];
-            rightArea[i] = acc.halfArea();
-            rightCount[i] = n;
+        for (int j = m - 1; j > 0; --j) {  // suffix of used bins [j, m)
+            lo = _mm_min_ps(lo, bins.lo[a][used[j]]);
+            hi = _mm_max_ps(hi, bins.hi[a][used[j]]);
+            n += bins.count[a][used[j]];
+            rightArea[j] = halfArea(lo, hi);
+            rightCount[j] = n;
         }
-        acc = Box4{};
+        lo = _mm_set1_ps(FLT_MAX);
+        hi = _mm_set1_ps(-FLT_MAX);
         n = 0;
-        for (int i = 1; i < mapper.bins; ++i) {  // plane i: bins [0, i) left
-            acc.grow(bins.box[a][i - 1]);
-            n += bins.count[a][i - 1];
-            if (n == 0 || rightCount[i] == 0) continue;
-            const float cost = p.traversalCost + p.intersectionCost *
-                (acc.halfArea() * static_cast<float>(n) + rightArea[i] * static_cast<float>(rightCount[i])) / nodeArea;
-            if (best.axis < 0 || cost < best.cost) best = {a, i, cost};
+        for (int j = 1; j < m; ++j) {  // plane before used bin j
+            lo = _mm_min_ps(lo, bins.lo[a][used[j - 1]]);
+            hi = _mm_max_ps(hi, bins.hi[a][used[j - 1]]);
+            n += bins.count[a][used[j - 1]];
+            const float cost = p.traversalCost +
+                areaScale * (halfArea(lo, hi) * static_cast<float>(n) + rightArea[j] * static_cast<float>(rightCount[j]));
+            if (best.axis < 0 || cost < best.cost) best = {a, used[j], cost};
         }
     }
     return best;
 }
+
+struct Decision {
+    enum Kind { Leaf, Median, Binned } kind = Leaf;
+    int axis = 0, plane = 0;
+};
 
 // Smallest number of inner-node levels that can hold n references with median splits.
 int levelsNeeded(std::uint32_t n, std::uint32_t maxLeaf) {
@@ -129,14 +201,6 @@ int levelsNeeded(std::uint32_t n, std::uint32_t maxLeaf) {
     return levels;
 }
 
-struct Bounds2 {
-    Box4 bounds, centroids;
-    void add(const PrimRef& r) {
-        bounds.grow(r.lo, r.hi);
-        centroids.growPoint(r.centroid2());
-    }
-};
-
 class Builder {
 public:
     Builder(std::span<PrimRef> refs, const SahParams& p, ThreadPool& pool) : refs_(refs), p_(p), pool_(pool) {}
@@ -144,24 +208,37 @@ public:
     BuildTree run();
 
 private:
-    // Decides how to split a range: returns the position of the first right reference and the
-    // children's ranges, or false when the range becomes a leaf.
-    bool split(const Range& r, bool parallel, Range& left, Range& right);
-    Bins binParallel(const Range& r, const BinMapper& mapper);
-    void partitionByBin(const Range& r, const BinMapper& mapper, int axis, int bin, Range& left, Range& right);
+    // Splits a range into two children, or returns false when it becomes a leaf.
+    bool split(const Range& r, Range& left, Range& right);
+    bool splitSmall(const Range& r, Range& left, Range& right);
+    // For ranges above kSweepSize: what to do given the range's bins, and doing it.
+    Decision decideLarge(const Range& r, const Bins& bins, const BinMapper& mapper) const;
+    void apply(const Range& r, const Decision& d, const BinMapper& mapper, Range& left, Range& right);
+    void partitionByBin(const Range& r, const BinMapper::Axis& map, int plane, Range& left, Range& right);
     void splitMedian(const Range& r, Range& left, Range& right);
-    std::uint32_t buildSubtree(const Range& r, std::vector<BuildNode>& nodes);
+    void childRanges(const Range& r, std::uint32_t mid, Range& left, Range& right);
+    bool keepsDepthBound(const Range& r, std::uint32_t leftSize) const;
+    // Builds the subtree of r into nodes[next...]; returns its root.
+    std::uint32_t buildSubtree(const Range& r, BuildNode* nodes, std::uint32_t& next);
 
     std::span<PrimRef> refs_;
     const SahParams& p_;
     ThreadPool& pool_;
 };
 
-void Builder::partitionByBin(const Range& r, const BinMapper& mapper, int axis, int bin, Range& left, Range& right) {
+void Builder::childRanges(const Range& r, std::uint32_t mid, Range& left, Range& right) {
+    Bounds2 l, rb;
+    for (std::uint32_t i = r.begin; i < mid; ++i) l.add(refs_[i]);
+    for (std::uint32_t i = mid; i < r.end; ++i) rb.add(refs_[i]);
+    left = {r.begin, mid, l.bounds, l.centroids, r.level + 1};
+    right = {mid, r.end, rb.bounds, rb.centroids, r.level + 1};
+}
+
+void Builder::partitionByBin(const Range& r, const BinMapper::Axis& map, int plane, Range& left, Range& right) {
     Bounds2 l, rb;
     PrimRef* lo = refs_.data() + r.begin;
     PrimRef* hi = refs_.data() + r.end;
-    auto goesLeft = [&](const PrimRef& ref) { return mapper.binOf(ref.centroid2(), axis) < bin; };
+    auto goesLeft = [&](const PrimRef& ref) { return map(ref) < plane; };
     for (;;) {
         while (lo < hi && goesLeft(*lo)) l.add(*lo++);
         while (lo < hi && !goesLeft(hi[-1])) rb.add(*--hi);
@@ -183,72 +260,126 @@ void Builder::splitMedian(const Range& r, Range& left, Range& right) {
     if (ext[2] > ext[axis]) axis = 2;
     const std::uint32_t mid = r.begin + r.size() / 2;
     if (ext[axis] > 0.0f) {
-        auto key = [axis](const PrimRef& ref) {
-            alignas(16) float c[4];
-            _mm_store_ps(c, ref.centroid2());
-            return c[axis];
-        };
+        auto key = [axis](const PrimRef& ref) { return lane(ref.centroid2(), axis); };
         std::nth_element(refs_.begin() + r.begin, refs_.begin() + mid, refs_.begin() + r.end,
                          [&](const PrimRef& a, const PrimRef& b) { return key(a) < key(b); });
     }
-    Bounds2 l, rb;
-    for (std::uint32_t i = r.begin; i < mid; ++i) l.add(refs_[i]);
-    for (std::uint32_t i = mid; i < r.end; ++i) rb.add(refs_[i]);
-    left = {r.begin, mid, l.bounds, l.centroids, r.level + 1};
-    right = {mid, r.end, rb.bounds, rb.centroids, r.level + 1};
+    childRanges(r, mid, left, right);
 }
 
-Bins Builder::binParallel(const Range& r, const BinMapper& mapper) {
-    const std::uint32_t chunks = (r.size() + kBinChunk - 1) / kBinChunk;
-    std::vector<Bins> partial(chunks);
-    pool_.parallelFor(chunks, [&](std::size_t c) {
-        const std::uint32_t b = r.begin + static_cast<std::uint32_t>(c) * kBinChunk;
-        const std::uint32_t e = std::min(r.end, b + kBinChunk);
-        partial[c].add(refs_.subspan(b, e - b), mapper);
-    });
-    for (std::uint32_t c = 1; c < chunks; ++c) partial[0].merge(partial[c], mapper.bins);
-    return partial[0];
+// The depth bound wins over the SAH: a child that could not fit below maxDepth with median
+// splits sends its parent to a median split instead.
+bool Builder::keepsDepthBound(const Range& r, std::uint32_t leftSize) const {
+    const auto maxLeaf = static_cast<std::uint32_t>(p_.maxLeafSize);
+    const int room = p_.maxDepth - r.level;  // levels left below this node
+    const bool fits = levelsNeeded(leftSize, maxLeaf) <= room && levelsNeeded(r.size() - leftSize, maxLeaf) <= room;
+    return fits || levelsNeeded(r.size(), maxLeaf) > room + 1;  // if even median splits cannot fit, keep the SAH
 }
 
-bool Builder::split(const Range& r, bool parallel, Range& left, Range& right) {
+// Exact SAH for a small node: on each axis, references sorted by centroid (ties by position, so
+// the order is deterministic), every split between neighbours evaluated.
+bool Builder::splitSmall(const Range& r, Range& left, Range& right) {
+    const std::uint32_t n = r.size();
+    PrimRef* base = refs_.data() + r.begin;
+    const float nodeArea = r.bounds.halfArea();
+    const float areaScale = nodeArea > 0.0f ? p_.intersectionCost / nodeArea : 0.0f;
+    // Sort keys: the centroid's bits mapped to an order-preserving unsigned integer, then the
+    // position, in one 64-bit word (one comparison per step, no tie-break branch).
+    auto key = [](float c, std::uint32_t i) {
+        const auto bits = std::bit_cast<std::uint32_t>(c);
+        const std::uint32_t ordered = (bits & 0x80000000u) ? ~bits : (bits | 0x80000000u);
+        return (std::uint64_t{ordered} << 32) | i;
+    };
+    auto index = [](std::uint64_t k) { return static_cast<std::uint32_t>(k); };
+    std::array<std::uint64_t, kSweepSize> order{}, bestOrder{};
+    std::array<float, kSweepSize> rightArea{};
+    Split best;
+    for (int a = 0; a < 3 && nodeArea > 0.0f; ++a) {
+        if (!(lane(r.centroids.hi, a) > lane(r.centroids.lo, a))) continue;
+        for (std::uint32_t i = 0; i < n; ++i) order[i] = key(lane(base[i].centroid2(), a), i);
+        for (std::uint32_t i = 1; i < n; ++i) {  // insertion sort: n <= 16
+            const std::uint64_t k = order[i];
+            std::uint32_t j = i;
+            for (; j > 0 && order[j - 1] > k; --j) order[j] = order[j - 1];
+            order[j] = k;
+        }
+        Box4 acc;
+        for (std::uint32_t j = n - 1; j > 0; --j) {
+            acc.grow(base[index(order[j])].lo, base[index(order[j])].hi);
+            rightArea[j] = halfArea(acc.lo, acc.hi);
+        }
+        acc = Box4{};
+        bool improved = false;
+        for (std::uint32_t j = 1; j < n; ++j) {
+            acc.grow(base[index(order[j - 1])].lo, base[index(order[j - 1])].hi);
+            const float cost = p_.traversalCost + areaScale * (halfArea(acc.lo, acc.hi) * static_cast<float>(j) +
+                                                               rightArea[j] * static_cast<float>(n - j));
+            if (best.axis < 0 || cost < best.cost) {
+                best = {a, static_cast<int>(j), cost};
+                improved = true;
+            }
+        }
+        if (improved) bestOrder = order;
+    }
+    const float leafCost = p_.intersectionCost * static_cast<float>(n);
+    if (n <= static_cast<std::uint32_t>(p_.maxLeafSize) && (best.axis < 0 || leafCost <= best.cost)) return false;
+    if (best.axis < 0 || !keepsDepthBound(r, static_cast<std::uint32_t>(best.plane))) {
+        splitMedian(r, left, right);
+        return true;
+    }
+    std::array<PrimRef, kSweepSize> sorted;
+    for (std::uint32_t i = 0; i < n; ++i) sorted[i] = base[index(bestOrder[i])];
+    std::copy(sorted.begin(), sorted.begin() + n, base);
+    childRanges(r, r.begin + static_cast<std::uint32_t>(best.plane), left, right);
+    return true;
+}
+
+Decision Builder::decideLarge(const Range& r, const Bins& bins, const BinMapper& mapper) const {
+    const std::uint32_t n = r.size();
+    const float area = r.bounds.halfArea();
+    const Split s = area > 0.0f && mapper.anyUsable() ? bestBinnedSplit(bins, mapper, area, p_) : Split{};
+    const float leafCost = p_.intersectionCost * static_cast<float>(n);
+    if (n <= static_cast<std::uint32_t>(p_.maxLeafSize) && (s.axis < 0 || leafCost <= s.cost)) return {Decision::Leaf};
+    if (s.axis < 0) return {Decision::Median};
+    return {Decision::Binned, s.axis, s.plane};
+}
+
+void Builder::apply(const Range& r, const Decision& d, const BinMapper& mapper, Range& left, Range& right) {
+    if (d.kind == Decision::Median) {
+        splitMedian(r, left, right);
+        return;
+    }
+    partitionByBin(r, mapper.axis(d.axis), d.plane, left, right);
+    if (left.size() == 0 || right.size() == 0 || !keepsDepthBound(r, left.size())) splitMedian(r, left, right);
+}
+
+bool Builder::split(const Range& r, Range& left, Range& right) {
     const std::uint32_t n = r.size();
     const auto maxLeaf = static_cast<std::uint32_t>(p_.maxLeafSize);
     if (n <= 1) return false;
     if (r.level > p_.maxDepth && n <= maxLeaf) return false;  // only reached when the depth bound is tight
+    if (n <= kSweepSize) return splitSmall(r, left, right);
     const BinMapper mapper(r.centroids, p_.bins);
-    const float leafCost = p_.intersectionCost * static_cast<float>(n);
-    if (!mapper.anyUsable()) {
-        if (n <= maxLeaf) return false;
-        splitMedian(r, left, right);
-        return true;
-    }
     Bins bins;
-    if (parallel) bins = binParallel(r, mapper);
-    else bins.add(refs_.subspan(r.begin, n), mapper);
-    const float area = r.bounds.halfArea();
-    const Split s = area > 0.0f ? bestSplit(bins, mapper, area, p_) : Split{};
-    if (n <= maxLeaf && (s.axis < 0 || leafCost <= s.cost)) return false;
-    if (s.axis < 0) {
-        splitMedian(r, left, right);
-        return true;
-    }
-    partitionByBin(r, mapper, s.axis, s.bin, left, right);
-    // The depth bound wins over the SAH: a child that could not fit below maxDepth with median
-    // splits sends this node to a median split instead.
-    const int room = p_.maxDepth - r.level;  // levels left below this node
-    const bool tooDeep = levelsNeeded(left.size(), maxLeaf) > room || levelsNeeded(right.size(), maxLeaf) > room;
-    if (left.size() == 0 || right.size() == 0 || (tooDeep && levelsNeeded(n, maxLeaf) <= room + 1))
-        splitMedian(r, left, right);
+    if (mapper.anyUsable()) binRefs(refs_.data() + r.begin, n, mapper, bins);
+    const Decision d = decideLarge(r, bins, mapper);
+    if (d.kind == Decision::Leaf) return false;
+    apply(r, d, mapper, left, right);
     return true;
 }
 
-std::uint32_t Builder::buildSubtree(const Range& r, std::vector<BuildNode>& nodes) {
-    const auto index = static_cast<std::uint32_t>(nodes.size());
-    nodes.push_back({r.bounds.toAabb(), 0, 0, r.begin, r.size()});
+std::uint32_t Builder::buildSubtree(const Range& r, BuildNode* nodes, std::uint32_t& next) {
+    const std::uint32_t index = next++;
+    BuildNode& node = nodes[index];
+    node.lo = r.bounds.toAabb().lo;
+    node.hi = r.bounds.toAabb().hi;
+    node.first = r.begin;
+    node.count = r.size();
+    node.left = node.right = 0;
     Range left, right;
-    if (!split(r, false, left, right)) return index;
-    const std::uint32_t l = buildSubtree(left, nodes);
-    const std::uint32_t rr = buildSubtree(right, nodes);
+    if (!split(r, left, right)) return index;
+    const std::uint32_t l = buildSubtree(left, nodes, next);
+    const std::uint32_t rr = buildSubtree(right, nodes, next);
     nodes[index].left = l;
     nodes[index].right = rr;
     nodes[index].count = 0;
@@ -275,32 +406,65 @@ BuildTree Builder::run() {
         }
     }
 
-    // Top phase: nodes too big for one thread are split with parallel binning; the ranges left
-    // over become subtree jobs. A job slot is recorded as (node, side) to patch after the jobs run.
+    // Top phase, level by level: ranges above kParallelNodeSize are binned in chunks spread over
+    // the pool, then partitioned side by side (one range per thread, the same in-place partition
+    // a single thread uses); smaller ranges become subtree jobs. Which ranges take this path
+    // depends only on their size, never on the thread count, so the tree is the same for any.
     struct Job {
         Range range;
-        std::uint32_t parent;  // index in tree.nodes, or UINT32_MAX for the root
+        std::uint32_t parent;  // top node index, or UINT32_MAX for the root
         bool rightSide;
-        std::vector<BuildNode> nodes;
-        std::uint32_t localRoot = 0;
+        std::uint32_t offset = 0, root = 0;
     };
     std::vector<Job> jobs;
-    const bool parallel = pool_.size() > 1;
-    std::vector<std::pair<Range, std::pair<std::uint32_t, bool>>> pending{{root, {UINT32_MAX, false}}};
-    while (!pending.empty()) {
-        auto [range, slot] = pending.back();
-        pending.pop_back();
-        Range left, right;
-        if (!parallel || range.size() <= kParallelNodeSize || !split(range, true, left, right)) {
-            jobs.push_back({range, slot.first, slot.second, {}, 0});
-            continue;
+    std::vector<BuildNode> top;
+    std::vector<Job> frontier{{root, UINT32_MAX, false}};
+    while (!frontier.empty()) {
+        std::vector<Job> big;
+        for (const Job& j : frontier) (j.range.size() > kParallelNodeSize ? big : jobs).push_back(j);
+        frontier.clear();
+        if (big.empty()) break;
+        std::vector<BinMapper> mappers;
+        std::vector<std::pair<std::size_t, std::uint32_t>> chunks;  // (range, first reference)
+        for (std::size_t i = 0; i < big.size(); ++i) {
+            mappers.emplace_back(big[i].range.centroids, p_.bins);
+            for (std::uint32_t b = big[i].range.begin; b < big[i].range.end; b += kBinChunk) chunks.push_back({i, b});
         }
-        const auto index = static_cast<std::uint32_t>(tree.nodes.size());
-        tree.nodes.push_back({range.bounds.toAabb(), 0, 0, range.begin, 0});
-        if (slot.first != UINT32_MAX) (slot.second ? tree.nodes[slot.first].right : tree.nodes[slot.first].left) = index;
-        pending.push_back({right, {index, true}});
-        pending.push_back({left, {index, false}});
+        std::vector<Bins> partial(chunks.size());
+        pool_.parallelFor(chunks.size(), [&](std::size_t c) {
+            const auto [i, b] = chunks[c];
+            const std::uint32_t e = std::min(big[i].range.end, b + kBinChunk);
+            if (mappers[i].anyUsable()) binRefs(refs_.data() + b, e - b, mappers[i], partial[c]);
+            else partial[c].reset(p_.bins);
+        });
+        std::vector<Decision> decisions(big.size());
+        for (std::size_t i = 0, c = 0; i < big.size(); ++i) {
+            Bins& bins = partial[c++];
+            for (; c < chunks.size() && chunks[c].first == i; ++c) bins.merge(partial[c], p_.bins);
+            decisions[i] = decideLarge(big[i].range, bins, mappers[i]);
+        }
+        std::vector<std::pair<Range, Range>> children(big.size());
+        pool_.parallelFor(big.size(), [&](std::size_t i) {
+            apply(big[i].range, decisions[i], mappers[i], children[i].first, children[i].second);
+        });
+        for (std::size_t i = 0; i < big.size(); ++i) {
+            const auto index = static_cast<std::uint32_t>(top.size());
+            const Aabb box = big[i].range.bounds.toAabb();
+            top.push_back({box.lo, box.hi, 0, 0, big[i].range.begin, 0});
+            if (big[i].parent != UINT32_MAX) (big[i].rightSide ? top[big[i].parent].right : top[big[i].parent].left) = index;
+            frontier.push_back({children[i].first, index, false});
+            frontier.push_back({children[i].second, index, true});
+        }
     }
+
+    // One array: the top nodes, then each job's worst-case slice (2m - 1 nodes for m references).
+    std::size_t capacity = top.size();
+    for (Job& job : jobs) {
+        job.offset = static_cast<std::uint32_t>(capacity);
+        capacity += 2 * std::size_t{job.range.size()} - 1;
+    }
+    tree.nodes = HugeArray<BuildNode>(capacity);
+    std::copy(top.begin(), top.end(), tree.nodes.get());
     // Largest jobs first, so the last job to finish is a small one.
     std::vector<std::size_t> order(jobs.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
@@ -308,23 +472,13 @@ BuildTree Builder::run() {
                      [&](std::size_t a, std::size_t b) { return jobs[a].range.size() > jobs[b].range.size(); });
     pool_.parallelFor(jobs.size(), [&](std::size_t k) {
         Job& job = jobs[order[k]];
-        job.localRoot = buildSubtree(job.range, job.nodes);
+        std::uint32_t next = job.offset;
+        job.root = buildSubtree(job.range, tree.nodes.get(), next);
     });
-
-    // Append the jobs' nodes (in job order, which does not depend on the thread count).
     tree.root = 0;
-    for (Job& job : jobs) {
-        const auto offset = static_cast<std::uint32_t>(tree.nodes.size());
-        for (BuildNode node : job.nodes) {
-            if (!node.leaf()) {
-                node.left += offset;
-                node.right += offset;
-            }
-            tree.nodes.push_back(node);
-        }
-        const std::uint32_t jobRoot = offset + job.localRoot;
-        if (job.parent == UINT32_MAX) tree.root = jobRoot;
-        else (job.rightSide ? tree.nodes[job.parent].right : tree.nodes[job.parent].left) = jobRoot;
+    for (const Job& job : jobs) {
+        if (job.parent == UINT32_MAX) tree.root = job.root;
+        else (job.rightSide ? tree.nodes[job.parent].right : tree.nodes[job.parent].left) = job.root;
     }
     return tree;
 }
@@ -343,17 +497,17 @@ BuildTree buildSah(std::span<PrimRef> refs, const SahParams& params, ThreadPool&
 }
 
 double sahCost(const BuildTree& tree, const SahParams& params) {
-    if (tree.nodes.empty()) return 0.0;
-    const double rootArea = tree.nodes[tree.root].box.halfArea();
-    if (rootArea <= 0.0) return params.intersectionCost * tree.nodes[tree.root].count;
+    if (tree.empty()) return 0.0;
+    const double rootArea = tree[tree.root].box().halfArea();
+    if (rootArea <= 0.0) return params.intersectionCost * tree[tree.root].count;
     // Summed in depth-first order from the root (not storage order, which depends on which
     // thread built what), so the figure is identical for any thread count.
     double cost = 0.0;
     std::vector<std::uint32_t> stack{tree.root};
     while (!stack.empty()) {
-        const BuildNode& node = tree.nodes[stack.back()];
+        const BuildNode& node = tree[stack.back()];
         stack.pop_back();
-        const double a = node.box.halfArea() / rootArea;
+        const double a = node.box().halfArea() / rootArea;
         if (node.leaf()) {
             cost += params.intersectionCost * node.count * a;
         } else {
@@ -366,13 +520,13 @@ double sahCost(const BuildTree& tree, const SahParams& params) {
 }
 
 int innerDepth(const BuildTree& tree) {
-    if (tree.nodes.empty()) return 0;
+    if (tree.empty()) return 0;
     int deepest = 0;
     std::vector<std::pair<std::uint32_t, int>> stack{{tree.root, 0}};
     while (!stack.empty()) {
         auto [i, d] = stack.back();
         stack.pop_back();
-        const BuildNode& node = tree.nodes[i];
+        const BuildNode& node = tree[i];
         if (node.leaf()) {
             deepest = std::max(deepest, d);
             continue;

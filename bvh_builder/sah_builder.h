@@ -8,6 +8,8 @@
 //    cost of a leaf: C_isect * N.
 //  - A node becomes a leaf when it holds <= maxLeafSize primitives and no split is cheaper;
 //    above maxLeafSize it is always split.
+//  - Nodes of at most 16 references evaluate every split between consecutive centroids on each
+//    axis instead (a superset of the planes 16 bins could offer, at a lower cost for tiny nodes).
 //  - When the centroids cannot be binned (all identical), or the SAH split would let the tree grow
 //    deeper than maxDepth, the node is split at the median along its widest centroid axis (by count
 //    when every centroid is identical), so the build always terminates and the depth stays bounded.
@@ -17,10 +19,12 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "aabb.h"
+#include "huge_pages.h"
 #include "thread_pool.h"
 
 namespace vkrt::bvh {
@@ -34,16 +38,24 @@ struct SahParams {
 };
 
 // count > 0: a leaf over refs[first, first + count); count == 0: inner node with two children.
+// No member initialisers: the node array is allocated uninitialised (only used slots are written).
 struct BuildNode {
-    Aabb box;
-    std::uint32_t left = 0, right = 0;
-    std::uint32_t first = 0, count = 0;
+    Aabb box() const { return {lo, hi}; }
     bool leaf() const { return count > 0; }
+
+    glm::vec3 lo, hi;
+    std::uint32_t left, right;
+    std::uint32_t first, count;
 };
 
+// The nodes of a tree, reachable from root. Subtrees built in parallel each own a slice of the
+// array sized for the worst case (2n - 1 nodes for n references), so some slots stay unused.
 struct BuildTree {
-    std::vector<BuildNode> nodes;  // empty when there were no primitives
+    HugeArray<BuildNode> nodes;  // empty when there were no primitives
     std::uint32_t root = 0;
+
+    bool empty() const { return !nodes; }
+    const BuildNode& operator[](std::uint32_t i) const { return nodes[i]; }
 };
 
 // Reorders refs so that every leaf's references are contiguous, in depth-first order of the tree.

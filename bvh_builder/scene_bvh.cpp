@@ -2,6 +2,8 @@
 // into one node array, with stats.
 #include <algorithm>
 #include <chrono>
+#include <memory>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -24,7 +26,8 @@ constexpr std::size_t kRefChunk = 16 * 1024;
 constexpr int kMaxTreeDepth = 64;
 
 struct GroupBuild {
-    std::vector<PrimRef> refs;
+    HugeArray<PrimRef> refs;  // uninitialised until written: no pass just to zero it
+    std::size_t count = 0;
     BuildTree tree;
     Aabb bounds;
 };
@@ -38,7 +41,8 @@ void validateOptions(const BuildOptions& o) {
 // Builds the PrimRefs of one group (validating every primitive) and its SAH tree.
 void buildGroup(const std::vector<PrimitiveInput>& prims, std::size_t groupIndex, const SahParams& params,
                 ThreadPool& pool, GroupBuild& out) {
-    out.refs.resize(prims.size());
+    out.count = prims.size();
+    out.refs = HugeArray<PrimRef>(out.count);
     const std::size_t chunks = (prims.size() + kRefChunk - 1) / kRefChunk;
     std::vector<Aabb> partial(chunks);
     pool.parallelFor(chunks, [&](std::size_t c) {
@@ -51,7 +55,7 @@ void buildGroup(const std::vector<PrimitiveInput>& prims, std::size_t groupIndex
         }
     });
     for (const Aabb& b : partial) out.bounds.grow(b);
-    out.tree = buildSah(out.refs, params, pool);
+    out.tree = buildSah(std::span<PrimRef>(out.refs.get(), out.count), params, pool);
 }
 
 }  // namespace
@@ -89,8 +93,11 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
 
     // Flatten in group order, so the layout does not depend on which thread built what.
     SceneBvh bvh;
-    bvh.prims.resize(totalPrims);
-    bvh.primSource.resize(totalPrims);
+    reserveHuge(bvh.prims, totalPrims);
+    reserveHuge(bvh.primSource, totalPrims);
+    // A tree over n references has at most n - 1 inner nodes; every group and the top level
+    // have at least one node.
+    reserveHuge(bvh.nodes, totalPrims + 2 * groups.size() + instances.size() + 1);
     bvh.groups.resize(groups.size());
     std::uint32_t firstPrim = 0;
     for (std::size_t g = 0; g < groups.size(); ++g) {
@@ -100,11 +107,17 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
         range.primCount = static_cast<std::uint32_t>(groups[g].size());
         range.lo = b.bounds.lo;
         range.hi = b.bounds.hi;
-        for (std::size_t i = 0; i < b.refs.size(); ++i) {
-            const std::uint32_t source = b.refs[i].id();
-            bvh.prims[firstPrim + i] = encode(groups[g][source]);
-            bvh.primSource[firstPrim + i] = source;
-        }
+        // Primitive records in leaf order, written in parallel chunks into the grown arrays.
+        bvh.prims.resize(firstPrim + b.count);
+        bvh.primSource.resize(firstPrim + b.count);
+        pool.parallelFor((b.count + kRefChunk - 1) / kRefChunk, [&](std::size_t c) {
+            const std::size_t end = std::min(b.count, (c + 1) * kRefChunk);
+            for (std::size_t i = c * kRefChunk; i < end; ++i) {
+                const std::uint32_t source = b.refs[i].id();
+                bvh.prims[firstPrim + i] = encode(groups[g][source]);
+                bvh.primSource[firstPrim + i] = source;
+            }
+        });
         const FlattenResult flat =
             flatten(b.tree, [&](const BuildNode& leaf) { return firstPrim + leaf.first; }, bvh.nodes);
         range.rootNode = flat.root;

@@ -3,6 +3,9 @@
 // tested (one 64-byte node read), leaves are intersected at once, the nearer inner child is visited
 // first and the farther one pushed with its entry distance, so it is skipped if a closer hit has
 // been found by the time it is popped.
+#include <immintrin.h>
+
+#include <cmath>
 #include <cstring>
 
 #include "bvh.h"
@@ -16,25 +19,32 @@ namespace {
 // Enough for any tree the builder makes: it bounds every level's depth by kMaxTreeDepth.
 constexpr int kStackSize = 64;
 
-// Slab test of both children of a node (Kay & Kajiya 1986, in the branch-free form of Williams et
-// al. 2005: each axis's near plane is chosen by the sign of the direction, so an empty box, stored
-// as lo = +FLT_MAX > hi = -FLT_MAX, always gives tNear > tFar). A zero direction component gives an
-// infinite inverse; (plane - origin) * inf is NaN only when the origin lies on the plane, and the
-// comparisons below are written so a NaN leaves the running interval unchanged (the ray then
-// counts as inside that slab: conservative).
+// Slab test of both children of a node at once, in SSE (Kay & Kajiya 1986, with each axis's near
+// plane chosen by the sign of the direction as in Williams et al. 2005, so an empty box, stored as
+// lo = +FLT_MAX > hi = -FLT_MAX, always gives tNear > tFar). Direction components of magnitude
+// below 2^-100 are replaced by +-2^-100: the inverse is then finite, so (plane - origin) * inverse
+// is never 0 * inf = NaN, and the slab of an axis-parallel ray is (-huge, +huge) inside the slab
+// and entirely on one side outside it (a conservative answer at worst).
 struct NodeRay {
-    float o[3];
-    float inv[3];
-    int nearX, nearY, nearZ;  // 0: the near plane is lo, 1: it is hi
+    __m128 oXXYY, iXXYY, oZZZZ, iZZZZ;
+    __m128 swapXY;  // lanes (x: 0,1; y: 2,3) whose lo/hi planes swap roles: the direction is negative
+    __m128 swapZ;   // the same for the z texel (lo0.z hi0.z lo1.z hi1.z)
 
     NodeRay(const glm::vec3& origin, const glm::vec3& dir) {
+        float inv[3];
         for (int i = 0; i < 3; ++i) {
-            o[i] = origin[i];
-            inv[i] = 1.0f / dir[i];
+            const float d = std::abs(dir[i]) < 0x1p-100f ? std::copysign(0x1p-100f, dir[i]) : dir[i];
+            inv[i] = 1.0f / d;
         }
-        nearX = std::signbit(inv[0]) ? 1 : 0;
-        nearY = std::signbit(inv[1]) ? 1 : 0;
-        nearZ = std::signbit(inv[2]) ? 1 : 0;
+        oXXYY = _mm_setr_ps(origin.x, origin.x, origin.y, origin.y);
+        iXXYY = _mm_setr_ps(inv[0], inv[0], inv[1], inv[1]);
+        oZZZZ = _mm_set1_ps(origin.z);
+        iZZZZ = _mm_set1_ps(inv[2]);
+        const float sx = inv[0] < 0.0f ? -1.0f : 0.0f, sy = inv[1] < 0.0f ? -1.0f : 0.0f;
+        const float sz = inv[2] < 0.0f ? -1.0f : 0.0f;
+        // All-ones lanes where a swap is needed (the sign bit is what blendv reads).
+        swapXY = _mm_setr_ps(sx, sx, sy, sy);
+        swapZ = _mm_set1_ps(sz);
     }
 };
 
@@ -43,21 +53,32 @@ struct NodeRay {
 // (Ize 2013, "Robust BVH Ray Traversal", JCGT 2(2)).
 constexpr float kFarScale = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
 
-inline bool slab(const float* f, int k, const NodeRay& r, float tmax, float& tEntry) {
-    const float* xy = f + 4 * k;
-    const float* z = f + 8 + 2 * k;
-    float tn = 0.0f, tf = tmax;
-    const float tx0 = (xy[r.nearX] - r.o[0]) * r.inv[0], tx1 = (xy[1 - r.nearX] - r.o[0]) * r.inv[0];
-    const float ty0 = (xy[2 + r.nearY] - r.o[1]) * r.inv[1], ty1 = (xy[3 - r.nearY] - r.o[1]) * r.inv[1];
-    const float tz0 = (z[r.nearZ] - r.o[2]) * r.inv[2], tz1 = (z[1 - r.nearZ] - r.o[2]) * r.inv[2];
-    tn = tx0 > tn ? tx0 : tn;
-    tn = ty0 > tn ? ty0 : tn;
-    tn = tz0 > tn ? tz0 : tn;
-    tf = tx1 < tf ? tx1 : tf;
-    tf = ty1 < tf ? ty1 : tf;
-    tf = tz1 < tf ? tz1 : tf;
-    tEntry = tn;
-    return tn <= tf * kFarScale;
+// Returns a 2-bit mask of the children whose box the ray enters within [0, tmax]; tEntry gets
+// their entry distances.
+inline int slab2(const gpu::BvhNode& node, const NodeRay& r, float tmax, float tEntry[2]) {
+    const float* f = reinterpret_cast<const float*>(&node);
+    const __m128 xy0 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(f), r.oXXYY), r.iXXYY);
+    const __m128 xy1 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(f + 4), r.oXXYY), r.iXXYY);
+    const __m128 z = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(f + 8), r.oZZZZ), r.iZZZZ);
+    // (near, far) per axis: swap lo/hi lanes where the direction is negative.
+    constexpr int kSwapPairs = _MM_SHUFFLE(2, 3, 0, 1);
+    const __m128 s0 = _mm_blendv_ps(xy0, _mm_shuffle_ps(xy0, xy0, kSwapPairs), r.swapXY);  // nx0 fx0 ny0 fy0
+    const __m128 s1 = _mm_blendv_ps(xy1, _mm_shuffle_ps(xy1, xy1, kSwapPairs), r.swapXY);  // nx1 fx1 ny1 fy1
+    const __m128 sz = _mm_blendv_ps(z, _mm_shuffle_ps(z, z, kSwapPairs), r.swapZ);        // nz0 fz0 nz1 fz1
+    const __m128 nearXY = _mm_shuffle_ps(s0, s1, _MM_SHUFFLE(2, 0, 2, 0));  // nx0 ny0 nx1 ny1
+    const __m128 farXY = _mm_shuffle_ps(s0, s1, _MM_SHUFFLE(3, 1, 3, 1));   // fx0 fy0 fx1 fy1
+    const __m128 nearZ = _mm_shuffle_ps(sz, sz, _MM_SHUFFLE(2, 2, 0, 0));   // nz0 nz0 nz1 nz1
+    const __m128 farZ = _mm_shuffle_ps(sz, sz, _MM_SHUFFLE(3, 3, 1, 1));    // fz0 fz0 fz1 fz1
+    __m128 tn = _mm_max_ps(nearXY, nearZ);
+    __m128 tf = _mm_min_ps(farXY, farZ);
+    tn = _mm_max_ps(_mm_max_ps(tn, _mm_shuffle_ps(tn, tn, kSwapPairs)), _mm_setzero_ps());  // n0 n0 n1 n1
+    tf = _mm_min_ps(_mm_min_ps(tf, _mm_shuffle_ps(tf, tf, kSwapPairs)), _mm_set1_ps(tmax));
+    const int mask = _mm_movemask_ps(_mm_cmple_ps(tn, _mm_mul_ps(tf, _mm_set1_ps(kFarScale))));
+    alignas(16) float t[4];
+    _mm_store_ps(t, tn);
+    tEntry[0] = t[0];
+    tEntry[1] = t[2];
+    return (mask & 1) | ((mask >> 1) & 2);
 }
 
 // Walks one tree from root; leaf(link, count) intersects a leaf's contents, may lower tmax, and
@@ -74,10 +95,9 @@ void walk(const std::vector<gpu::BvhNode>& nodes, std::uint32_t root, const Node
     std::uint32_t current = root;
     for (;;) {
         const gpu::BvhNode& node = nodes[current];
-        float f[12];
-        std::memcpy(f, &node, sizeof f);
         float t[2];
-        const bool hit[2] = {slab(f, 0, ray, tmax, t[0]), slab(f, 1, ray, tmax, t[1])};
+        const int mask = slab2(node, ray, tmax, t);
+        const bool hit[2] = {(mask & 1) != 0, (mask & 2) != 0};
         const int first = t[1] < t[0] ? 1 : 0;
         bool descend[2] = {false, false};
         for (int i = 0; i < 2; ++i) {

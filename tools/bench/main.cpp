@@ -1,0 +1,48 @@
+// vkrt-bench SUBCOMMAND ...: measurement tools (not tests). See bench_command.h to add a subcommand.
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "bench_command.h"
+
+namespace {
+
+struct Subcommand {
+    const char* name;
+    const char* usage;
+    int (*run)(const std::vector<std::string>&);
+};
+
+constexpr Subcommand kSubcommands[] = {
+    {"bvh", "bvh MESH.obj|sphere:N [W H SPP THREADS] [--peer PATH] [--build-peer] [--rounds R]\n"
+            "               [--ctrav C] [--cisect C] [--max-leaf N] [--bins B]",
+     vkrt::bench::runBvhBench},
+};
+
+void usage() {
+    std::fprintf(stderr, "usage: vkrt-bench SUBCOMMAND ...\n");
+    for (const Subcommand& s : kSubcommands) std::fprintf(stderr, "  vkrt-bench %s\n", s.usage);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        usage();
+        return 2;
+    }
+    const std::string name = argv[1];
+    for (const Subcommand& s : kSubcommands) {
+        if (name != s.name) continue;
+        try {
+            return s.run(std::vector<std::string>(argv + 2, argv + argc));
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "vkrt-bench %s: %s\n", s.name, e.what());
+            return 1;
+        }
+    }
+    std::fprintf(stderr, "vkrt-bench: unknown subcommand '%s'\n", name.c_str());
+    usage();
+    return 2;
+}
