@@ -13,7 +13,7 @@ vk::raii::ShaderModule makeShaderModule(const Context& context, std::span<const 
 
 vk::raii::Pipeline makeComputePipeline(const Context& context, const vk::raii::PipelineCache* cache,
                                        vk::PipelineLayout layout, vk::ShaderModule module,
-                                       std::span<const SpecConstant> constants) {
+                                       std::span<const SpecConstant> constants, vk::PipelineCreateFlags flags) {
     std::vector<vk::SpecializationMapEntry> entries;
     std::vector<std::uint32_t> data;
     for (const SpecConstant& c : constants) {
@@ -25,7 +25,7 @@ vk::raii::Pipeline makeComputePipeline(const Context& context, const vk::raii::P
     specialization.setData<std::uint32_t>(data);
     vk::PipelineShaderStageCreateInfo stage({}, vk::ShaderStageFlagBits::eCompute, module, "main",
                                             entries.empty() ? nullptr : &specialization);
-    vk::ComputePipelineCreateInfo info({}, stage, layout);
+    vk::ComputePipelineCreateInfo info(flags, stage, layout);
     return vk::raii::Pipeline(context.device(), cache ? vk::Optional<const vk::raii::PipelineCache>(*cache) : nullptr, info);
 }
 

@@ -19,10 +19,11 @@ struct SpecConstant {
 
 vk::raii::ShaderModule makeShaderModule(const Context& context, std::span<const std::uint32_t> spirv);
 
-// Entry point "main". `cache` may be nullptr.
+// Entry point "main". `cache` may be nullptr. Render kernels need
+// vk::PipelineCreateFlagBits::eDispatchBase (partial dispatches with vkCmdDispatchBase).
 vk::raii::Pipeline makeComputePipeline(const Context& context, const vk::raii::PipelineCache* cache,
                                        vk::PipelineLayout layout, vk::ShaderModule module,
-                                       std::span<const SpecConstant> constants);
+                                       std::span<const SpecConstant> constants, vk::PipelineCreateFlags flags = {});
 
 // Set 0 = the twelve bindings of device_host.h; push constants = PassParams.
 class RenderLayout {

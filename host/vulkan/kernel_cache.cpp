@@ -16,7 +16,8 @@ const vk::raii::Pipeline& KernelCache::pipeline(const FeatureSet& features, doub
     const auto values = features.specializationValues();
     std::vector<SpecConstant> constants;
     for (std::uint32_t id = 0; id < values.size(); ++id) constants.push_back({id, values[id]});
-    vk::raii::Pipeline created = makeComputePipeline(context_, &cache_, layout_.pipelineLayout(), *module_, constants);
+    vk::raii::Pipeline created = makeComputePipeline(context_, &cache_, layout_.pipelineLayout(), *module_, constants,
+                                                     vk::PipelineCreateFlagBits::eDispatchBase);
     if (creationSeconds) *creationSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return pipelines_.emplace(features, std::move(created)).first->second;
 }

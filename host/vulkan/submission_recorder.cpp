@@ -5,7 +5,7 @@
 namespace vkrt {
 
 gpu::PassParams passParams(const TileRect& tile, std::uint32_t sample) {
-    const std::uint32_t workgroups = ((tile.width + 7) / 8) * ((tile.height + 7) / 8);
+    const std::uint32_t workgroups = tile.workgroups();
     gpu::PassParams p{};
     p.tile = glm::uvec4(tile.x, tile.y, tile.width, tile.height);
     p.pass = glm::uvec4(sample, interleaveStride(workgroups), workgroups, 0u);
@@ -23,7 +23,9 @@ void recordSubmission(const vk::raii::CommandBuffer& commands, vk::Pipeline pipe
         const gpu::PassParams params = passParams(submission.tile, submission.firstSample + s);
         if (s > 0) computeToComputeBarrier(commands);  // pass s adds to the sums pass s-1 wrote
         commands.pushConstants<gpu::PassParams>(layout, vk::ShaderStageFlagBits::eCompute, 0, params);
-        commands.dispatch(params.pass.z, 1, 1);
+        // The base offsets gl_WorkGroupID, so render.comp's block mapping sees workgroups
+        // [first, first + count) of the pass without knowing about partial dispatches.
+        commands.dispatchBase(submission.firstWorkgroup, 0, 0, submission.workgroupCount, 1, 1);
     }
     computeToHostBarrier(commands);  // status (every submission) and accumulation (at the end)
 }

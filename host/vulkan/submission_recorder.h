@@ -1,5 +1,6 @@
-// Records one submission of the render: a run of sample passes over one tile, one dispatch per
-// pass, with the barriers that keep a pixel's samples accumulating in order.
+// Records one submission of the render: a run of workgroups of a tile for a run of sample passes,
+// one dispatch per pass, with the barriers that keep a pixel's samples accumulating in order.
+// The pipeline must be created with VK_PIPELINE_CREATE_DISPATCH_BASE_BIT.
 #pragma once
 
 #include <vulkan/vulkan_raii.hpp>

@@ -3,115 +3,94 @@
 #include <algorithm>
 #include <numeric>
 #include <stdexcept>
+#include <string>
 
 namespace vkrt {
 
 namespace {
 
-constexpr std::uint32_t kBlock = 8;  // a workgroup covers 8x8 pixels (render.comp)
-
-std::uint64_t workgroupsOf(std::uint32_t width, std::uint32_t height) {
-    return static_cast<std::uint64_t>((width + kBlock - 1) / kBlock) * ((height + kBlock - 1) / kBlock);
-}
-
-std::uint32_t roundDownToBlock(std::uint64_t n) {
-    return static_cast<std::uint32_t>(std::min<std::uint64_t>(n / kBlock * kBlock, 0xffffffffu));
-}
+constexpr std::uint32_t kBlock = 8;                        // a workgroup covers 8x8 pixels (render.comp)
+constexpr std::uint64_t kBlockPixels = kBlock * kBlock;
 
 }  // namespace
 
+std::vector<TileRect> planTiles(std::uint32_t width, std::uint32_t height, const TilingPolicy& policy) {
+    std::vector<TileRect> tiles;
+    if (policy.fixedTileWidth) {
+        for (std::uint32_t y = 0; y < height; y += policy.fixedTileHeight)
+            for (std::uint32_t x = 0; x < width; x += policy.fixedTileWidth)
+                tiles.push_back({x, y, std::min(policy.fixedTileWidth, width - x), std::min(policy.fixedTileHeight, height - y)});
+        return tiles;
+    }
+    const std::uint32_t blocksX = (width + kBlock - 1) / kBlock;
+    if (blocksX > policy.maxWorkgroups)
+        throw std::invalid_argument("an image " + std::to_string(width) + " pixels wide needs more than " +
+                                    std::to_string(policy.maxWorkgroups) + " workgroups per row of blocks");
+    const std::uint32_t bandRows = (policy.maxWorkgroups / blocksX) * kBlock;
+    for (std::uint32_t y = 0; y < height; y += bandRows) tiles.push_back({0, y, width, std::min(bandRows, height - y)});
+    return tiles;
+}
+
 TilePlanner::TilePlanner(std::uint32_t width, std::uint32_t height, std::uint32_t samples, const TilingPolicy& policy)
-    : width_(width), height_(height), samples_(samples), policy_(policy),
-      totalPixelSamples_(static_cast<std::uint64_t>(width) * height * samples) {
+    : samples_(samples), policy_(policy) {
     if (width == 0 || height == 0 || samples == 0) throw std::invalid_argument("TilePlanner: empty render");
     if (policy_.maxWorkgroups == 0) throw std::invalid_argument("TilePlanner: maxWorkgroups is 0");
     if ((policy_.fixedTileWidth == 0) != (policy_.fixedTileHeight == 0))
         throw std::invalid_argument("TilePlanner: a fixed tile needs both a width and a height");
-    if (policy_.fixedTileWidth && workgroupsOf(policy_.fixedTileWidth, policy_.fixedTileHeight) > policy_.maxWorkgroups)
-        throw std::invalid_argument("TilePlanner: a " + std::to_string(policy_.fixedTileWidth) + "x" +
-                                    std::to_string(policy_.fixedTileHeight) + " tile needs more than " +
-                                    std::to_string(policy_.maxWorkgroups) + " workgroups");
+    tiles_ = planTiles(width, height, policy_);
+    for (const TileRect& t : tiles_) {
+        if (t.workgroups() > policy_.maxWorkgroups)
+            throw std::invalid_argument("TilePlanner: a " + std::to_string(t.width) + "x" + std::to_string(t.height) +
+                                        " tile needs more than " + std::to_string(policy_.maxWorkgroups) + " workgroups");
+        totalUnits_ += static_cast<std::uint64_t>(t.workgroups()) * samples;
+    }
 }
 
 std::uint64_t TilePlanner::budgetPixelSamples() const {
-    if (secondsPerPixelSample_ <= 0.0) return policy_.firstPixelSamples;
-    double budget = policy_.targetSeconds / secondsPerPixelSample_;
-    budget = std::min(budget, static_cast<double>(lastPixelSamples_) * policy_.maxGrowth);
-    return std::max<std::uint64_t>(static_cast<std::uint64_t>(budget), kBlock * kBlock);
-}
-
-TileRect TilePlanner::newTile(std::uint64_t budget) {
-    const std::uint32_t rowsLeft = height_ - cursorY_;
-    const std::uint32_t columnsLeft = width_ - cursorX_;
-    TileRect tile;
-    if (policy_.fixedTileWidth) {
-        if (cursorX_ == 0) bandHeight_ = std::min(policy_.fixedTileHeight, rowsLeft);
-        tile = {cursorX_, cursorY_, std::min(policy_.fixedTileWidth, columnsLeft), bandHeight_};
-    } else {
-        // The tile holds at most `budget` pixels (a submission runs at least one sample pass).
-        const std::uint64_t pixels = std::min<std::uint64_t>(budget, static_cast<std::uint64_t>(policy_.maxWorkgroups) * kBlock * kBlock);
-        if (cursorX_ == 0) {
-            const std::uint64_t fullRows = pixels / width_;
-            if (fullRows >= rowsLeft) bandHeight_ = rowsLeft;
-            else bandHeight_ = std::min(rowsLeft, std::max(kBlock, roundDownToBlock(fullRows)));
-        }
-        std::uint32_t tileWidth = columnsLeft;
-        if (pixels / bandHeight_ < columnsLeft) tileWidth = std::clamp(roundDownToBlock(pixels / bandHeight_), kBlock, columnsLeft);
-        // Partial blocks at the image edge can push the count over; narrow until it fits.
-        while (workgroupsOf(tileWidth, bandHeight_) > policy_.maxWorkgroups && tileWidth > kBlock)
-            tileWidth = std::max(kBlock, roundDownToBlock(tileWidth / 2));
-        tile = {cursorX_, cursorY_, tileWidth, bandHeight_};
-    }
-    cursorX_ += tile.width;
-    if (cursorX_ >= width_) {
-        cursorX_ = 0;
-        cursorY_ += bandHeight_;
-    }
-    return tile;
-}
-
-void TilePlanner::splitFront(std::uint64_t budget) {
-    Piece& front = pieces_.front();
-    TileRect& t = front.tile;
-    if (t.pixels() <= budget) return;
-    Piece rest = front;
-    if (t.height > kBlock) {  // split off whole rows first: they keep the tile's full width
-        const std::uint32_t rows = std::clamp(roundDownToBlock(budget / t.width), kBlock, t.height - 1);
-        rest.tile.y = t.y + rows;
-        rest.tile.height = t.height - rows;
-        t.height = rows;
-    } else if (t.width > kBlock) {
-        const std::uint32_t columns = std::clamp(roundDownToBlock(budget / t.height), kBlock, t.width - 1);
-        rest.tile.x = t.x + columns;
-        rest.tile.width = t.width - columns;
-        t.width = columns;
-    } else {
-        return;  // one block: the smallest piece of work there is
-    }
-    pieces_.insert(pieces_.begin() + 1, rest);
+    if (secondsPerUnit_ <= 0.0) return policy_.firstPixelSamples;
+    double units = policy_.targetSeconds / secondsPerUnit_;
+    units = std::min(units, static_cast<double>(lastUnits_) * policy_.maxGrowth);
+    return std::max<std::uint64_t>(static_cast<std::uint64_t>(units), 1) * kBlockPixels;
 }
 
 Submission TilePlanner::next() {
-    const std::uint64_t budget = budgetPixelSamples();
-    if (pieces_.empty()) pieces_.push_back({newTile(budget), 0});
-    else if (!policy_.fixedTileWidth) splitFront(budget);
-    Piece& piece = pieces_.front();
-    std::uint32_t count = samples_ - piece.nextSample;
-    if (policy_.fixedSamplesPerSubmission) count = std::min(count, policy_.fixedSamplesPerSubmission);
-    else count = static_cast<std::uint32_t>(std::clamp<std::uint64_t>(budget / piece.tile.pixels(), 1, count));
+    const TileRect& tile = tiles_[tile_];
+    const std::uint32_t workgroups = tile.workgroups();
+    const std::uint64_t budgetUnits = std::max<std::uint64_t>(budgetPixelSamples() / kBlockPixels, 1);
 
-    const Submission submission{piece.tile, piece.nextSample, count};
-    lastPixelSamples_ = piece.tile.pixels() * count;
-    piece.nextSample += count;
-    if (piece.nextSample == samples_) pieces_.pop_front();
-    return submission;
+    Submission s{tile, workgroup_, 0, sample_, 1};
+    const std::uint32_t left = workgroups - workgroup_;
+    if (policy_.fixedWorkgroups) {
+        s.workgroupCount = std::min(policy_.fixedWorkgroups, left);
+    } else {
+        // The rest of the pass in equal runs, so that no run is a small remainder.
+        const std::uint64_t runs = (left + budgetUnits - 1) / budgetUnits;
+        s.workgroupCount = static_cast<std::uint32_t>((left + runs - 1) / runs);
+    }
+    if (s.workgroupCount == workgroups) {  // a whole pass fits: take as many passes as the budget allows
+        const std::uint32_t passesLeft = samples_ - sample_;
+        s.sampleCount = policy_.fixedSamples ? std::min(policy_.fixedSamples, passesLeft)
+                                             : static_cast<std::uint32_t>(std::clamp<std::uint64_t>(budgetUnits / workgroups, 1, passesLeft));
+    }
+
+    lastUnits_ = static_cast<std::uint64_t>(s.workgroupCount) * s.sampleCount;
+    workgroup_ += s.workgroupCount;
+    if (workgroup_ == workgroups) {
+        workgroup_ = 0;
+        sample_ += s.sampleCount;
+        if (sample_ == samples_) {
+            sample_ = 0;
+            ++tile_;
+        }
+    }
+    return s;
 }
 
 void TilePlanner::reportSeconds(double seconds) {
-    donePixelSamples_ += lastPixelSamples_;
-    // The latest measurement alone: neighbouring tiles cost alike, and an expensive region must
-    // shrink the next submission at once rather than after an average catches up.
-    if (lastPixelSamples_ > 0 && seconds > 0.0) secondsPerPixelSample_ = seconds / static_cast<double>(lastPixelSamples_);
+    doneUnits_ += lastUnits_;
+    // The latest measurement alone: every submission samples the whole tile evenly, so the
+    // last one is the best predictor, and a change of scene cost is followed at once.
+    if (lastUnits_ > 0 && seconds > 0.0) secondsPerUnit_ = seconds / static_cast<double>(lastUnits_);
 }
 
 std::uint32_t interleaveStride(std::uint32_t workgroups) {

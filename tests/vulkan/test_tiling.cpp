@@ -20,25 +20,42 @@ namespace {
 using test::TinyScene;
 using test::VulkanTest;
 
+// The 8x8 blocks a submission covers: render.comp's mapping of its workgroups.
+std::vector<glm::uvec2> blocksOf(const Submission& s) {
+    const gpu::PassParams p = passParams(s.tile, s.firstSample);
+    const std::uint32_t blocksX = (s.tile.width + 7) / 8;
+    std::vector<glm::uvec2> blocks;
+    for (std::uint32_t g = s.firstWorkgroup; g < s.firstWorkgroup + s.workgroupCount; ++g) {
+        const std::uint32_t block = (g * p.pass.y) % p.pass.z;  // 32-bit, as on the device
+        blocks.emplace_back(s.tile.x / 8 + block % blocksX, s.tile.y / 8 + block / blocksX);
+    }
+    return blocks;
+}
+
 // Runs a planner to the end with a simulated device taking `costOf(submission)` seconds,
-// checking coverage and order; returns the submissions.
+// checking that every 8x8 block of the image gets every sample exactly once and in order;
+// returns the submissions.
 template <class Cost>
 std::vector<Submission> simulate(std::uint32_t width, std::uint32_t height, std::uint32_t samples, const TilingPolicy& policy,
                                  Cost costOf) {
     TilePlanner planner(width, height, samples, policy);
-    std::vector<std::uint32_t> nextSample(static_cast<std::size_t>(width) * height, 0);
+    const std::uint32_t blocksX = (width + 7) / 8, blocksY = (height + 7) / 8;
+    std::vector<std::uint32_t> nextSample(static_cast<std::size_t>(blocksX) * blocksY, 0);
     std::vector<Submission> all;
     while (!planner.done()) {
         const Submission s = planner.next();
         EXPECT_GT(s.sampleCount, 0u);
+        EXPECT_GT(s.workgroupCount, 0u);
+        EXPECT_LE(s.firstWorkgroup + s.workgroupCount, s.tile.workgroups());
+        EXPECT_LE(s.firstWorkgroup + s.workgroupCount, policy.maxWorkgroups);  // vkCmdDispatchBase's limit
         EXPECT_LE(s.tile.x + s.tile.width, width);
         EXPECT_LE(s.tile.y + s.tile.height, height);
-        for (std::uint32_t y = s.tile.y; y < s.tile.y + s.tile.height; ++y)
-            for (std::uint32_t x = s.tile.x; x < s.tile.x + s.tile.width; ++x) {
-                std::uint32_t& next = nextSample[static_cast<std::size_t>(y) * width + x];
-                EXPECT_EQ(next, s.firstSample) << "pixel " << x << "," << y << " got samples out of order";
-                next = s.firstSample + s.sampleCount;
-            }
+        EXPECT_TRUE(s.sampleCount == 1 || s.workgroupCount == s.tile.workgroups()) << "several passes over part of a tile";
+        for (const glm::uvec2 b : blocksOf(s)) {
+            std::uint32_t& next = nextSample[static_cast<std::size_t>(b.y) * blocksX + b.x];
+            EXPECT_EQ(next, s.firstSample) << "block " << b.x << "," << b.y << " got samples out of order";
+            next = s.firstSample + s.sampleCount;
+        }
         planner.reportSeconds(costOf(s));
         all.push_back(s);
         if (all.size() > 1000000) {
@@ -51,79 +68,88 @@ std::vector<Submission> simulate(std::uint32_t width, std::uint32_t height, std:
     return all;
 }
 
-TEST(TilePlanner, CoversEveryPixelSampleOnceInOrder) {
-    const TilingPolicy adaptive;
+double uniformCost(const Submission& s, double perBlockSample) {
+    return perBlockSample * s.workgroupCount * s.sampleCount;
+}
+
+TEST(TilePlanner, CoversEveryBlockSampleOnceInOrder) {
     for (auto [w, h, spp] : {std::tuple{1u, 1u, 1u}, {250u, 250u, 16u}, {70u, 45u, 5u}, {1000u, 3u, 2u}, {3u, 1000u, 7u}}) {
         SCOPED_TRACE(std::to_string(w) + "x" + std::to_string(h) + "x" + std::to_string(spp));
-        simulate(w, h, spp, adaptive, [](const Submission& s) { return 1e-7 * static_cast<double>(s.tile.pixels() * s.sampleCount); });
-        simulate(w, h, spp, adaptive, [](const Submission& s) { return 1e-3 * static_cast<double>(s.tile.pixels() * s.sampleCount); });
+        const TilingPolicy adaptive;
+        simulate(w, h, spp, adaptive, [](const Submission& s) { return uniformCost(s, 1e-6); });
+        simulate(w, h, spp, adaptive, [](const Submission& s) { return uniformCost(s, 1e-1); });
         TilingPolicy fixed;
         fixed.fixedTileWidth = 16;
-        fixed.fixedTileHeight = 8;
-        fixed.fixedSamplesPerSubmission = 3;
+        fixed.fixedTileHeight = 24;
+        fixed.fixedWorkgroups = 5;
         simulate(w, h, spp, fixed, [](const Submission&) { return 0.01; });
+        TilingPolicy passes;
+        passes.fixedSamples = 3;
+        simulate(w, h, spp, passes, [](const Submission&) { return 0.01; });
     }
 }
 
-TEST(TilePlanner, FixedPolicyGivesTheAskedTiles) {
+TEST(TilePlanner, FixedPolicyGivesTheAskedSubmissions) {
     TilingPolicy fixed;
     fixed.fixedTileWidth = 16;
     fixed.fixedTileHeight = 8;
-    fixed.fixedSamplesPerSubmission = 2;
+    fixed.fixedWorkgroups = 1;
+    fixed.fixedSamples = 1;
     const auto all = simulate(40, 10, 3, fixed, [](const Submission&) { return 0.01; });
-    // Tiles: 3 across (16, 16, 8 wide) x 2 bands (8, 2 high); samples 0-1 then 2 per tile.
-    ASSERT_EQ(all.size(), 12u);
+    // 3 x 2 tiles of 2, 2, 1 (top) and 2, 2, 1 (bottom) workgroups, one workgroup and one pass each.
+    ASSERT_EQ(all.size(), (2u + 2u + 1u) * 2u * 3u);
     EXPECT_EQ(all[0].tile.width, 16u);
-    EXPECT_EQ(all[0].sampleCount, 2u);
-    EXPECT_EQ(all[1].firstSample, 2u);
-    EXPECT_EQ(all[1].sampleCount, 1u);
-    EXPECT_EQ(all[4].tile.width, 8u);
-    EXPECT_EQ(all[6].tile.y, 8u);
-    EXPECT_EQ(all[6].tile.height, 2u);
+    EXPECT_EQ(all[1].firstWorkgroup, 1u);
+    EXPECT_EQ(all[2].firstSample, 1u);
+    EXPECT_EQ(all[12].tile.width, 8u);
+    EXPECT_EQ(all[15].tile.y, 8u);
+    EXPECT_EQ(all[15].tile.height, 2u);
 }
 
-// With a uniform cost per pixel-sample the planner learns it from the first probe: no later
-// submission may exceed the target, and once grown they should use at least half of it.
+// With a uniform cost the planner learns it from the first probe: no later submission may
+// exceed the target, and once grown they should use at least half of it.
 TEST(TilePlanner, SubmissionsStayNearTheTarget) {
     const TilingPolicy policy;  // 0.3 s
-    const double cost = 2e-6;   // seconds per pixel-sample: 150,000 pixel-samples per target
-    const auto all = simulate(1024, 768, 64, policy, [&](const Submission& s) { return cost * static_cast<double>(s.tile.pixels() * s.sampleCount); });
+    const double cost = 1e-4;   // seconds per block-sample: 3000 per target
+    const auto all = simulate(1024, 768, 64, policy, [&](const Submission& s) { return uniformCost(s, cost); });
     int full = 0;
     for (std::size_t i = 1; i < all.size(); ++i) {
-        const double seconds = cost * static_cast<double>(all[i].tile.pixels() * all[i].sampleCount);
-        EXPECT_LE(seconds, policy.targetSeconds * 1.0001) << "submission " << i;
-        if (seconds >= policy.targetSeconds / 2) ++full;
+        EXPECT_LE(uniformCost(all[i], cost), policy.targetSeconds * 1.0001) << "submission " << i;
+        if (uniformCost(all[i], cost) >= policy.targetSeconds / 2) ++full;
     }
-    EXPECT_GT(full, static_cast<int>(all.size()) * 8 / 10) << all.size() << " submissions";
+    EXPECT_GT(full, static_cast<int>(all.size()) * 9 / 10) << all.size() << " submissions";
 }
 
-// A cheap region then a region 20x more expensive: a submission sized from the cheap region can
-// overshoot when it reaches the expensive one - by at most the cost ratio - and the planner must
-// recover at once (pieces of the too-large tile continue separately), so overshoots stay rare.
-TEST(TilePlanner, AdaptsWhenTheCostJumps) {
+// All the cost in a corner: a tenth of the image 100x more expensive than the rest. Spatial
+// tiles sized from the cheap part would overshoot ~10x on reaching the corner; interleaved
+// workgroup runs sample the corner in proportion from the first probe on.
+TEST(TilePlanner, AnExpensiveCornerDoesNotMakeSubmissionsOvershoot) {
     const TilingPolicy policy;
-    auto seconds = [](const Submission& s) {
-        double rows = 0.0;  // cost is additive over the tile's rows
-        for (std::uint32_t y = s.tile.y; y < s.tile.y + s.tile.height; ++y) rows += y < 300 ? 1e-7 : 2e-6;
-        return rows * s.tile.width * s.sampleCount;
+    const std::uint32_t width = 640, height = 480;
+    auto seconds = [&](const Submission& s) {
+        double total = 0.0;
+        for (const glm::uvec2 b : blocksOf(s)) total += (b.x < width / 8 / 4 && b.y < height / 8 * 4 / 10) ? 1e-3 : 1e-5;
+        return total * s.sampleCount;
     };
-    const auto all = simulate(512, 600, 16, policy, seconds);
-    int over = 0;
+    const auto all = simulate(width, height, 16, policy, seconds);
     double worst = 0.0;
-    for (const Submission& s : all) {
-        worst = std::max(worst, seconds(s));
-        if (seconds(s) > policy.targetSeconds * 1.0001) ++over;
-    }
-    std::cout << all.size() << " submissions, " << over << " over the target, longest " << worst << " s\n";
-    EXPECT_LE(worst, policy.targetSeconds * 20.0);
-    EXPECT_LE(over, 2);
+    for (std::size_t i = 1; i < all.size(); ++i) worst = std::max(worst, seconds(all[i]));
+    std::cout << all.size() << " submissions, longest " << worst << " s for a target of " << policy.targetSeconds << " s\n";
+    // A run of n consecutive workgroups holds the corner's share of blocks to within a few blocks
+    // (a golden-ratio sequence), so the estimate is off by a few percent at most.
+    EXPECT_LE(worst, policy.targetSeconds * 1.2);
 }
 
-TEST(TilePlanner, NeverExceedsTheWorkgroupLimit) {
+TEST(TilePlanner, LargeImagesAreSplitIntoBandsOfAtMostMaxWorkgroups) {
     TilingPolicy policy;
     policy.maxWorkgroups = 1000;
-    const auto all = simulate(2000, 1500, 2, policy, [](const Submission& s) { return 1e-12 * static_cast<double>(s.tile.pixels()); });
-    for (const Submission& s : all) EXPECT_LE(passParams(s.tile, 0).pass.z, 1000u);
+    const std::vector<TileRect> tiles = planTiles(800, 1000, policy);  // 100 blocks per row: 80 rows per band
+    ASSERT_EQ(tiles.size(), 13u);
+    EXPECT_EQ(tiles[0].height, 80u);
+    EXPECT_EQ(tiles[12].height, 40u);
+    for (const TileRect& t : tiles) EXPECT_LE(t.workgroups(), 1000u);
+    simulate(800, 1000, 2, policy, [](const Submission& s) { return uniformCost(s, 1e-9); });
+    EXPECT_EQ(planTiles(250, 250, TilingPolicy{}).size(), 1u);
 }
 
 TEST(InterleaveStride, IsAPermutationSpreadOverTheTile) {
@@ -167,32 +193,36 @@ Image expectedCameraRays(const Scene& scene, const SceneAccel& accel, const Rend
     return image;
 }
 
-GpuRenderSettings fixedTiles(std::uint32_t w, std::uint32_t h, std::uint32_t samples) {
+GpuRenderSettings fixedTiling(std::uint32_t tileWidth, std::uint32_t tileHeight, std::uint32_t workgroups, std::uint32_t samples) {
     GpuRenderSettings s;
-    s.tiling.fixedTileWidth = w;
-    s.tiling.fixedTileHeight = h;
-    s.tiling.fixedSamplesPerSubmission = samples;
+    s.tiling.fixedTileWidth = tileWidth;
+    s.tiling.fixedTileHeight = tileHeight;
+    s.tiling.fixedWorkgroups = workgroups;
+    s.tiling.fixedSamples = samples;
     return s;
 }
 
 TEST_F(VulkanTest, TilingDoesNotChangeTheImageAndMatchesTheHost) {
     TinyScene tiny;
-    const RenderOptions options = test::smallRender(70, 45, 5);  // not multiples of 8
+    const RenderOptions options = test::smallRender(70, 45, 5);  // not multiples of 8: 9 x 6 blocks
     GpuRenderer& gpu = renderer({.kernelSpirv = test::testKernel("camera_rays")});
 
     GpuRenderStats stats;
     const Image adaptive = gpu.render(tiny.scene, tiny.accel, options, &stats);
     std::cout << "adaptive: " << stats.submissions << " submissions, " << stats.dispatches << " dispatches, longest "
               << stats.maxSubmissionSeconds << " s\n";
-    const Image small = gpu.render(tiny.scene, tiny.accel, options, &stats, fixedTiles(8, 8, 1));
-    EXPECT_EQ(stats.submissions, 9u * 6u * 5u);  // 9 x 6 tiles, one pass each
+    const Image small = gpu.render(tiny.scene, tiny.accel, options, &stats, fixedTiling(8, 8, 0, 1));
+    EXPECT_EQ(stats.submissions, 9u * 6u * 5u);  // 54 one-block tiles, one pass each
     EXPECT_EQ(stats.dispatches, 9u * 6u * 5u);
-    const Image odd = gpu.render(tiny.scene, tiny.accel, options, &stats, fixedTiles(24, 16, 3));
-    EXPECT_EQ(stats.submissions, 3u * 3u * 2u);  // passes 0-2, then 3-4
-    const Image whole = gpu.render(tiny.scene, tiny.accel, options, &stats, fixedTiles(70, 45, 5));
+    const Image runs = gpu.render(tiny.scene, tiny.accel, options, &stats, fixedTiling(0, 0, 7, 0));
+    EXPECT_EQ(stats.submissions, 8u * 5u);  // runs of 7 of the 54 workgroups, pass by pass
+    const Image odd = gpu.render(tiny.scene, tiny.accel, options, &stats, fixedTiling(24, 16, 0, 3));
+    EXPECT_EQ(stats.submissions, 3u * 3u * 2u);  // 9 tiles, passes 0-2 then 3-4
+    const Image whole = gpu.render(tiny.scene, tiny.accel, options, &stats, fixedTiling(0, 0, 0, 5));
     EXPECT_EQ(stats.submissions, 1u);
     EXPECT_EQ(stats.dispatches, 5u);
 
+    EXPECT_EQ(runs.pixels, adaptive.pixels);
     EXPECT_EQ(small.pixels, adaptive.pixels);
     EXPECT_EQ(odd.pixels, adaptive.pixels);
     EXPECT_EQ(whole.pixels, adaptive.pixels);
