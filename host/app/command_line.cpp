@@ -41,8 +41,9 @@ void addRenderOptions(CLI::App& app, CommandLine& cl, std::string& bg, std::stri
                    "Glossy reflection directions per pixel sample (at primary hits)")
         ->check(CLI::Range(1, 4096));
     app.add_option("--seed", cl.render.seed, "Random seed: the same seed and options give the same image");
-    app.add_option("--sampler", sampler, "Sample pattern: jittered (Cook 1984), regular or random")
-        ->check(CLI::IsMember({"jittered", "regular", "random"}));
+    app.add_option("--sampler", sampler,
+                   "Sample pattern: jittered (Cook 1984), regular, random or sobol (Owen-scrambled, Burley 2020)")
+        ->check(CLI::IsMember({"jittered", "regular", "random", "sobol"}));
     app.add_option("--bg", bg, "Background colour r,g,b (overrides the scene's bgColor)");
     app.add_option("--camera", cl.camera, "Which camera of the scene (index; default: the one <sceneParameters> names, else the first)")
         ->check(CLI::NonNegativeNumber);
@@ -97,7 +98,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
         if (cl.scenePath.empty()) throw CLI::RequiredError("a scene file (vkrt scene.xml)");
         if (!bg.empty()) cl.render.background = parseColour(bg);
         static const std::map<std::string, SamplerKind> samplers = {
-            {"jittered", SamplerKind::Jittered}, {"regular", SamplerKind::Regular}, {"random", SamplerKind::Random}};
+            {"jittered", SamplerKind::Jittered}, {"regular", SamplerKind::Regular}, {"random", SamplerKind::Random},
+            {"sobol", SamplerKind::Sobol}};
         cl.render.sampler = samplers.at(sampler);
         cl.device = device == "cpu" ? DeviceChoice::Cpu : device == "gpu" ? DeviceChoice::Gpu : DeviceChoice::Auto;
     } catch (const CLI::ParseError& e) {

@@ -97,13 +97,84 @@ VKRT_FN vec2 gridPoint(uvec4 grid, uint stratum, vec2 offset) {
                 min((float(gy) + offset.y) * invY, ONE_MINUS_EPSILON));
 }
 
+// ---------------------------------------------------------------------------------------------
+// Owen-scrambled Sobol (Burley 2020, "Practical Hash-based Owen Scrambling"), 2D: the first two
+// Sobol dimensions, each Owen-scrambled (nested uniform scrambling) by a hash keyed per
+// (pixel, dimension, seed), and the sample index itself Owen-scrambled per (pixel, dimension),
+// which shuffles the order of the points: every dimension draws its points from its own aligned
+// block of the sequence in its own order, so dimensions are decorrelated while each dimension's
+// first 2^m points of a pixel still form a (0, m, 2)-net (one point in every elementary interval).
+// docs/SAMPLING.md describes it and how its hash was checked.
+//
+// Integer operations only (no loop), then the exact float conversion of unitFloat.
+
+// The 32 bits of x in reverse order (swap halves, then quarters, ... , then neighbouring bits).
+VKRT_FN uint reverseBits32(uint x) {
+    x = (x >> 16u) | (x << 16u);
+    x = ((x >> 8u) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8u);
+    x = ((x >> 4u) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4u);
+    x = ((x >> 2u) & 0x33333333u) | ((x & 0x33333333u) << 2u);
+    x = ((x >> 1u) & 0x55555555u) | ((x & 0x55555555u) << 1u);
+    return x;
+}
+
+// Sobol dimension 1 of the point number `index`, with its digits in reversed order (bit r is the
+// digit of weight 2^-(r+1)). Its generator matrix is Pascal's triangle mod 2: digit r is the xor
+// of the index bits c with binomial(c, r) odd, i.e. (Lucas) the bits c whose positions contain
+// r's bits. That "xor over supersets" is five butterfly steps over the bit positions.
+// (Dimension 0 is the van der Corput sequence: in reversed order it is the index itself.)
+VKRT_FN uint sobolDim1Reversed(uint index) {
+    uint x = index;
+    x ^= (x >> 1u) & 0x55555555u;
+    x ^= (x >> 2u) & 0x33333333u;
+    x ^= (x >> 4u) & 0x0f0f0f0fu;
+    x ^= (x >> 8u) & 0x00ff00ffu;
+    x ^= (x >> 16u) & 0x0000ffffu;
+    return x;
+}
+
+// Nested uniform (Owen) scrambling of a value in [0,1) given as 32 digits in reversed order
+// (bit 0 = the first binary digit). Owen scrambling flips each digit by a random bit chosen per
+// prefix of the digits before it; here each step changes bit k by a function of the bits below
+// it and of the key only (adding, multiplying by an odd number, xoring with a multiple by an even
+// number all carry information upwards only), so it is such a flip. The steps and constants are
+// ours (fractional bits of sqrt(2), sqrt(3), sqrt(5), sqrt(7), made even), chosen by measuring the
+// flips' independence (docs/SAMPLING.md); the key enters additively and multiplicatively.
+VKRT_FN uint owenScrambleReversed(uint x, uint key) {
+    x ^= x * 0x6a09e666u;
+    x += key;
+    x *= (key >> 15u) | 1u;
+    x ^= x * 0xbb67ae84u;
+    x += key >> 7u;
+    x ^= x * 0x3c6ef372u;
+    x *= ((key >> 3u) * 2u) | 1u;
+    x ^= x * 0xa54ff53au;
+    return x;
+}
+
+// The Owen-scrambled, shuffled Sobol point number `index` of a pixel in dimension `dim`.
+VKRT_FN vec2 sobolSample2D(uint pixel, uint index, uint dim, uint seed) {
+    // Three keys per (pixel, dimension, seed): the shuffle and one scramble per coordinate.
+    uvec4 keys = pcg4d(uvec4(pixel, 0xfffffffeu, dim, seed));
+    // Owen-scrambling the index (most significant bit first) keeps its high bits constant for
+    // indices below 2^m and permutes the low m bits, so the first 2^m shuffled indices are one
+    // aligned block of 2^m Sobol points (a (0, m, 2)-net) in a per-pixel, per-dimension order.
+    uint shuffled = reverseBits32(owenScrambleReversed(reverseBits32(index), keys.x));
+    uint x = owenScrambleReversed(shuffled, keys.y);
+    uint y = owenScrambleReversed(sobolDim1Reversed(shuffled), keys.z);
+    return vec2(unitFloat(reverseBits32(x)), unitFloat(reverseBits32(y)));
+}
+
 // The 2D sample number `index` of a pixel's `grid.x` samples in dimension `dim`.
 //  random:   independent uniform points.
 //  regular:  stratum centres.
 //  jittered: one uniform point per stratum (Cook 1984; the lecture's n x n jitter).
 // Camera samples take stratum = index; every other dimension shuffles the strata per pixel and
 // dimension, so light and gloss strata are paired with pixel strata at random (Cook's shuffle).
+//  sobol:    Owen-scrambled Sobol points, shuffled per pixel and dimension (sobolSample2D; the
+//            grid is not used: any count works, powers of two stratify best).
 VKRT_FN vec2 sample2D(uint samplerKind, uvec4 grid, uint pixel, uint index, uint dim, uint seed) {
+    if (samplerKind == SAMPLER_SOBOL) return sobolSample2D(pixel, index, dim, seed);
     uvec4 r = pcg4d(uvec4(pixel, index, dim, seed));
     vec2 jitter = vec2(unitFloat(r.x), unitFloat(r.y));
     if (samplerKind == SAMPLER_RANDOM) return jitter;
