@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "../shaders/shared/device_host.h"
+#include "wide_bvh.h"
 
 namespace vkrt::bvh {
 
@@ -36,7 +37,7 @@ struct BuildOptions {
     int maxLeafSize = 8;         // a leaf is forced to split above this many primitives
     float traversalCost = 1.0f;  // SAH cost of visiting an inner node, relative to...
     float intersectionCost = 1.0f;  // ...intersecting one primitive (see docs/BVH.md for the measurement)
-    int maxBottomDepth = 40;     // node levels of a bottom-level tree (deeper SAH splits become median splits)
+    int maxBottomDepth = 36;     // node levels of a bottom-level tree (deeper SAH splits become median splits)
 };
 
 struct GroupRange {
@@ -54,7 +55,7 @@ struct BuildStats {
     std::size_t bytes = 0;        // nodes + primitives + instances as uploaded
     int bottomDepth = 0;          // nodes on the longest root-to-leaf path of any bottom level
     int topDepth = 0;             // the same for the top level; a kernel's traversal stack needs at
-                                  // most bottomDepth + topDepth entries
+                                  // most topDepth + 1 + bottomDepth entries
 };
 
 // The flattened two-level BVH: exactly what is uploaded to the GPU.
@@ -66,6 +67,7 @@ struct SceneBvh {
     std::vector<gpu::Instance> instances;     // same order as the input instances
     std::uint32_t topRoot = 0;                // root node of the top level (over instances)
     BuildStats stats;
+    WideBvh cpu;                              // the same trees, 4-wide, for the CPU traversal only
 };
 
 // Throws std::invalid_argument (one line naming the group/instance, the primitive and the value) on

@@ -15,7 +15,7 @@ void edgeFunctionsDouble(float ax, float ay, float bx, float by, float cx, float
 bool collinear(const glm::vec3& v0, const glm::vec3& v1, const glm::vec3& v2);
 }  // namespace detail
 
-inline bool intersectTriangleInline(const WatertightRay& r, const glm::vec3& v0, const glm::vec3& v1,
+[[gnu::always_inline]] inline bool intersectTriangleInline(const WatertightRay& r, const glm::vec3& v0, const glm::vec3& v1,
                               const glm::vec3& v2, float tmax, PrimHit& hit) {
     const glm::vec3 a = v0 - r.org, b = v1 - r.org, c = v2 - r.org;
     const float ax = a[r.kx] - r.sx * a[r.kz], ay = a[r.ky] - r.sy * a[r.kz];

@@ -12,6 +12,7 @@
 #include "primitives.h"
 #include "sah_builder.h"
 #include "top_level.h"
+#include "wide_collapse.h"
 
 namespace vkrt::bvh {
 
@@ -136,18 +137,20 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
         bvh.instances[i] = makeInstance(instances[i], g.rootNode, i);
         worldBoxes[i] = worldBounds(Aabb{g.lo, g.hi}, instances[i].objectToWorld);
     }
-    // The top level may use what the bottom levels leave of the kernels' stack
-    // (TRAVERSAL_STACK_SIZE), but never less than a balanced tree over the instances needs.
+    // The top level may use what the bottom levels leave of the kernels' stack: a kernel needs
+    // topDepth + 1 + bottomDepth entries (host/vulkan/traversal_stack.cpp), at most
+    // TRAVERSAL_STACK_SIZE; but never less than a balanced tree over the instances needs.
     int balancedDepth = 1;
     while ((std::size_t{1} << balancedDepth) < instances.size()) ++balancedDepth;
     SahParams topParams = params;
     topParams.maxDepth = std::min(kMaxTreeDepth, std::max(balancedDepth,
-        static_cast<int>(gpu::TRAVERSAL_STACK_SIZE) - bvh.stats.bottomDepth));
+        static_cast<int>(gpu::TRAVERSAL_STACK_SIZE) - 1 - bvh.stats.bottomDepth));
     const FlattenResult top = buildTopLevel(worldBoxes, topParams, pool, bvh.nodes);
     bvh.topRoot = top.root;
     bvh.stats.topDepth = top.depth;
     bvh.stats.leafCount += top.leafCount;
 
+    bvh.cpu = collapseToWide(bvh);
     bvh.stats.nodeCount = bvh.nodes.size();
     bvh.stats.bytes = bvh.nodes.size() * sizeof(gpu::BvhNode) + bvh.prims.size() * sizeof(gpu::Primitive) +
                       bvh.instances.size() * sizeof(gpu::Instance);

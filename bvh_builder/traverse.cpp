@@ -1,10 +1,11 @@
 // CPU traversal of the two-level BVH: intersectClosest / intersectAny of bvh.h.
-// Ordered depth-first traversal with a fixed-size stack: at each node both children's boxes are
-// tested (one 64-byte node read), leaves are intersected at once, the nearer inner child is visited
-// first and the farther one pushed with its entry distance, so it is skipped if a closer hit has
-// been found by the time it is popped.
+// Ordered depth-first traversal of the 4-wide copy of the trees (SceneBvh::cpu, wide_bvh.h) with a
+// fixed-size stack: at each node the 4 children's boxes are tested at once, leaves are intersected
+// at once, the nearest inner child is visited next and the others pushed with their entry
+// distance, so they are skipped if a closer hit has been found by the time they are popped.
 #include <immintrin.h>
 
+#include <bit>
 #include <cmath>
 #include <cstring>
 
@@ -16,35 +17,27 @@ namespace vkrt::bvh {
 
 namespace {
 
-// Enough for any tree the builder makes: it bounds every level's depth by kMaxTreeDepth.
-constexpr int kStackSize = 64;
+// Enough for any tree the builder makes: a 4-wide node pushes at most 3 entries, and the trees are
+// at most 64 levels deep (scene_bvh.cpp, kMaxTreeDepth).
+constexpr int kStackSize = 3 * 64 + 1;
 
-// Slab test of both children of a node at once, in SSE (Kay & Kajiya 1986, with each axis's near
-// plane chosen by the sign of the direction as in Williams et al. 2005, so an empty box, stored as
-// lo = +FLT_MAX > hi = -FLT_MAX, always gives tNear > tFar). Direction components of magnitude
-// below 2^-100 are replaced by +-2^-100: the inverse is then finite, so (plane - origin) * inverse
-// is never 0 * inf = NaN, and the slab of an axis-parallel ray is (-huge, +huge) inside the slab
-// and entirely on one side outside it (a conservative answer at worst).
+// Slab test of the 4 children of a wide node at once, in SSE (Kay & Kajiya 1986, with each axis's
+// near plane chosen by the sign of the direction as in Williams et al. 2005, so an empty slot,
+// stored as lo = +FLT_MAX > hi = -FLT_MAX, always gives tNear > tFar). Direction components of
+// magnitude below 2^-100 are replaced by +-2^-100: the inverse is then finite, so
+// (plane - origin) * inverse is never 0 * inf = NaN, and the slab of an axis-parallel ray is
+// (-huge, +huge) inside the slab and entirely on one side outside it (conservative at worst).
 struct NodeRay {
-    __m128 oXXYY, iXXYY, oZZZZ, iZZZZ;
-    __m128 swapXY;  // lanes (x: 0,1; y: 2,3) whose lo/hi planes swap roles: the direction is negative
-    __m128 swapZ;   // the same for the z texel (lo0.z hi0.z lo1.z hi1.z)
+    __m128 o[3], inv[3];
+    int nearRow[3];  // bounds row of each axis's near plane: lo (2a) or hi (2a + 1)
 
     NodeRay(const glm::vec3& origin, const glm::vec3& dir) {
-        float inv[3];
-        for (int i = 0; i < 3; ++i) {
-            const float d = std::abs(dir[i]) < 0x1p-100f ? std::copysign(0x1p-100f, dir[i]) : dir[i];
-            inv[i] = 1.0f / d;
+        for (int a = 0; a < 3; ++a) {
+            const float d = std::abs(dir[a]) < 0x1p-100f ? std::copysign(0x1p-100f, dir[a]) : dir[a];
+            o[a] = _mm_set1_ps(origin[a]);
+            inv[a] = _mm_set1_ps(1.0f / d);
+            nearRow[a] = 2 * a + (d < 0.0f ? 1 : 0);
         }
-        oXXYY = _mm_setr_ps(origin.x, origin.x, origin.y, origin.y);
-        iXXYY = _mm_setr_ps(inv[0], inv[0], inv[1], inv[1]);
-        oZZZZ = _mm_set1_ps(origin.z);
-        iZZZZ = _mm_set1_ps(inv[2]);
-        const float sx = inv[0] < 0.0f ? -1.0f : 0.0f, sy = inv[1] < 0.0f ? -1.0f : 0.0f;
-        const float sz = inv[2] < 0.0f ? -1.0f : 0.0f;
-        // All-ones lanes where a swap is needed (the sign bit is what blendv reads).
-        swapXY = _mm_setr_ps(sx, sx, sy, sy);
-        swapZ = _mm_set1_ps(sz);
     }
 };
 
@@ -53,38 +46,25 @@ struct NodeRay {
 // (Ize 2013, "Robust BVH Ray Traversal", JCGT 2(2)).
 constexpr float kFarScale = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
 
-// Returns a 2-bit mask of the children whose box the ray enters within [0, tmax]; tEntry gets
-// their entry distances.
-inline int slab2(const gpu::BvhNode& node, const NodeRay& r, float tmax, float tEntry[2]) {
-    const float* f = reinterpret_cast<const float*>(&node);
-    const __m128 xy0 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(f), r.oXXYY), r.iXXYY);
-    const __m128 xy1 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(f + 4), r.oXXYY), r.iXXYY);
-    const __m128 z = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(f + 8), r.oZZZZ), r.iZZZZ);
-    // (near, far) per axis: swap lo/hi lanes where the direction is negative.
-    constexpr int kSwapPairs = _MM_SHUFFLE(2, 3, 0, 1);
-    const __m128 s0 = _mm_blendv_ps(xy0, _mm_shuffle_ps(xy0, xy0, kSwapPairs), r.swapXY);  // nx0 fx0 ny0 fy0
-    const __m128 s1 = _mm_blendv_ps(xy1, _mm_shuffle_ps(xy1, xy1, kSwapPairs), r.swapXY);  // nx1 fx1 ny1 fy1
-    const __m128 sz = _mm_blendv_ps(z, _mm_shuffle_ps(z, z, kSwapPairs), r.swapZ);        // nz0 fz0 nz1 fz1
-    const __m128 nearXY = _mm_shuffle_ps(s0, s1, _MM_SHUFFLE(2, 0, 2, 0));  // nx0 ny0 nx1 ny1
-    const __m128 farXY = _mm_shuffle_ps(s0, s1, _MM_SHUFFLE(3, 1, 3, 1));   // fx0 fy0 fx1 fy1
-    const __m128 nearZ = _mm_shuffle_ps(sz, sz, _MM_SHUFFLE(2, 2, 0, 0));   // nz0 nz0 nz1 nz1
-    const __m128 farZ = _mm_shuffle_ps(sz, sz, _MM_SHUFFLE(3, 3, 1, 1));    // fz0 fz0 fz1 fz1
-    __m128 tn = _mm_max_ps(nearXY, nearZ);
-    __m128 tf = _mm_min_ps(farXY, farZ);
-    tn = _mm_max_ps(_mm_max_ps(tn, _mm_shuffle_ps(tn, tn, kSwapPairs)), _mm_setzero_ps());  // n0 n0 n1 n1
-    tf = _mm_min_ps(_mm_min_ps(tf, _mm_shuffle_ps(tf, tf, kSwapPairs)), _mm_set1_ps(tmax));
-    const int mask = _mm_movemask_ps(_mm_cmple_ps(tn, _mm_mul_ps(tf, _mm_set1_ps(kFarScale))));
-    alignas(16) float t[4];
-    _mm_store_ps(t, tn);
-    tEntry[0] = t[0];
-    tEntry[1] = t[2];
-    return (mask & 1) | ((mask >> 1) & 2);
+// 4-bit mask of the children whose box the ray enters within [0, tmax]; tEntry gets the entry
+// distances.
+inline int slab4(const WideNode& node, const NodeRay& r, float tmax, __m128& tEntry) {
+    __m128 tn = _mm_setzero_ps(), tf = _mm_set1_ps(tmax);
+    for (int a = 0; a < 3; ++a) {
+        const __m128 n = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.bounds[r.nearRow[a]]), r.o[a]), r.inv[a]);
+        const __m128 f = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.bounds[r.nearRow[a] ^ 1]), r.o[a]), r.inv[a]);
+        tn = _mm_max_ps(tn, n);
+        tf = _mm_min_ps(tf, f);
+    }
+    tEntry = tn;
+    return _mm_movemask_ps(_mm_cmple_ps(tn, _mm_mul_ps(tf, _mm_set1_ps(kFarScale))));
 }
 
-// Walks one tree from root; leaf(link, count) intersects a leaf's contents, may lower tmax, and
-// returns true to stop the walk (any-hit).
+// Walks one 4-wide tree from root; leaf(link, count) intersects a leaf's contents, may lower tmax,
+// and returns true to stop the walk (any-hit). Hit inner children are visited nearest first; the
+// others wait on the stack with their entry distance and are dropped if a closer hit came first.
 template <class LeafFn>
-void walk(const std::vector<gpu::BvhNode>& nodes, std::uint32_t root, const NodeRay& ray, const float& tmax,
+void walk(const std::vector<WideNode>& nodes, std::uint32_t root, const NodeRay& ray, const float& tmax,
           LeafFn&& leaf) {
     struct Entry {
         std::uint32_t node;
@@ -94,30 +74,33 @@ void walk(const std::vector<gpu::BvhNode>& nodes, std::uint32_t root, const Node
     int sp = 0;
     std::uint32_t current = root;
     for (;;) {
-        const gpu::BvhNode& node = nodes[current];
-        float t[2];
-        const int mask = slab2(node, ray, tmax, t);
-        const bool hit[2] = {(mask & 1) != 0, (mask & 2) != 0};
-        const int first = t[1] < t[0] ? 1 : 0;
-        bool descend[2] = {false, false};
-        for (int i = 0; i < 2; ++i) {
-            const int k = i == 0 ? first : 1 - first;
-            if (!hit[k]) continue;
-            const std::uint32_t count = node.link[2 + k];
-            if (count > 0) {
-                if (leaf(node.link[k], count)) return;
-            } else {
-                descend[k] = node.link[k] != gpu::NODE_NONE;
+        const WideNode& node = nodes[current];
+        __m128 tv;
+        int mask = slab4(node, ray, tmax, tv);
+        alignas(16) float t[4];
+        _mm_store_ps(t, tv);
+        Entry inner[4];
+        int innerCount = 0;
+        while (mask) {
+            const int k = std::countr_zero(static_cast<unsigned>(mask));
+            mask &= mask - 1;
+            if (node.count[k] > 0) {
+                if (leaf(node.link[k], node.count[k])) return;
+            } else if (node.link[k] != gpu::NODE_NONE) {
+                inner[innerCount++] = {node.link[k], t[k]};
             }
         }
-        if (descend[0] && descend[1]) {
-            const int far = 1 - first;
-            stack[sp++] = {node.link[far], t[far]};
-            current = node.link[first];
-            continue;
+        // Nearest first: sort the (at most 4) entries by distance, push all but the nearest.
+        for (int i = 1; i < innerCount; ++i)
+            for (int j = i; j > 0 && inner[j].t < inner[j - 1].t; --j) std::swap(inner[j], inner[j - 1]);
+        int next = -1;
+        for (int i = innerCount - 1; i >= 0; --i) {
+            if (inner[i].t > tmax) continue;  // a leaf of this node already hit closer
+            if (next >= 0) stack[sp++] = inner[next];
+            next = i;
         }
-        if (descend[0] || descend[1]) {
-            current = node.link[descend[0] ? 0 : 1];
+        if (next >= 0) {
+            current = inner[next].node;
             continue;
         }
         for (;;) {
@@ -171,11 +154,11 @@ bool validRay(const Ray& ray) {
 
 template <bool AnyHit>
 bool trace(const SceneBvh& bvh, const Ray& ray, Hit* out) {
-    if (!validRay(ray) || bvh.nodes.empty()) return false;
+    if (!validRay(ray) || bvh.cpu.nodes.empty()) return false;
     float tmax = ray.tmax;
     bool found = false;
     const NodeRay worldRay(ray.origin, ray.dir);
-    walk(bvh.nodes, bvh.topRoot, worldRay, tmax, [&](std::uint32_t instanceIndex, std::uint32_t count) {
+    walk(bvh.cpu.nodes, bvh.cpu.topRoot, worldRay, tmax, [&](std::uint32_t instanceIndex, std::uint32_t count) {
         for (std::uint32_t i = instanceIndex; i < instanceIndex + count; ++i) {
             const gpu::Instance& inst = bvh.instances[i];
             const glm::vec3 o = transformPoint(inst.worldToObject, ray.origin);
@@ -183,7 +166,7 @@ bool trace(const SceneBvh& bvh, const Ray& ray, Hit* out) {
             const NodeRay objectRay(o, d);
             const WatertightRay wr(o, d);
             bool stop = false;
-            walk(bvh.nodes, inst.info.x, objectRay, tmax, [&](std::uint32_t first, std::uint32_t n) {
+            walk(bvh.cpu.nodes, bvh.cpu.groupRoots[inst.info.z], objectRay, tmax, [&](std::uint32_t first, std::uint32_t n) {
                 for (std::uint32_t p = first; p < first + n; ++p) {
                     PrimHit h;
                     if (!intersectPrim(bvh.prims[p], wr, o, d, tmax, h)) continue;

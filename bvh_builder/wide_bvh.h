@@ -1,0 +1,28 @@
+// The CPU traversal's own layout: the same trees as SceneBvh::nodes, collapsed to 4 children per
+// node (each node absorbs the largest inner children of its two-child node until it has 4), with
+// the 4 boxes stored as rows of 4 floats so one SSE instruction per plane tests all children.
+// The GPU layout stays the documented two-child gpu::BvhNode; this one never leaves the CPU.
+// Measured on this machine: see docs/BVH.md (CPU traversal, BVH2 vs. 4-wide).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace vkrt::bvh {
+
+struct alignas(64) WideNode {
+    // rows: lo.x, hi.x, lo.y, hi.y, lo.z, hi.z; column k = child k. An empty slot has
+    // lo = +FLT_MAX, hi = -FLT_MAX, link = NODE_NONE, count = 0.
+    float bounds[6][4];
+    std::uint32_t link[4];   // count == 0: index of an inner WideNode; count > 0: first primitive
+    std::uint32_t count[4];  // (bottom level) or instance (top level), as in gpu::BvhNode
+};
+static_assert(sizeof(WideNode) == 128);
+
+struct WideBvh {
+    std::vector<WideNode> nodes;
+    std::vector<std::uint32_t> groupRoots;  // per geometry group
+    std::uint32_t topRoot = 0;
+};
+
+}  // namespace vkrt::bvh
