@@ -31,35 +31,45 @@ vk::raii::Pipeline makeComputePipeline(const Context& context, const vk::raii::P
 
 namespace {
 
-vk::raii::DescriptorSetLayout makeSetLayout(const Context& context) {
-    using T = vk::DescriptorType;
-    const auto compute = vk::ShaderStageFlagBits::eCompute;
-    const std::array bindings = {
-        vk::DescriptorSetLayoutBinding(gpu::BINDING_NODES, T::eUniformTexelBuffer, 1, compute),
-        vk::DescriptorSetLayoutBinding(gpu::BINDING_PRIMS, T::eUniformTexelBuffer, 1, compute),
-        vk::DescriptorSetLayoutBinding(gpu::BINDING_PRIM_INFO, T::eStorageBuffer, 1, compute),
-        vk::DescriptorSetLayoutBinding(gpu::BINDING_VERTEX_ATTRIBS, T::eStorageBuffer, 1, compute),
-        vk::DescriptorSetLayoutBinding(gpu::BINDING_INSTANCES, T::eStorageBuffer, 1, compute),
-        vk::DescriptorSetLayoutBinding(gpu::BINDING_SHADERS, T::eStorageBuffer, 1, compute),
-        vk::DescriptorSetLayoutBinding(gpu::BINDING_LIGHTS, T::eStorageBuffer, 1, compute),
-        vk::DescriptorSetLayoutBinding(gpu::BINDING_TEXTURES, T::eStorageBuffer, 1, compute),
-        vk::DescriptorSetLayoutBinding(gpu::BINDING_TEXELS, T::eStorageBuffer, 1, compute),
-        vk::DescriptorSetLayoutBinding(gpu::BINDING_FRAME, T::eUniformBuffer, 1, compute),
-        vk::DescriptorSetLayoutBinding(gpu::BINDING_ACCUM, T::eStorageBuffer, 1, compute),
-        vk::DescriptorSetLayoutBinding(gpu::BINDING_STATUS, T::eStorageBuffer, 1, compute),
-    };
-    return vk::raii::DescriptorSetLayout(context.device(), vk::DescriptorSetLayoutCreateInfo({}, bindings));
+vk::DescriptorSetLayoutBinding computeBinding(std::uint32_t binding, vk::DescriptorType type) {
+    return vk::DescriptorSetLayoutBinding(binding, type, 1, vk::ShaderStageFlagBits::eCompute);
 }
 
-vk::raii::PipelineLayout makePipelineLayout(const Context& context, const vk::raii::DescriptorSetLayout& setLayout) {
-    const vk::PushConstantRange push(vk::ShaderStageFlagBits::eCompute, 0, sizeof(gpu::PassParams));
+vk::raii::PipelineLayout makePipelineLayout(const Context& context, const vk::raii::DescriptorSetLayout& setLayout,
+                                            std::uint32_t pushBytes) {
+    const vk::PushConstantRange push(vk::ShaderStageFlagBits::eCompute, 0, pushBytes);
     const vk::DescriptorSetLayout layouts[] = {*setLayout};
     return vk::raii::PipelineLayout(context.device(), vk::PipelineLayoutCreateInfo({}, layouts, push));
 }
 
 }  // namespace
 
-RenderLayout::RenderLayout(const Context& context)
-    : setLayout_(makeSetLayout(context)), pipelineLayout_(makePipelineLayout(context, setLayout_)) {}
+KernelLayout::KernelLayout(const Context& context, std::span<const vk::DescriptorSetLayoutBinding> bindings, std::uint32_t pushBytes)
+    : setLayout_(context.device(), vk::DescriptorSetLayoutCreateInfo({}, bindings)),
+      pipelineLayout_(makePipelineLayout(context, setLayout_, pushBytes)) {}
+
+KernelLayout renderLayout(const Context& context) {
+    using T = vk::DescriptorType;
+    const std::array bindings = {
+        computeBinding(gpu::BINDING_NODES, T::eUniformTexelBuffer),  computeBinding(gpu::BINDING_PRIMS, T::eUniformTexelBuffer),
+        computeBinding(gpu::BINDING_PRIM_INFO, T::eStorageBuffer),   computeBinding(gpu::BINDING_VERTEX_ATTRIBS, T::eStorageBuffer),
+        computeBinding(gpu::BINDING_INSTANCES, T::eStorageBuffer),   computeBinding(gpu::BINDING_SHADERS, T::eStorageBuffer),
+        computeBinding(gpu::BINDING_LIGHTS, T::eStorageBuffer),      computeBinding(gpu::BINDING_TEXTURES, T::eStorageBuffer),
+        computeBinding(gpu::BINDING_TEXELS, T::eStorageBuffer),      computeBinding(gpu::BINDING_FRAME, T::eUniformBuffer),
+        computeBinding(gpu::BINDING_ACCUM, T::eStorageBuffer),       computeBinding(gpu::BINDING_STATUS, T::eStorageBuffer),
+    };
+    return KernelLayout(context, bindings, sizeof(gpu::PassParams));
+}
+
+KernelLayout traceLayout(const Context& context) {
+    using T = vk::DescriptorType;
+    const std::array bindings = {
+        computeBinding(gpu::BINDING_NODES, T::eUniformTexelBuffer), computeBinding(gpu::BINDING_PRIMS, T::eUniformTexelBuffer),
+        computeBinding(gpu::BINDING_INSTANCES, T::eStorageBuffer),  computeBinding(gpu::BINDING_FRAME, T::eUniformBuffer),
+        computeBinding(gpu::BINDING_STATUS, T::eStorageBuffer),     computeBinding(gpu::BINDING_RAYS, T::eStorageBuffer),
+        computeBinding(gpu::BINDING_HITS, T::eStorageBuffer),
+    };
+    return KernelLayout(context, bindings, sizeof(gpu::TraceParams));
+}
 
 }  // namespace vkrt

@@ -25,10 +25,10 @@ vk::raii::Pipeline makeComputePipeline(const Context& context, const vk::raii::P
                                        vk::PipelineLayout layout, vk::ShaderModule module,
                                        std::span<const SpecConstant> constants, vk::PipelineCreateFlags flags = {});
 
-// Set 0 = the twelve bindings of device_host.h; push constants = PassParams.
-class RenderLayout {
+// A kernel's interface: descriptor set 0 and one push-constant range.
+class KernelLayout {
 public:
-    explicit RenderLayout(const Context& context);
+    KernelLayout(const Context& context, std::span<const vk::DescriptorSetLayoutBinding> bindings, std::uint32_t pushBytes);
     vk::DescriptorSetLayout setLayout() const { return *setLayout_; }
     vk::PipelineLayout pipelineLayout() const { return *pipelineLayout_; }
 
@@ -36,5 +36,10 @@ private:
     vk::raii::DescriptorSetLayout setLayout_;
     vk::raii::PipelineLayout pipelineLayout_;
 };
+
+// render.comp: the twelve bindings of device_host.h (BINDING_NODES .. BINDING_STATUS), PassParams.
+KernelLayout renderLayout(const Context& context);
+// trace_rays.comp: nodes, primitives, instances, frame, status, rays, hits; TraceParams.
+KernelLayout traceLayout(const Context& context);
 
 }  // namespace vkrt

@@ -57,13 +57,13 @@ Image resolve(const std::vector<glm::vec4>& sums, int width, int height, int sam
 
 struct GpuRenderer::Impl {
     explicit Impl(const GpuRendererOptions& options)
-        : context(contextOptions(options)), runner(context), transfers(context, runner), layout(context),
+        : context(contextOptions(options)), runner(context), transfers(context, runner), layout(renderLayout(context)),
           kernels(context, layout, loadKernel(kernelSource(options))) {}
 
     Context context;
     CommandRunner runner;
     Transfers transfers;
-    RenderLayout layout;
+    KernelLayout layout;
     KernelCache kernels;
 };
 

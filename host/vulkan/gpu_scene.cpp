@@ -61,7 +61,7 @@ void checkSceneBuffers(const BufferLimits& limits, const std::vector<BufferPlan>
     checkTotalFits(limits, total);
 }
 
-GpuScene::GpuScene(const Context& context, Transfers& transfers, const RenderLayout& layout, const SceneTables& tables,
+GpuScene::GpuScene(const Context& context, Transfers& transfers, const KernelLayout& layout, const SceneTables& tables,
                    const bvh::SceneBvh& bvh, const gpu::FrameParams& frame) {
     const std::uint64_t pixels = static_cast<std::uint64_t>(frame.image.x) * frame.image.y;
     const std::vector<BufferPlan> plan = planSceneBuffers(tables, bvh, pixels);

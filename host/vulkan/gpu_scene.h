@@ -36,7 +36,7 @@ void checkSceneBuffers(const BufferLimits& limits, const std::vector<BufferPlan>
 
 class GpuScene {
 public:
-    GpuScene(const Context& context, Transfers& transfers, const RenderLayout& layout, const SceneTables& tables,
+    GpuScene(const Context& context, Transfers& transfers, const KernelLayout& layout, const SceneTables& tables,
              const bvh::SceneBvh& bvh, const gpu::FrameParams& frame);
 
     vk::DescriptorSet descriptorSet() const { return *set_; }

@@ -4,7 +4,7 @@
 
 namespace vkrt {
 
-KernelCache::KernelCache(const Context& context, const RenderLayout& layout, const std::vector<std::uint32_t>& spirv)
+KernelCache::KernelCache(const Context& context, const KernelLayout& layout, const std::vector<std::uint32_t>& spirv)
     : context_(context), layout_(layout), module_(makeShaderModule(context, spirv)),
       cache_(context.device(), vk::PipelineCacheCreateInfo()) {}
 

@@ -17,7 +17,7 @@ namespace vkrt {
 
 class KernelCache {
 public:
-    KernelCache(const Context& context, const RenderLayout& layout, const std::vector<std::uint32_t>& spirv);
+    KernelCache(const Context& context, const KernelLayout& layout, const std::vector<std::uint32_t>& spirv);
 
     // The pipeline for `features`; *creationSeconds gets the time spent creating it (0 if cached).
     const vk::raii::Pipeline& pipeline(const FeatureSet& features, double* creationSeconds = nullptr);
@@ -25,7 +25,7 @@ public:
 
 private:
     const Context& context_;
-    const RenderLayout& layout_;
+    const KernelLayout& layout_;
     vk::raii::ShaderModule module_;
     vk::raii::PipelineCache cache_;
     std::map<FeatureSet, vk::raii::Pipeline> pipelines_;

@@ -25,6 +25,8 @@ class VulkanTest : public ::testing::Test {
 protected:
     Context& context(const ContextOptions& options = {});
     GpuRenderer& renderer(GpuRendererOptions options = {});
+    // Checks this log too in TearDown (objects the test owns itself must be gone by then).
+    void watch(std::shared_ptr<const ValidationLog> log) { logs_.push_back(std::move(log)); }
     void TearDown() override;
 
 private:

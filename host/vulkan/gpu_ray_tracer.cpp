@@ -1,0 +1,201 @@
+#include "gpu_ray_tracer.h"
+
+#include <algorithm>
+#include <array>
+
+#include "buffer.h"
+#include "commands.h"
+#include "compute_pipeline.h"
+#include "context.h"
+#include "device_limits.h"
+#include "feature_set.h"
+#include "kernel_cache.h"
+#include "kernel_source.h"
+#include "traversal_stack.h"
+#include "vulkan_errors.h"
+
+namespace vkrt {
+
+namespace {
+
+constexpr std::uint32_t kLocalSize = 64;  // trace_rays.comp's local_size_x
+// Rays per submission: one dispatch of at most 65535 workgroups; 1M rays keep a submission
+// well under a second on lavapipe even for incoherent shadow rays (~3 Mrays/s).
+constexpr std::uint32_t kBatchRays = 1u << 20;
+
+// Traversal only: primitive kinds and instancing from the BVH, no shading paths.
+FeatureSet traversalFeatures(const bvh::SceneBvh& bvh) {
+    FeatureSet f;
+    f.triangles = f.spheres = f.boxes = false;
+    for (const gpu::Primitive& p : bvh.prims) {
+        const std::uint32_t kind = p.a.w & gpu::PRIM_KIND_MASK;
+        f.triangles |= kind == gpu::PRIM_KIND_TRIANGLE;
+        f.spheres |= kind == gpu::PRIM_KIND_SPHERE;
+        f.boxes |= kind == gpu::PRIM_KIND_BOX;
+    }
+    f.instances = true;  // always correct; the identity-instance shortcut is the render's business
+    f.areaLights = f.specular = f.reflection = f.gloss = f.dielectric = f.textures = f.coolToWarm = false;
+    f.maxDepth = 0;
+    f.pathStackSize = 1;
+    return f;
+}
+
+template <class T>
+std::span<const std::byte> bytesOf(const std::vector<T>& items) {
+    return std::as_bytes(std::span(items));
+}
+
+constexpr vk::BufferUsageFlags kStorage =
+    vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferDst | vk::BufferUsageFlagBits::eTransferSrc;
+constexpr vk::BufferUsageFlags kTexels = vk::BufferUsageFlagBits::eUniformTexelBuffer | vk::BufferUsageFlagBits::eTransferDst;
+
+template <class T>
+std::uint64_t paddedBytes(const std::vector<T>& items) {
+    return std::max<std::uint64_t>(1, items.size()) * sizeof(T);
+}
+
+}  // namespace
+
+struct GpuRayTracer::Impl {
+    Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& options);
+
+    Context context;
+    CommandRunner runner;
+    Transfers transfers;
+    KernelLayout layout;
+    KernelCache kernels;
+    FeatureSet features;
+    std::uint32_t batch;
+    Buffer nodes, prims, instances, frame, status, rays, hits;
+    vk::raii::BufferView nodeView = nullptr, primView = nullptr;
+    vk::raii::DescriptorPool pool = nullptr;
+    vk::raii::DescriptorSet set = nullptr;
+};
+
+namespace {
+
+ContextOptions contextOptionsOf(const GpuRendererOptions& o) {
+    ContextOptions c;
+    c.gpu = o.gpu;
+    c.validation = o.validation;
+    c.maxBufferBytes = o.maxBufferBytes;
+    c.forceStaging = o.forceStaging;
+    return c;
+}
+
+KernelSource traceSource(const GpuRendererOptions& o) {
+    KernelSource k;
+    k.name = "trace_rays";
+    k.shaderDir = o.shaderDir;
+    k.spirv = o.kernelSpirv;
+    return k;
+}
+
+std::uint32_t batchRays(const Context& context) {
+    const std::uint64_t byRange = context.limits().maxStorageBufferRange / sizeof(gpu::TraceRayInput);
+    const std::uint64_t byDispatch = static_cast<std::uint64_t>(std::min(context.info().maxWorkGroupCountX, 65535u)) * kLocalSize;
+    return static_cast<std::uint32_t>(std::max<std::uint64_t>(kLocalSize, std::min({byRange, byDispatch, std::uint64_t{kBatchRays}})));
+}
+
+// Checks every buffer before any is created (the limits are checked in Impl's initialiser).
+std::uint32_t checkedBatch(const Context& context, const bvh::SceneBvh& bvh) {
+    const std::uint32_t batch = batchRays(context);
+    const BufferLimits& limits = context.limits();
+    checkBufferFits(limits, "BVH nodes", BufferKind::UniformTexel, paddedBytes(bvh.nodes));
+    checkBufferFits(limits, "primitives", BufferKind::UniformTexel, paddedBytes(bvh.prims));
+    checkBufferFits(limits, "instances", BufferKind::Storage, paddedBytes(bvh.instances));
+    checkTotalFits(limits, paddedBytes(bvh.nodes) + paddedBytes(bvh.prims) + paddedBytes(bvh.instances) +
+                               std::uint64_t{batch} * (sizeof(gpu::TraceRayInput) + sizeof(gpu::TraceHitOutput)));
+    checkTraversalStack(bvh, true);
+    return batch;
+}
+
+}  // namespace
+
+GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& options)
+    : context(contextOptionsOf(options)), runner(context), transfers(context, runner), layout(traceLayout(context)),
+      kernels(context, layout, loadKernel(traceSource(options))), features(traversalFeatures(bvh)),
+      batch(checkedBatch(context, bvh)),
+      nodes(context, "BVH nodes", paddedBytes(bvh.nodes), kTexels, MemoryUse::Device),
+      prims(context, "primitives", paddedBytes(bvh.prims), kTexels, MemoryUse::Device),
+      instances(context, "instances", paddedBytes(bvh.instances), kStorage, MemoryUse::Device),
+      frame(context, "frame parameters", sizeof(gpu::FrameParams),
+            vk::BufferUsageFlagBits::eUniformBuffer | vk::BufferUsageFlagBits::eTransferDst, MemoryUse::Device),
+      status(context, "render status", sizeof(gpu::RenderStatus), kStorage, MemoryUse::Shared),
+      rays(context, "rays", std::uint64_t{batch} * sizeof(gpu::TraceRayInput), kStorage, MemoryUse::Device),
+      hits(context, "hits", std::uint64_t{batch} * sizeof(gpu::TraceHitOutput), kStorage, MemoryUse::Device) {
+    transfers.upload(nodes, bytesOf(bvh.nodes));
+    transfers.upload(prims, bytesOf(bvh.prims));
+    transfers.upload(instances, bytesOf(bvh.instances));
+    gpu::FrameParams params{};
+    params.scene.w = bvh.topRoot;  // the only field traversal reads
+    transfers.upload(frame, std::as_bytes(std::span(&params, 1)));
+    transfers.zero(status);
+    nodeView = makeTexelView(context, nodes);
+    primView = makeTexelView(context, prims);
+
+    const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, 2),
+                              vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 4),
+                              vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, 1)};
+    pool = vk::raii::DescriptorPool(context.device(),
+                                    vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, sizes));
+    const vk::DescriptorSetLayout setLayout = layout.setLayout();
+    set = std::move(vk::raii::DescriptorSets(context.device(), vk::DescriptorSetAllocateInfo(*pool, setLayout)).front());
+
+    const vk::BufferView views[] = {*nodeView, *primView};
+    const vk::DescriptorBufferInfo infos[] = {{instances.handle(), 0, VK_WHOLE_SIZE}, {frame.handle(), 0, VK_WHOLE_SIZE},
+                                              {status.handle(), 0, VK_WHOLE_SIZE},    {rays.handle(), 0, VK_WHOLE_SIZE},
+                                              {hits.handle(), 0, VK_WHOLE_SIZE}};
+    using T = vk::DescriptorType;
+    const std::array writes = {
+        vk::WriteDescriptorSet(*set, gpu::BINDING_NODES, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &views[0]),
+        vk::WriteDescriptorSet(*set, gpu::BINDING_PRIMS, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &views[1]),
+        vk::WriteDescriptorSet(*set, gpu::BINDING_INSTANCES, 0, 1, T::eStorageBuffer, nullptr, &infos[0]),
+        vk::WriteDescriptorSet(*set, gpu::BINDING_FRAME, 0, 1, T::eUniformBuffer, nullptr, &infos[1]),
+        vk::WriteDescriptorSet(*set, gpu::BINDING_STATUS, 0, 1, T::eStorageBuffer, nullptr, &infos[2]),
+        vk::WriteDescriptorSet(*set, gpu::BINDING_RAYS, 0, 1, T::eStorageBuffer, nullptr, &infos[3]),
+        vk::WriteDescriptorSet(*set, gpu::BINDING_HITS, 0, 1, T::eStorageBuffer, nullptr, &infos[4]),
+    };
+    context.device().updateDescriptorSets(writes, {});
+}
+
+GpuRayTracer::GpuRayTracer(const bvh::SceneBvh& bvh, const GpuRendererOptions& options)
+    : impl_(std::make_unique<Impl>(bvh, options)) {}
+GpuRayTracer::~GpuRayTracer() = default;
+
+std::uint32_t GpuRayTracer::maxRaysPerSubmission() const { return impl_->batch; }
+std::string GpuRayTracer::deviceName() const { return impl_->context.info().name; }
+std::shared_ptr<const ValidationLog> GpuRayTracer::validationLog() const { return impl_->context.validationLog(); }
+
+std::vector<gpu::TraceHitOutput> GpuRayTracer::trace(std::span<const gpu::TraceRayInput> rays, bool anyHit, GpuTraceStats* statsOut) {
+    Impl& m = *impl_;
+    GpuTraceStats stats;
+    const vk::raii::Pipeline& pipeline = m.kernels.pipeline(m.features, &stats.pipelineSeconds);
+    std::vector<gpu::TraceHitOutput> hits(rays.size());
+    for (std::size_t first = 0; first < rays.size(); first += m.batch) {
+        const auto count = static_cast<std::uint32_t>(std::min<std::size_t>(m.batch, rays.size() - first));
+        m.transfers.upload(m.rays, std::as_bytes(rays.subspan(first, count)));
+        const gpu::TraceParams params{glm::uvec4(count, anyHit ? 1u : 0u, 0u, 0u)};
+        stats.traceSeconds += m.runner.run([&](const vk::raii::CommandBuffer& commands) {
+            computeToComputeBarrier(commands);
+            commands.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline);
+            commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, m.layout.pipelineLayout(), 0, *m.set, {});
+            commands.pushConstants<gpu::TraceParams>(m.layout.pipelineLayout(), vk::ShaderStageFlagBits::eCompute, 0, params);
+            commands.dispatch((count + kLocalSize - 1) / kLocalSize, 1, 1);
+            computeToHostBarrier(commands);
+        });
+        ++stats.submissions;
+        const auto& status = *reinterpret_cast<const gpu::RenderStatus*>(m.status.mapped());
+        if (status.flags.x & gpu::STATUS_LOOP_BUDGET_EXCEEDED)
+            throw GpuKernelError("a ray of batch " + std::to_string(first / m.batch) + " needed more than " +
+                                 std::to_string(gpu::LOOP_BUDGET) + " traversal steps (the kernel's loop budget; lavapipe before Mesa 25 "
+                                 "cuts loops off silently at 65,535 passes)");
+        if (status.flags.x & gpu::STATUS_RAY_STACK_OVERFLOW)
+            throw GpuKernelError("the BVH traversal stack (" + std::to_string(gpu::TRAVERSAL_STACK_SIZE) + " entries) overflowed");
+        m.transfers.download(m.hits, std::as_writable_bytes(std::span(hits).subspan(first, count)));
+    }
+    if (statsOut) *statsOut = stats;
+    return hits;
+}
+
+}  // namespace vkrt

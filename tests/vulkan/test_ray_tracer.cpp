@@ -1,0 +1,127 @@
+// GpuRayTracer (trace_rays.comp) against the CPU traversal of the same BVH: closest hits and
+// shadow (any-hit) queries on a scene with triangles, spheres, boxes and transformed instances.
+#include <random>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+#include "gpu_ray_tracer.h"
+#include "vulkan_errors.h"
+#include "vulkan_test_support.h"
+
+namespace vkrt {
+namespace {
+
+using test::VulkanTest;
+
+bvh::SceneBvh randomScene() {
+    std::mt19937 random(11);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    auto point = [&] { return glm::vec3(u(random), u(random), u(random)); };
+    std::vector<std::vector<bvh::PrimitiveInput>> groups(2);
+    for (int i = 0; i < 300; ++i) {
+        const glm::vec3 c = 4.0f * point();
+        groups[0].push_back({gpu::PRIM_KIND_TRIANGLE, c + 0.3f * point(), c + 0.3f * point(), c + 0.3f * point()});
+    }
+    for (int i = 0; i < 40; ++i) groups[0].push_back({gpu::PRIM_KIND_SPHERE, 4.0f * point(), glm::vec3(0.1f + 0.2f * std::abs(u(random)), 0, 0), {}});
+    for (int i = 0; i < 40; ++i) {
+        const glm::vec3 lo = 4.0f * point();
+        groups[0].push_back({gpu::PRIM_KIND_BOX, lo, lo + glm::vec3(0.3f) + 0.2f * glm::abs(point()), {}});
+    }
+    for (int i = 0; i < 50; ++i) groups[1].push_back({gpu::PRIM_KIND_TRIANGLE, point(), point(), point()});
+    const glm::mat4 a = glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(2.0f, 0.5f, -1.0f)), 0.7f, glm::vec3(0, 1, 1));
+    const glm::mat4 b = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(-2.0f, -1.0f, 1.5f)), glm::vec3(0.5f, 2.0f, 1.0f));
+    return bvh::buildSceneBvh(groups, {{0, glm::mat4(1.0f), gpu::MATERIAL_NONE}, {1, a, gpu::MATERIAL_NONE}, {1, b, gpu::MATERIAL_NONE}});
+}
+
+std::vector<gpu::TraceRayInput> randomRays(std::size_t n, float tMax) {
+    std::mt19937 random(5);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    std::vector<gpu::TraceRayInput> rays(n);
+    for (auto& r : rays) {
+        const glm::vec3 origin = 6.0f * glm::vec3(u(random), u(random), u(random));
+        const glm::vec3 target = 3.0f * glm::vec3(u(random), u(random), u(random));
+        r.origin = glm::vec4(origin, tMax);
+        r.direction = glm::vec4(glm::normalize(target - origin), 0.0f);
+    }
+    return rays;
+}
+
+// The GPU and CPU traversals share the algorithms, not the arithmetic (the device may contract
+// into FMAs), so a ray grazing an edge or a box corner can go either way: at most 0.2% of the
+// rays may disagree on hit/miss or on which primitive is closest, and a shared hit's distance
+// must agree to 1e-5 relative (a few ULP of t, far below any primitive's size).
+TEST_F(VulkanTest, RayTracerMatchesTheCpuTraversal) {
+    const bvh::SceneBvh scene = randomScene();
+    GpuRendererOptions options;
+    options.validation = true;
+    GpuRayTracer tracer(scene, options);
+    watch(tracer.validationLog());
+    const std::vector<gpu::TraceRayInput> rays = randomRays(20000, 1e30f);
+
+    GpuTraceStats stats;
+    const auto closest = tracer.trace(rays, false, &stats);
+    std::cout << "trace: " << rays.size() << " rays in " << stats.traceSeconds << " s, pipeline " << stats.pipelineSeconds << " s\n";
+    int disagreements = 0, hitsSeen = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        bvh::Ray ray{glm::vec3(rays[i].origin), glm::vec3(rays[i].direction), rays[i].origin.w};
+        bvh::Hit hit;
+        const bool cpuHit = bvh::intersectClosest(scene, ray, hit);
+        const bool gpuHit = closest[i].hit.x != 0xffffffffu;
+        hitsSeen += cpuHit;
+        if (cpuHit != gpuHit || (cpuHit && (hit.prim != closest[i].hit.y || hit.instance != closest[i].hit.z))) {
+            ++disagreements;
+            continue;
+        }
+        if (cpuHit) {
+            EXPECT_NEAR(glm::uintBitsToFloat(closest[i].hit.x), hit.t, 1e-5f * hit.t) << "ray " << i;
+        }
+    }
+    EXPECT_GT(hitsSeen, 2000) << "the rays should hit the scene often";
+    EXPECT_LT(hitsSeen, 19000) << "and miss it sometimes";
+    EXPECT_LE(disagreements, static_cast<int>(rays.size()) / 500);
+
+    // Shadow rays with a finite tMax: any hit before it.
+    std::vector<gpu::TraceRayInput> shadows = randomRays(20000, 4.0f);
+    const auto any = tracer.trace(shadows, true);
+    int anyDisagreements = 0, blocked = 0;
+    for (std::size_t i = 0; i < shadows.size(); ++i) {
+        bvh::Ray ray{glm::vec3(shadows[i].origin), glm::vec3(shadows[i].direction), shadows[i].origin.w};
+        const bool cpu = bvh::intersectAny(scene, ray);
+        blocked += cpu;
+        anyDisagreements += cpu != (any[i].hit.x != 0xffffffffu);
+    }
+    EXPECT_GT(blocked, 500);
+    EXPECT_LE(anyDisagreements, static_cast<int>(shadows.size()) / 500);
+}
+
+TEST_F(VulkanTest, RayTracerSplitsLargeRayListsIntoBatches) {
+    const bvh::SceneBvh scene = randomScene();
+    GpuRendererOptions options;
+    options.validation = true;
+    GpuRayTracer tracer(scene, options);
+    watch(tracer.validationLog());
+    const std::vector<gpu::TraceRayInput> rays = randomRays(tracer.maxRaysPerSubmission() + 1000, 1e30f);
+    GpuTraceStats stats;
+    const auto all = tracer.trace(rays, false, &stats);
+    EXPECT_EQ(stats.submissions, 2u);
+    // The second batch's rays come back in place: the same as tracing them alone.
+    const auto tail = tracer.trace(std::span(rays).subspan(tracer.maxRaysPerSubmission()), false);
+    ASSERT_EQ(tail.size(), 1000u);
+    for (std::size_t i = 0; i < tail.size(); ++i) EXPECT_EQ(all[tracer.maxRaysPerSubmission() + i].hit, tail[i].hit);
+}
+
+TEST(GpuRayTracer, RefusesABvhOverTheLimit) {
+    const bvh::SceneBvh scene = randomScene();
+    GpuRendererOptions options;
+    options.maxBufferBytes = scene.nodes.size() * sizeof(gpu::BvhNode) - 16;  // one texel short
+    try {
+        GpuRayTracer tracer(scene, options);
+        FAIL() << "accepted";
+    } catch (const DeviceLimitExceeded& e) {
+        EXPECT_NE(std::string(e.what()).find("BVH nodes"), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace
+}  // namespace vkrt
