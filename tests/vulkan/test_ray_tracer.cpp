@@ -99,8 +99,10 @@ TEST_F(VulkanTest, RayTracerSplitsLargeRayListsIntoBatches) {
     const bvh::SceneBvh scene = randomScene();
     GpuRendererOptions options;
     options.validation = true;
+    options.maxBufferBytes = 4096 * sizeof(gpu::TraceRayInput);  // batches of 4096 rays, to keep the test quick
     GpuRayTracer tracer(scene, options);
     watch(tracer.validationLog());
+    ASSERT_EQ(tracer.maxRaysPerSubmission(), 4096u);
     const std::vector<gpu::TraceRayInput> rays = randomRays(tracer.maxRaysPerSubmission() + 1000, 1e30f);
     GpuTraceStats stats;
     const auto all = tracer.trace(rays, false, &stats);
