@@ -42,8 +42,12 @@ public:
     HugeArray() = default;
     explicit HugeArray(std::size_t count, bool huge = true) : size_(count) {
         if (count == 0) return;
-        const std::size_t bytes = (count * sizeof(T) + kHugePage - 1) / kHugePage * kHugePage;
-        void* p = std::aligned_alloc(bytes >= kHugePage ? kHugePage : alignof(std::max_align_t) * 4, bytes);
+        // Below one huge page, a plain allocation: rounding up would make the kernel zero 2 MiB
+        // for a few KiB.
+        const std::size_t exact = (count * sizeof(T) + 63) / 64 * 64;
+        huge = huge && exact >= kHugePage;
+        const std::size_t bytes = huge ? (exact + kHugePage - 1) / kHugePage * kHugePage : exact;
+        void* p = std::aligned_alloc(huge ? kHugePage : 64, bytes);
         if (!p) throw std::bad_alloc();
         if (huge) adviseHugePages(p, bytes);
         data_.reset(static_cast<T*>(p));

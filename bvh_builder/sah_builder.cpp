@@ -209,17 +209,19 @@ public:
 
 private:
     // Splits a range into two children, or returns false when it becomes a leaf.
-    bool split(const Range& r, Range& left, Range& right);
+    // scratch: room for the range's references (subtree jobs), or null (the top phase).
+    bool split(const Range& r, PrimRef* scratch, Range& left, Range& right);
     bool splitSmall(const Range& r, Range& left, Range& right);
     // For ranges above kSweepSize: what to do given the range's bins, and doing it.
     Decision decideLarge(const Range& r, const Bins& bins, const BinMapper& mapper) const;
-    void apply(const Range& r, const Decision& d, const BinMapper& mapper, Range& left, Range& right);
-    void partitionByBin(const Range& r, const BinMapper::Axis& map, int plane, Range& left, Range& right);
+    void apply(const Range& r, const Decision& d, const BinMapper& mapper, PrimRef* scratch, Range& left, Range& right);
+    void partitionByBin(const Range& r, const BinMapper::Axis& map, int plane, PrimRef* scratch, Range& left,
+                        Range& right);
     void splitMedian(const Range& r, Range& left, Range& right);
     void childRanges(const Range& r, std::uint32_t mid, Range& left, Range& right);
     bool keepsDepthBound(const Range& r, std::uint32_t leftSize) const;
     // Builds the subtree of r into nodes[next...]; returns its root.
-    std::uint32_t buildSubtree(const Range& r, BuildNode* nodes, std::uint32_t& next);
+    std::uint32_t buildSubtree(const Range& r, BuildNode* nodes, std::uint32_t& next, PrimRef* scratch);
 
     std::span<PrimRef> refs_;
     const SahParams& p_;
@@ -234,7 +236,28 @@ void Builder::childRanges(const Range& r, std::uint32_t mid, Range& left, Range&
     right = {mid, r.end, rb.bounds, rb.centroids, r.level + 1};
 }
 
-void Builder::partitionByBin(const Range& r, const BinMapper::Axis& map, int plane, Range& left, Range& right) {
+// Two partitions, chosen by who calls (never by the thread count): subtree jobs use a branch-free
+// stable partition through a scratch buffer (whether a reference goes left is a coin flip for the
+// branch predictor; writing it to both sides and advancing one costs no misprediction); the top
+// phase, whose ranges have no scratch, partitions in place (Hoare).
+void Builder::partitionByBin(const Range& r, const BinMapper::Axis& map, int plane, PrimRef* scratch, Range& left,
+                             Range& right) {
+    if (scratch) {
+        const std::uint32_t n = r.size();
+        PrimRef* base = refs_.data() + r.begin;
+        std::uint32_t l = 0, rr = n;  // left refs fill scratch[0, l), right refs scratch[rr, n) backwards
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const bool goesLeft = map(base[i]) < plane;
+            scratch[l] = base[i];
+            scratch[rr - 1] = base[i];
+            l += goesLeft ? 1 : 0;
+            rr -= goesLeft ? 0 : 1;
+        }
+        std::copy(scratch, scratch + l, base);
+        std::reverse_copy(scratch + l, scratch + n, base + l);  // keep the right side's order too
+        childRanges(r, r.begin + l, left, right);
+        return;
+    }
     Bounds2 l, rb;
     PrimRef* lo = refs_.data() + r.begin;
     PrimRef* hi = refs_.data() + r.end;
@@ -296,12 +319,14 @@ bool Builder::splitSmall(const Range& r, Range& left, Range& right) {
     Split best;
     for (int a = 0; a < 3 && nodeArea > 0.0f; ++a) {
         if (!(lane(r.centroids.hi, a) > lane(r.centroids.lo, a))) continue;
-        for (std::uint32_t i = 0; i < n; ++i) order[i] = key(lane(base[i].centroid2(), a), i);
-        for (std::uint32_t i = 1; i < n; ++i) {  // insertion sort: n <= 16
-            const std::uint64_t k = order[i];
-            std::uint32_t j = i;
-            for (; j > 0 && order[j - 1] > k; --j) order[j] = order[j - 1];
-            order[j] = k;
+        std::array<std::uint64_t, kSweepSize> keys{};
+        for (std::uint32_t i = 0; i < n; ++i) keys[i] = key(lane(base[i].centroid2(), a), i);
+        // Sorted by rank (the keys are distinct): n^2 <= 256 branch-free comparisons beat an
+        // insertion sort's unpredictable branches.
+        for (std::uint32_t i = 0; i < n; ++i) {
+            std::uint32_t rank = 0;
+            for (std::uint32_t j = 0; j < kSweepSize; ++j) rank += (j < n && keys[j] < keys[i]) ? 1u : 0u;
+            order[rank] = keys[i];
         }
         Box4 acc;
         for (std::uint32_t j = n - 1; j > 0; --j) {
@@ -344,16 +369,17 @@ Decision Builder::decideLarge(const Range& r, const Bins& bins, const BinMapper&
     return {Decision::Binned, s.axis, s.plane};
 }
 
-void Builder::apply(const Range& r, const Decision& d, const BinMapper& mapper, Range& left, Range& right) {
+void Builder::apply(const Range& r, const Decision& d, const BinMapper& mapper, PrimRef* scratch, Range& left,
+                    Range& right) {
     if (d.kind == Decision::Median) {
         splitMedian(r, left, right);
         return;
     }
-    partitionByBin(r, mapper.axis(d.axis), d.plane, left, right);
+    partitionByBin(r, mapper.axis(d.axis), d.plane, scratch, left, right);
     if (left.size() == 0 || right.size() == 0 || !keepsDepthBound(r, left.size())) splitMedian(r, left, right);
 }
 
-bool Builder::split(const Range& r, Range& left, Range& right) {
+bool Builder::split(const Range& r, PrimRef* scratch, Range& left, Range& right) {
     const std::uint32_t n = r.size();
     const auto maxLeaf = static_cast<std::uint32_t>(p_.maxLeafSize);
     if (n <= 1) return false;
@@ -364,11 +390,11 @@ bool Builder::split(const Range& r, Range& left, Range& right) {
     if (mapper.anyUsable()) binRefs(refs_.data() + r.begin, n, mapper, bins);
     const Decision d = decideLarge(r, bins, mapper);
     if (d.kind == Decision::Leaf) return false;
-    apply(r, d, mapper, left, right);
+    apply(r, d, mapper, scratch, left, right);
     return true;
 }
 
-std::uint32_t Builder::buildSubtree(const Range& r, BuildNode* nodes, std::uint32_t& next) {
+std::uint32_t Builder::buildSubtree(const Range& r, BuildNode* nodes, std::uint32_t& next, PrimRef* scratch) {
     const std::uint32_t index = next++;
     BuildNode& node = nodes[index];
     node.lo = r.bounds.toAabb().lo;
@@ -377,9 +403,9 @@ std::uint32_t Builder::buildSubtree(const Range& r, BuildNode* nodes, std::uint3
     node.count = r.size();
     node.left = node.right = 0;
     Range left, right;
-    if (!split(r, left, right)) return index;
-    const std::uint32_t l = buildSubtree(left, nodes, next);
-    const std::uint32_t rr = buildSubtree(right, nodes, next);
+    if (!split(r, scratch, left, right)) return index;
+    const std::uint32_t l = buildSubtree(left, nodes, next, scratch);
+    const std::uint32_t rr = buildSubtree(right, nodes, next, scratch);
     nodes[index].left = l;
     nodes[index].right = rr;
     nodes[index].count = 0;
@@ -445,7 +471,7 @@ BuildTree Builder::run() {
         }
         std::vector<std::pair<Range, Range>> children(big.size());
         pool_.parallelFor(big.size(), [&](std::size_t i) {
-            apply(big[i].range, decisions[i], mappers[i], children[i].first, children[i].second);
+            apply(big[i].range, decisions[i], mappers[i], nullptr, children[i].first, children[i].second);
         });
         for (std::size_t i = 0; i < big.size(); ++i) {
             const auto index = static_cast<std::uint32_t>(top.size());
@@ -473,7 +499,8 @@ BuildTree Builder::run() {
     pool_.parallelFor(jobs.size(), [&](std::size_t k) {
         Job& job = jobs[order[k]];
         std::uint32_t next = job.offset;
-        job.root = buildSubtree(job.range, tree.nodes.get(), next);
+        const HugeArray<PrimRef> scratch(job.range.size());
+        job.root = buildSubtree(job.range, tree.nodes.get(), next, scratch.get());
     });
     tree.root = 0;
     for (const Job& job : jobs) {
