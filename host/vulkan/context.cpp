@@ -28,11 +28,18 @@ Context::Context(const ContextOptions& options) : log_(makeLog(options.validatio
     auto physical = instance_.physicalDevices();
     std::vector<DeviceInfo> devices;
     for (std::size_t i = 0; i < physical.size(); ++i) devices.push_back(describePhysicalDevice(physical[i], static_cast<int>(i)));
-    const int chosen = chooseDevice(devices, options.gpu);
-    physical_ = std::move(physical[chosen]);
-    info_ = devices[chosen];
-    queueFamily_ = static_cast<std::uint32_t>(computeQueueFamily(physical_));
-    memory_ = physical_.getMemoryProperties();
+
+    // A driver may list a device and then fail to open it; without --gpu the next one is tried.
+    std::string failures;
+    for (const int candidate : deviceCandidates(devices, options.gpu)) {
+        try {
+            openDevice(std::move(physical[candidate]), devices[candidate]);
+            break;
+        } catch (const vk::SystemError& e) {
+            failures += " " + devices[candidate].name + ": " + e.what() + ";";
+        }
+    }
+    if (!*device_) throw VulkanUnavailable("cannot create a Vulkan device:" + failures);
 
     limits_ = limitsOf(info_);
     std::optional<std::uint64_t> cap = options.maxBufferBytes;
@@ -46,16 +53,18 @@ Context::Context(const ContextOptions& options) : log_(makeLog(options.validatio
     // The "cpu" device type with mappable device-local memory is lavapipe's case; integrated GPUs
     // would also qualify, but staying with staging there keeps one well-tested path per kind.
     mapsDeviceMemory_ = !options.forceStaging && info_.type == "cpu" && deviceLocalIsMappable(memory_);
+}
 
+void Context::openDevice(vk::raii::PhysicalDevice physical, const DeviceInfo& info) {
+    const auto family = static_cast<std::uint32_t>(computeQueueFamily(physical));
     const float priority = 1.0f;
-    vk::DeviceQueueCreateInfo queueInfo({}, queueFamily_, 1, &priority);
-    vk::DeviceCreateInfo deviceInfo({}, queueInfo);
-    try {
-        device_ = vk::raii::Device(physical_, deviceInfo);
-    } catch (const vk::SystemError& e) {
-        throw VulkanUnavailable("cannot create a Vulkan device on " + info_.name + ": " + e.what());
-    }
-    queue_ = vk::raii::Queue(device_, queueFamily_, 0);
+    vk::DeviceQueueCreateInfo queueInfo({}, family, 1, &priority);
+    device_ = vk::raii::Device(physical, vk::DeviceCreateInfo({}, queueInfo));  // unchanged if this throws
+    queue_ = vk::raii::Queue(device_, family, 0);
+    physical_ = std::move(physical);
+    info_ = info;
+    queueFamily_ = family;
+    memory_ = physical_.getMemoryProperties();
 }
 
 Context::~Context() {

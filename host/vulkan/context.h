@@ -50,6 +50,8 @@ public:
     std::shared_ptr<const ValidationLog> validationLog() const { return log_; }
 
 private:
+    void openDevice(vk::raii::PhysicalDevice physical, const DeviceInfo& info);
+
     std::shared_ptr<ValidationLog> log_;  // declared first: outlives the messenger
     VulkanInstance instance_;
     vk::raii::PhysicalDevice physical_ = nullptr;

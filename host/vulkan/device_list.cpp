@@ -1,5 +1,6 @@
 #include "device_list.h"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -85,6 +86,16 @@ int chooseDevice(const std::vector<DeviceInfo>& devices, int requested) {
         throw VulkanUnavailable(why.str());
     }
     return best;
+}
+
+std::vector<int> deviceCandidates(const std::vector<DeviceInfo>& devices, int requested) {
+    const int first = chooseDevice(devices, requested);  // validates `requested`, throws if nothing is usable
+    if (requested >= 0) return {first};
+    std::vector<int> order;
+    for (std::size_t i = 0; i < devices.size(); ++i)
+        if (devices[i].usable) order.push_back(static_cast<int>(i));
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return typeRank(devices[a].type) < typeRank(devices[b].type); });
+    return order;
 }
 
 }  // namespace vkrt

@@ -39,4 +39,8 @@ std::string apiVersionString(std::uint32_t version);
 // VulkanUnavailable when nothing is usable, std::invalid_argument for a bad `requested`.
 int chooseDevice(const std::vector<DeviceInfo>& devices, int requested);
 
+// Every usable device in that order of preference (only `requested` when it is >= 0): the
+// candidates to try when creating a device fails on the first choice.
+std::vector<int> deviceCandidates(const std::vector<DeviceInfo>& devices, int requested);
+
 }  // namespace vkrt

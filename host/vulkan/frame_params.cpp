@@ -33,6 +33,12 @@ gpu::FrameParams makeFrameParams(const Scene& scene, const SceneAccel& accel, co
     require(options.lightSamples >= 1, "light samples must be at least 1, not " + std::to_string(options.lightSamples));
     require(options.glossSamples >= 1, "gloss samples must be at least 1, not " + std::to_string(options.glossSamples));
     require(options.maxDepth >= 0, "max depth must not be negative, not " + std::to_string(options.maxDepth));
+    // Pixel indices and the light/gloss sample indices s*k + j are 32-bit on the device.
+    const auto fits32 = [](long long a, long long b) { return a * b <= 0xffffffffLL; };
+    require(fits32(options.width, options.height) && fits32(options.samplesPerPixel, options.lightSamples) &&
+                fits32(options.samplesPerPixel, options.glossSamples),
+            "image size or sample counts exceed 2^32");
+    require(!scene.cameras.empty(), scene.path + " has no camera");
     require(options.camera >= 0 && options.camera < static_cast<int>(scene.cameras.size()),
             "camera " + std::to_string(options.camera) + " does not exist (the scene has " + std::to_string(scene.cameras.size()) +
                 " camera(s))");

@@ -46,6 +46,30 @@ TEST(DeviceChoice, OverrideWinsWhenUsable) {
     }
 }
 
+TEST(DeviceChoice, CandidatesInOrderOfPreference) {
+    const std::vector<DeviceInfo> devices = {fakeDevice(0, "cpu", true), fakeDevice(1, "integrated", true),
+                                             fakeDevice(2, "discrete", false), fakeDevice(3, "discrete", true),
+                                             fakeDevice(4, "cpu", true)};
+    EXPECT_EQ(deviceCandidates(devices, -1), (std::vector<int>{3, 1, 0, 4}));
+    EXPECT_EQ(deviceCandidates(devices, 4), (std::vector<int>{4}));  // --gpu: that one or nothing
+    EXPECT_THROW(deviceCandidates(devices, 2), std::invalid_argument);
+}
+
+// What the CLI falls back to the CPU on: a loader that finds no driver.
+TEST(Context, NoDriverIsVulkanUnavailable) {
+    ::setenv("VK_DRIVER_FILES", "/nonexistent/vkrt_icd.json", 1);
+    ::setenv("VK_ICD_FILENAMES", "/nonexistent/vkrt_icd.json", 1);
+    try {
+        Context c;
+        ADD_FAILURE() << "a device without a driver: " << c.info().name;
+    } catch (const VulkanUnavailable& e) {
+        std::cout << "VulkanUnavailable: " << e.what() << "\n";
+    }
+    ::unsetenv("VK_DRIVER_FILES");
+    ::unsetenv("VK_ICD_FILENAMES");
+    EXPECT_NO_THROW(Context());  // and the driver is found again
+}
+
 TEST(DeviceChoice, NothingUsableIsVulkanUnavailable) {
     EXPECT_THROW(chooseDevice({}, -1), VulkanUnavailable);
     EXPECT_THROW(chooseDevice({fakeDevice(0, "discrete", false)}, -1), VulkanUnavailable);
