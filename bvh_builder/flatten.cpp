@@ -21,12 +21,12 @@ struct Flattener {
         const auto index = static_cast<std::uint32_t>(out.size());
         out.emplace_back();
         const BuildNode& node = tree[buildIndex];
-        const std::uint32_t children[2] = {node.left, node.right};
+        const std::uint32_t children[2] = {node.left(), node.right()};
         for (int k = 0; k < 2; ++k) {
             const BuildNode& child = tree[children[k]];
             if (child.leaf()) {
                 ++result.leafCount;
-                setChild(out[index], k, child.box(), leafLink(child), child.count);
+                setChild(out[index], k, child.box(), leafLink(child), child.count());
             } else {
                 const std::uint32_t c = emit(children[k], depth + 1);
                 setChild(out[index], k, child.box(), c, 0);
@@ -49,7 +49,7 @@ FlattenResult flatten(const BuildTree& tree, const std::function<std::uint32_t(c
         setEmptyChild(node, 1);
         if (!tree.empty()) {
             const BuildNode& leaf = tree[tree.root];
-            setChild(node, 0, leaf.box(), leafLink(leaf), leaf.count);
+            setChild(node, 0, leaf.box(), leafLink(leaf), leaf.count());
             result.leafCount = 1;
         }
         out.push_back(node);

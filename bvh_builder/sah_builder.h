@@ -37,16 +37,29 @@ struct SahParams {
     int maxDepth = 64;  // inner-node levels, root = 1
 };
 
-// count > 0: a leaf over refs[first, first + count); count == 0: inner node with two children.
-// No member initialisers: the node array is allocated uninitialised (only used slots are written).
+// A leaf over refs[first, first + count), or an inner node with two children. 32 bytes, and no
+// member initialisers: the node array is allocated uninitialised (only used slots are written).
 struct BuildNode {
-    Aabb box() const { return {lo, hi}; }
-    bool leaf() const { return count > 0; }
+    static constexpr std::uint32_t kLeafBit = 0x80000000u;
 
     glm::vec3 lo, hi;
-    std::uint32_t left, right;
-    std::uint32_t first, count;
+    std::uint32_t a;  // inner: left child; leaf: first reference
+    std::uint32_t b;  // inner: right child; leaf: kLeafBit | count
+
+    static BuildNode leafNode(const Aabb& box, std::uint32_t first, std::uint32_t count) {
+        return {box.lo, box.hi, first, kLeafBit | count};
+    }
+    static BuildNode innerNode(const Aabb& box, std::uint32_t left, std::uint32_t right) {
+        return {box.lo, box.hi, left, right};
+    }
+    Aabb box() const { return {lo, hi}; }
+    bool leaf() const { return (b & kLeafBit) != 0; }
+    std::uint32_t first() const { return a; }
+    std::uint32_t count() const { return leaf() ? b & ~kLeafBit : 0; }
+    std::uint32_t left() const { return a; }
+    std::uint32_t right() const { return b; }
 };
+static_assert(sizeof(BuildNode) == 32);
 
 // The nodes of a tree, reachable from root. Subtrees built in parallel each own a slice of the
 // array sized for the worst case (2n - 1 nodes for n references), so some slots stay unused.

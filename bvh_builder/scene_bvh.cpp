@@ -120,7 +120,7 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
             }
         });
         const FlattenResult flat =
-            flatten(b.tree, [&](const BuildNode& leaf) { return firstPrim + leaf.first; }, bvh.nodes);
+            flatten(b.tree, [&](const BuildNode& leaf) { return firstPrim + leaf.first(); }, bvh.nodes);
         range.rootNode = flat.root;
         bvh.stats.leafCount += flat.leafCount;
         bvh.stats.bottomDepth = std::max(bvh.stats.bottomDepth, flat.depth);

@@ -7,7 +7,7 @@ namespace vkrt::bvh {
 
 ThreadPool::ThreadPool(int threads) {
     if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    for (int i = 1; i < threads; ++i) workers_.emplace_back([this] { workerLoop(); });
+    for (int i = 1; i < threads; ++i) workers_.emplace_back([this, i] { workerLoop(i); });
 }
 
 ThreadPool::~ThreadPool() {
@@ -21,7 +21,7 @@ ThreadPool::~ThreadPool() {
 
 // Claims and runs items of the current job until none are left. Items are coarse (a chunk of
 // primitives, a subtree, a group), so a mutex per claim costs nothing measurable.
-void ThreadPool::drain() {
+void ThreadPool::drain(int worker) {
     std::unique_lock lock(mutex_);
     while (job_ && next_ < jobCount_) {
         const std::size_t i = next_++;
@@ -29,7 +29,7 @@ void ThreadPool::drain() {
         lock.unlock();
         std::exception_ptr error;
         try {
-            (*fn)(i);
+            (*fn)(i, worker);
         } catch (...) {
             error = std::current_exception();
         }
@@ -39,7 +39,7 @@ void ThreadPool::drain() {
     }
 }
 
-void ThreadPool::workerLoop() {
+void ThreadPool::workerLoop(int worker) {
     std::size_t seen = 0;
     for (;;) {
         {
@@ -48,17 +48,21 @@ void ThreadPool::workerLoop() {
             if (stopping_) return;
             seen = generation_;
         }
-        drain();
+        drain(worker);
     }
 }
 
 void ThreadPool::parallelFor(std::size_t count, const std::function<void(std::size_t)>& fn) {
+    parallelFor(count, std::function<void(std::size_t, int)>([&fn](std::size_t i, int) { fn(i); }));
+}
+
+void ThreadPool::parallelFor(std::size_t count, const std::function<void(std::size_t, int)>& fn) {
     if (count == 0) return;
     if (workers_.empty() || count == 1) {
         std::exception_ptr error;
         for (std::size_t i = 0; i < count; ++i) {
             try {
-                fn(i);
+                fn(i, 0);
             } catch (...) {
                 if (!error) error = std::current_exception();
             }
@@ -76,7 +80,7 @@ void ThreadPool::parallelFor(std::size_t count, const std::function<void(std::si
         ++generation_;
     }
     wake_.notify_all();
-    drain();
+    drain(0);
     std::unique_lock lock(mutex_);
     done_.wait(lock, [&] { return finished_ == jobCount_; });
     job_ = nullptr;

@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "huge_pages.h"
 #include "node_layout.h"
 
 namespace vkrt::bvh {
@@ -75,7 +76,7 @@ private:
 WideBvh collapseToWide(const SceneBvh& bvh) {
     WideBvh wide;
     // A 4-wide tree has about a third of the two-child tree's nodes.
-    wide.nodes.reserve(bvh.nodes.size() / 2 + 16);
+    reserveHuge(wide.nodes, bvh.nodes.size() / 2 + 16);
     Collapser c(bvh.nodes, wide);
     for (const GroupRange& g : bvh.groups) wide.groupRoots.push_back(c.convert(g.rootNode));
     wide.topRoot = c.convert(bvh.topRoot);
