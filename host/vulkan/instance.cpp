@@ -98,6 +98,8 @@ VulkanInstance::VulkanInstance(ValidationLog* log) : context_(loadVulkan()) {
     try {
         instance_ = vk::raii::Instance(context_, info);
         if (log) messenger_ = vk::raii::DebugUtilsMessengerEXT(instance_, messengerInfo(log));
+    } catch (const vk::IncompatibleDriverError&) {
+        throw VulkanUnavailable("no Vulkan 1.2 driver is installed (the loader found no ICD that accepts a Vulkan 1.2 instance)");
     } catch (const vk::SystemError& e) {
         throw VulkanUnavailable(std::string("cannot create a Vulkan 1.2 instance: ") + e.what());
     }
