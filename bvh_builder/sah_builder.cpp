@@ -434,7 +434,7 @@ BuildTree Builder::run() {
         Range range;
         std::uint32_t parent;  // top node index, or UINT32_MAX for the root
         bool rightSide;
-        std::uint32_t offset = 0, root = 0;
+        std::uint32_t offset = 0, root = 0, inner = 0;
     };
     std::vector<Job> jobs;
     std::vector<BuildNode> top;
@@ -501,11 +501,15 @@ BuildTree Builder::run() {
         std::uint32_t next = job.offset;
         if (!scratch[worker]) scratch[worker] = HugeArray<PrimRef>(largestJob, false);
         job.root = buildSubtree(job.range, tree.nodes.get(), next, scratch[worker].get());
+        job.inner = (next - job.offset - 1) / 2;  // a full binary tree: inner = leaves - 1
     }));
     tree.root = 0;
+    tree.topCount = static_cast<std::uint32_t>(top.size());
     for (const Job& job : jobs) {
         if (job.parent == UINT32_MAX) tree.root = job.root;
         else (job.rightSide ? tree.nodes[job.parent].b : tree.nodes[job.parent].a) = job.root;
+        tree.subtreeRoots.push_back(job.root);
+        tree.subtreeInnerNodes.push_back(job.inner);
     }
     return tree;
 }
@@ -523,47 +527,6 @@ BuildTree buildSah(std::span<PrimRef> refs, const SahParams& params, ThreadPool&
     if (!(params.traversalCost >= 0.0f) || !(params.intersectionCost > 0.0f))
         throw std::invalid_argument("bvh: SAH costs must be traversal >= 0 and intersection > 0");
     return Builder(refs, params, pool).run();
-}
-
-double sahCost(const BuildTree& tree, const SahParams& params) {
-    if (tree.empty()) return 0.0;
-    const double rootArea = tree[tree.root].box().halfArea();
-    if (rootArea <= 0.0) return params.intersectionCost * tree[tree.root].count();
-    // Summed in depth-first order from the root (not storage order, which depends on which
-    // thread built what), so the figure is identical for any thread count.
-    double cost = 0.0;
-    std::vector<std::uint32_t> stack{tree.root};
-    while (!stack.empty()) {
-        const BuildNode& node = tree[stack.back()];
-        stack.pop_back();
-        const double a = node.box().halfArea() / rootArea;
-        if (node.leaf()) {
-            cost += params.intersectionCost * node.count() * a;
-        } else {
-            cost += params.traversalCost * a;
-            stack.push_back(node.right());
-            stack.push_back(node.left());
-        }
-    }
-    return cost;
-}
-
-int innerDepth(const BuildTree& tree) {
-    if (tree.empty()) return 0;
-    int deepest = 0;
-    std::vector<std::pair<std::uint32_t, int>> stack{{tree.root, 0}};
-    while (!stack.empty()) {
-        auto [i, d] = stack.back();
-        stack.pop_back();
-        const BuildNode& node = tree[i];
-        if (node.leaf()) {
-            deepest = std::max(deepest, d);
-            continue;
-        }
-        stack.push_back({node.left(), d + 1});
-        stack.push_back({node.right(), d + 1});
-    }
-    return deepest;
 }
 
 }  // namespace vkrt::bvh

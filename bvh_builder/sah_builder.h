@@ -66,6 +66,12 @@ static_assert(sizeof(BuildNode) == 32);
 struct BuildTree {
     HugeArray<BuildNode> nodes;  // empty when there were no primitives
     std::uint32_t root = 0;
+    // Nodes [0, topCount) were made by the top phase; every other node belongs to exactly one of
+    // the subtrees rooted at subtreeRoots (built as separate jobs, in this order), which later
+    // passes can also process in parallel.
+    std::uint32_t topCount = 0;
+    std::vector<std::uint32_t> subtreeRoots;
+    std::vector<std::uint32_t> subtreeInnerNodes;  // inner nodes of each of those subtrees
 
     bool empty() const { return !nodes; }
     const BuildNode& operator[](std::uint32_t i) const { return nodes[i]; }
@@ -74,11 +80,5 @@ struct BuildTree {
 // Reorders refs so that every leaf's references are contiguous, in depth-first order of the tree.
 BuildTree buildSah(std::span<PrimRef> refs, const SahParams& params, ThreadPool& pool);
 
-// The SAH cost of a tree relative to its root box: sum over inner nodes of C_trav * A/A_root plus
-// sum over leaves of C_isect * N * A/A_root.
-double sahCost(const BuildTree& tree, const SahParams& params);
-
-// Inner-node levels on the longest root-to-leaf path (a tree that is one leaf has depth 0).
-int innerDepth(const BuildTree& tree);
 
 }  // namespace vkrt::bvh

@@ -100,6 +100,8 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
     // have at least one node.
     reserveHuge(bvh.nodes, totalPrims + 2 * groups.size() + instances.size() + 1);
     bvh.groups.resize(groups.size());
+    // Per group: the blocks flattened in parallel (roots, sizes), collapsed in parallel below.
+    std::vector<std::pair<std::vector<std::uint32_t>, std::vector<std::uint32_t>>> groupBlocks(groups.size());
     std::uint32_t firstPrim = 0;
     for (std::size_t g = 0; g < groups.size(); ++g) {
         GroupBuild& b = built[g];
@@ -120,11 +122,12 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
             }
         });
         const FlattenResult flat =
-            flatten(b.tree, [&](const BuildNode& leaf) { return firstPrim + leaf.first(); }, bvh.nodes);
+            flatten(b.tree, [&](const BuildNode& leaf) { return firstPrim + leaf.first(); }, params, pool, bvh.nodes);
         range.rootNode = flat.root;
         bvh.stats.leafCount += flat.leafCount;
         bvh.stats.bottomDepth = std::max(bvh.stats.bottomDepth, flat.depth);
-        bvh.stats.sahCost += sahCost(b.tree, params);
+        bvh.stats.sahCost += flat.sahCost;
+        groupBlocks[g] = {flat.blockRoots, flat.blockSizes};
         firstPrim += range.primCount;
         b = GroupBuild{};  // release the references early
     }
@@ -150,7 +153,12 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
     bvh.stats.topDepth = top.depth;
     bvh.stats.leafCount += top.leafCount;
 
-    bvh.cpu = collapseToWide(bvh);
+    // The CPU's 4-wide copy: about a third of the two-child nodes.
+    reserveHuge(bvh.cpu.nodes, bvh.nodes.size() / 2 + groups.size() + 1);
+    for (std::size_t g = 0; g < groups.size(); ++g)
+        bvh.cpu.groupRoots.push_back(collapseTree(bvh.nodes, bvh.groups[g].rootNode, groupBlocks[g].first,
+                                                  groupBlocks[g].second, pool, bvh.cpu.nodes));
+    bvh.cpu.topRoot = collapseTree(bvh.nodes, bvh.topRoot, top.blockRoots, top.blockSizes, pool, bvh.cpu.nodes);
     bvh.stats.nodeCount = bvh.nodes.size();
     bvh.stats.bytes = bvh.nodes.size() * sizeof(gpu::BvhNode) + bvh.prims.size() * sizeof(gpu::Primitive) +
                       bvh.instances.size() * sizeof(gpu::Instance);

@@ -81,7 +81,7 @@ FlattenResult buildTopLevel(const std::vector<Aabb>& worldBoxes, const SahParams
     SahParams top = params;
     top.maxLeafSize = 1;
     const BuildTree tree = buildSah(refs, top, pool);
-    return flatten(tree, [&](const BuildNode& leaf) { return refs[leaf.first()].id(); }, nodes);
+    return flatten(tree, [&](const BuildNode& leaf) { return refs[leaf.first()].id(); }, top, pool, nodes);
 }
 
 }  // namespace vkrt::bvh

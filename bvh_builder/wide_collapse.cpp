@@ -1,8 +1,8 @@
 #include "wide_collapse.h"
 
+#include <algorithm>
 #include <array>
 
-#include "huge_pages.h"
 #include "node_layout.h"
 
 namespace vkrt::bvh {
@@ -15,9 +15,16 @@ struct Slot {
     bool inner() const { return count == 0 && link != gpu::NODE_NONE; }
 };
 
+// Links in the part above the blocks that point at a block's (not yet placed) root.
+constexpr std::uint32_t kBlockLink = 0x80000000u;
+
 class Collapser {
 public:
-    Collapser(const std::vector<gpu::BvhNode>& nodes, WideBvh& out) : nodes_(nodes), out_(out) {}
+    // isBlock: two-child nodes that root a separately collapsed block (never opened here; their
+    // slot's link becomes kBlockLink | block index).
+    Collapser(const std::vector<gpu::BvhNode>& nodes, std::vector<WideNode>& out,
+              const std::vector<std::uint32_t>* blockRoots)
+        : nodes_(nodes), out_(out), blockRoots_(blockRoots) {}
 
     // Recursion depth is the two-child tree's depth, which the builder bounds.
     std::uint32_t convert(std::uint32_t node) {
@@ -40,18 +47,24 @@ public:
         for (;;) {
             int widest = -1;
             for (int k = 0; k < n; ++k)
-                if (slots[k].inner() && (widest < 0 || slots[k].box.halfArea() > slots[widest].box.halfArea())) widest = k;
+                if (slots[k].inner() && block(slots[k].link) < 0 &&
+                    (widest < 0 || slots[k].box.halfArea() > slots[widest].box.halfArea()))
+                    widest = k;
             if (widest < 0 || n + 1 > 4) break;
             const std::uint32_t open = slots[widest].link;
             for (int j = widest; j + 1 < n; ++j) slots[j] = slots[j + 1];
             --n;
             addChildren(open, widest);
         }
-        const auto index = static_cast<std::uint32_t>(out_.nodes.size());
-        out_.nodes.emplace_back();
+        const auto index = static_cast<std::uint32_t>(out_.size());
+        out_.emplace_back();
         std::array<std::uint32_t, 4> links{};
-        for (int k = 0; k < n; ++k) links[k] = slots[k].inner() ? convert(slots[k].link) : slots[k].link;
-        WideNode& w = out_.nodes[index];
+        for (int k = 0; k < n; ++k) {
+            if (!slots[k].inner()) links[k] = slots[k].link;
+            else if (const int b = block(slots[k].link); b >= 0) links[k] = kBlockLink | static_cast<std::uint32_t>(b);
+            else links[k] = convert(slots[k].link);
+        }
+        WideNode& w = out_[index];
         for (int k = 0; k < 4; ++k) {
             const Slot s = k < n ? slots[k] : Slot{};
             w.bounds[0][k] = s.box.lo.x;
@@ -67,20 +80,60 @@ public:
     }
 
 private:
+    int block(std::uint32_t node) const {
+        if (!blockRoots_) return -1;
+        const auto it = std::lower_bound(blockRoots_->begin(), blockRoots_->end(), node);
+        return it != blockRoots_->end() && *it == node ? static_cast<int>(it - blockRoots_->begin()) : -1;
+    }
+
     const std::vector<gpu::BvhNode>& nodes_;
-    WideBvh& out_;
+    std::vector<WideNode>& out_;
+    const std::vector<std::uint32_t>* blockRoots_;
 };
 
 }  // namespace
 
-WideBvh collapseToWide(const SceneBvh& bvh) {
-    WideBvh wide;
-    // A 4-wide tree has about a third of the two-child tree's nodes.
-    reserveHuge(wide.nodes, bvh.nodes.size() / 2 + 16);
-    Collapser c(bvh.nodes, wide);
-    for (const GroupRange& g : bvh.groups) wide.groupRoots.push_back(c.convert(g.rootNode));
-    wide.topRoot = c.convert(bvh.topRoot);
-    return wide;
+std::uint32_t collapseTree(const std::vector<gpu::BvhNode>& nodes, std::uint32_t root,
+                           const std::vector<std::uint32_t>& blockRoots, const std::vector<std::uint32_t>& blockSizes,
+                           ThreadPool& pool, std::vector<WideNode>& out) {
+    // Blocks first, in parallel, each into its own array (local links, root at 0), in the order
+    // of their roots (flatten's blocks come in depth-first order, so they are sorted already).
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> order;
+    for (std::size_t i = 0; i < blockRoots.size(); ++i) order.push_back({blockRoots[i], blockSizes[i]});
+    std::sort(order.begin(), order.end());
+    std::vector<std::uint32_t> sorted;
+    for (const auto& o : order) sorted.push_back(o.first);
+    std::vector<std::vector<WideNode>> blocks(sorted.size());
+    pool.parallelFor(sorted.size(), [&](std::size_t i) {
+        blocks[i].reserve(order[i].second);
+        Collapser(nodes, blocks[i], nullptr).convert(sorted[i]);
+    });
+    // The part above the blocks, then the blocks appended, links moved by their offsets.
+    const auto first = static_cast<std::uint32_t>(out.size());
+    const bool rootIsBlock = std::binary_search(sorted.begin(), sorted.end(), root);
+    if (!rootIsBlock) Collapser(nodes, out, &sorted).convert(root);
+    const auto topEnd = static_cast<std::uint32_t>(out.size());
+    std::vector<std::uint32_t> offsets(blocks.size());
+    std::size_t total = out.size();
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+        offsets[i] = static_cast<std::uint32_t>(total);
+        total += blocks[i].size();
+    }
+    out.resize(total);
+    for (std::uint32_t i = first; i < topEnd; ++i)
+        for (int k = 0; k < 4; ++k)
+            if (out[i].count[k] == 0 && out[i].link[k] != gpu::NODE_NONE && (out[i].link[k] & kBlockLink))
+                out[i].link[k] = offsets[out[i].link[k] & ~kBlockLink];
+    pool.parallelFor(blocks.size(), [&](std::size_t i) {
+        for (std::size_t j = 0; j < blocks[i].size(); ++j) {
+            WideNode w = blocks[i][j];
+            for (int k = 0; k < 4; ++k)
+                if (w.count[k] == 0 && w.link[k] != gpu::NODE_NONE) w.link[k] += offsets[i];
+            out[offsets[i] + j] = w;
+        }
+    });
+    return rootIsBlock ? offsets[static_cast<std::size_t>(std::lower_bound(sorted.begin(), sorted.end(), root) - sorted.begin())]
+                       : first;
 }
 
 }  // namespace vkrt::bvh

@@ -5,6 +5,7 @@
 
 #include "node_layout.h"
 #include "primitives.h"
+#include "wide_bvh.h"
 #include "scene_gen.h"
 #include "test_paths.h"
 
@@ -64,6 +65,48 @@ WalkResult walkTree(const SceneBvh& bvh, std::uint32_t root, int maxLeaf, Conten
     return r;
 }
 
+// The CPU's 4-wide copy of one tree: boxes contain their children's boxes and leaves' contents,
+// empty slots are empty; returns the leaf items in the order met.
+template <class ContentBox>
+std::vector<std::uint32_t> walkWide(const SceneBvh& bvh, std::uint32_t root, ContentBox contentBox) {
+    std::vector<std::uint32_t> items;
+    std::vector<std::uint32_t> stack{root};
+    while (!stack.empty()) {
+        const std::uint32_t index = stack.back();
+        stack.pop_back();
+        if (index >= bvh.cpu.nodes.size()) {
+            ADD_FAILURE() << "wide link " << index << " out of range";
+            return items;
+        }
+        const WideNode& node = bvh.cpu.nodes[index];
+        for (int k = 0; k < 4; ++k) {
+            const Aabb box{{node.bounds[0][k], node.bounds[2][k], node.bounds[4][k]},
+                           {node.bounds[1][k], node.bounds[3][k], node.bounds[5][k]}};
+            if (node.count[k] == 0 && node.link[k] == gpu::NODE_NONE) {
+                EXPECT_TRUE(box.empty()) << "wide node " << index << " slot " << k;
+                continue;
+            }
+            if (node.count[k] == 0) {
+                const WideNode& child = bvh.cpu.nodes[node.link[k]];
+                for (int j = 0; j < 4; ++j) {
+                    const Aabb c{{child.bounds[0][j], child.bounds[2][j], child.bounds[4][j]},
+                                 {child.bounds[1][j], child.bounds[3][j], child.bounds[5][j]}};
+                    if (!c.empty()) {
+                        EXPECT_TRUE(box.contains(c)) << "wide node " << index << " slot " << k;
+                    }
+                }
+                stack.push_back(node.link[k]);
+                continue;
+            }
+            for (std::uint32_t i = node.link[k]; i < node.link[k] + node.count[k]; ++i) {
+                EXPECT_TRUE(box.contains(contentBox(i))) << "wide node " << index << " slot " << k;
+                items.push_back(i);
+            }
+        }
+    }
+    return items;
+}
+
 // Checks every invariant of a built scene against its input.
 void expectWellFormed(const TestScene& scene, const SceneBvh& bvh, const BuildOptions& options) {
     ASSERT_EQ(bvh.groups.size(), scene.groups.size());
@@ -95,6 +138,11 @@ void expectWellFormed(const TestScene& scene, const SceneBvh& bvh, const BuildOp
         std::vector<std::uint32_t> expected(range.primCount);
         for (std::uint32_t i = 0; i < range.primCount; ++i) expected[i] = range.firstPrim + i;
         EXPECT_EQ(items, expected) << "group " << g;
+        ASSERT_EQ(bvh.cpu.groupRoots.size(), scene.groups.size());
+        std::vector<std::uint32_t> wideItems = walkWide(bvh, bvh.cpu.groupRoots[g],
+                                                        [&](std::uint32_t p) { return boundsOf(decode(bvh.prims[p])); });
+        std::sort(wideItems.begin(), wideItems.end());
+        EXPECT_EQ(wideItems, expected) << "group " << g << " (4-wide copy)";
         deepest = std::max(deepest, w.depth);
         reachable += w.nodes;
         // Group bounds are the union of its primitives.
@@ -152,6 +200,9 @@ void expectWellFormed(const TestScene& scene, const SceneBvh& bvh, const BuildOp
     for (std::uint32_t i = 0; i < scene.instances.size(); ++i)
         if (!scene.groups[scene.instances[i].group].empty()) expected.push_back(i);
     EXPECT_EQ(placed, expected);
+    std::vector<std::uint32_t> widePlaced = walkWide(bvh, bvh.cpu.topRoot, instanceBox);
+    std::sort(widePlaced.begin(), widePlaced.end());
+    EXPECT_EQ(widePlaced, expected) << "top level (4-wide copy)";
     EXPECT_EQ(bvh.stats.topDepth, top.depth);
     EXPECT_LE(bvh.stats.topDepth + 1 + bvh.stats.bottomDepth, static_cast<int>(gpu::TRAVERSAL_STACK_SIZE));
     // Every node belongs to exactly one tree.
