@@ -13,6 +13,8 @@
 #include "image_compare.h"
 #include "interrupt.h"
 #include "scene_accel.h"
+#include "statistical_compare.h"
+#include "sweep.h"
 #include "vulkan_errors.h"
 #include "xml_loader.h"
 
@@ -21,6 +23,7 @@ namespace vkrt {
 namespace {
 
 constexpr int kExitFailure = 1;
+constexpr int kExitStatisticallyDifferent = 3;  // compare --stat: the z-test failed
 constexpr int kExitInterrupted = 130;
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -101,7 +104,46 @@ int runRender(CommandLine& cl) {
     return 0;
 }
 
+// compare --stat: GPU and CPU with different seeds, judged by a z-test (host/study/z_test.h).
+int runStatisticalCompare(CommandLine& cl) {
+    const Scene scene = loadWithWarnings(cl);
+    const SceneAccel accel = buildSceneAccel(scene);
+    study::StudyRenderer renderer(gpuOptions(cl));
+    RenderOptions options = cl.render;
+    options.quiet = true;
+    const study::StatisticalComparison c = study::compareDevicesStatistically(renderer, scene, accel, options);
+    if (auto log = renderer.validationLog(); log && log->count() > 0)
+        std::cerr << "warning: " << log->count() << " Vulkan validation message(s):\n" << log->joined();
+    writeImage(c.test.map, cl.heatMapPath);
+    const study::ZTestResult& z = c.test;
+    std::printf("scene            %s (%dx%d, %s sampler)\n", cl.scenePath.c_str(), cl.render.width, cl.render.height,
+                study::samplerName(cl.render.sampler).c_str());
+    std::printf("gpu              %s, seed %u, %d rpp, %.3f s\n", renderer.gpuDeviceName().c_str(), c.gpuSeed, c.gpuRpp,
+                c.gpuSeconds);
+    std::printf("cpu reference    seed %u, %d rpp with per-pixel sample variance, %.3f s\n", c.cpuSeed, c.cpuRpp,
+                c.cpuSeconds);
+    std::printf("z-test           |z| limit %.2f (alpha 0.01, Sidak over %zu values), max |z| %.2f\n", z.zLimit, z.values,
+                z.maxAbsZ);
+    std::printf("values passing   %.3f%% (needs >= 99.75%%)\n", 100.0 * z.passedFraction());
+    std::printf("z map            %s\n", cl.heatMapPath.c_str());
+    std::printf("result           %s\n", z.pass ? "PASS: the images agree up to their noise" : "FAIL: the images differ");
+    return z.pass ? 0 : kExitStatisticallyDifferent;
+}
+
+int runSweep(CommandLine& cl) {
+    const Scene scene = loadWithWarnings(cl);
+    study::SweepOptions options = cl.sweep;
+    options.render = cl.render;
+    options.gpu = gpuOptions(cl);
+    const study::SweepResult result = study::runSweep(options, scene, std::cerr);
+    if (!cl.render.quiet)
+        std::fprintf(stderr, "sweep: %zu renders -> %s, %s, %s, %s\n", result.rows.size(), result.csv.c_str(),
+                     result.plots.errorVsTime.c_str(), result.plots.errorVsRpp.c_str(), result.report.c_str());
+    return 0;
+}
+
 int runCompare(CommandLine& cl) {
+    if (cl.statistical) return runStatisticalCompare(cl);
     const Scene scene = loadWithWarnings(cl);
     const SceneAccel accel = buildSceneAccel(scene);
     GpuRenderer gpu(gpuOptions(cl));
@@ -138,6 +180,7 @@ int runVkrt(int argc, const char* const* argv) {
         switch (cl.command) {
         case Command::ListDevices: return runListDevices();
         case Command::Compare: return runCompare(cl);
+        case Command::Sweep: return runSweep(cl);
         case Command::Render: return runRender(cl);
         }
     } catch (const RenderCancelled&) {

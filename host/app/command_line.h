@@ -7,10 +7,11 @@
 #include <vector>
 
 #include "render_options.h"
+#include "sweep.h"
 
 namespace vkrt {
 
-enum class Command { Render, Compare, ListDevices };
+enum class Command { Render, Compare, Sweep, ListDevices };
 enum class DeviceChoice { Auto, Cpu, Gpu };
 
 struct CommandLine {
@@ -26,6 +27,8 @@ struct CommandLine {
     bool general = false;         // GPU: run the general kernel instead of the scene-specialised one
     std::string heatMapPath;      // compare: difference heat map (default <scene name>_diff.png)
     std::optional<int> camera;    // --camera; default: the scene's <sceneParameters><camera>, else the first
+    bool statistical = false;     // compare --stat: z-test of GPU and CPU renders with different seeds
+    study::SweepOptions sweep;    // sweep: everything but the render options above (copied in by the parser)
 };
 
 // Parses argv. Returns the command line, or the exit code to stop with (0 after --help,

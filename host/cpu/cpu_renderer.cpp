@@ -29,10 +29,14 @@ constexpr int kTileSize = 16;
 bool isFinite(const glm::vec3& c) { return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z); }
 
 // One pixel: the mean of its rpp samples, summed in sample order in float (RENDERING.md §2).
-glm::vec3 renderPixel(const RenderContext& ctx, Integrator& integrator, int i, int j, std::uint64_t& nonFinite) {
+// With `variance`, also the unbiased variance of the samples, from sums kept in double so that
+// E[x^2] - E[x]^2 does not cancel away.
+glm::vec3 renderPixel(const RenderContext& ctx, Integrator& integrator, int i, int j, std::uint64_t& nonFinite,
+                      glm::vec3* variance = nullptr) {
     const auto pixel = static_cast<std::uint32_t>(j) * static_cast<std::uint32_t>(ctx.camera.nx) +
                        static_cast<std::uint32_t>(i);
     glm::vec3 sum(0.0f);
+    glm::dvec3 sumD(0.0), sumSqD(0.0);
     for (std::uint32_t s = 0; s < ctx.samplesPerPixel; ++s) {
         const glm::vec2 offset = gpu::sample2D(ctx.sampler, ctx.pixelGrid, pixel, s, gpu::DIM_CAMERA, ctx.seed);
         glm::vec3 c = integrator.cameraRadiance(cpu::cameraRay(ctx.camera, i, j, offset), {pixel, s});
@@ -41,6 +45,14 @@ glm::vec3 renderPixel(const RenderContext& ctx, Integrator& integrator, int i, i
             c = glm::vec3(0.0f);
         }
         sum += c;
+        if (variance) {
+            sumD += glm::dvec3(c);
+            sumSqD += glm::dvec3(c) * glm::dvec3(c);
+        }
+    }
+    if (variance) {
+        const double n = ctx.samplesPerPixel;
+        *variance = n > 1.0 ? glm::vec3(glm::max((sumSqD - sumD * sumD / n) / (n - 1.0), glm::dvec3(0.0))) : glm::vec3(0.0f);
     }
     return sum / static_cast<float>(ctx.samplesPerPixel);
 }
@@ -52,11 +64,13 @@ int threadCount(int requested, int tiles) {
 
 }  // namespace
 
-Image renderCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions& options, RenderStats* stats) {
+Image renderCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions& options, RenderStats* stats,
+                Image* sampleVariance) {
     const auto start = std::chrono::steady_clock::now();
     const RenderContext ctx = cpu::makeRenderContext(scene, accel, options);
 
     Image image(options.width, options.height);
+    if (sampleVariance) *sampleVariance = Image(options.width, options.height);
     const int tilesX = (options.width + kTileSize - 1) / kTileSize;
     const int tilesY = (options.height + kTileSize - 1) / kTileSize;
     const int tileCount = tilesX * tilesY;
@@ -89,7 +103,9 @@ Image renderCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions
                 const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
                 const int x1 = std::min(x0 + kTileSize, options.width), y1 = std::min(y0 + kTileSize, options.height);
                 for (int j = y0; j < y1; ++j)
-                    for (int i = x0; i < x1; ++i) image.at(i, j) = renderPixel(ctx, integrator, i, j, nonFinite);
+                    for (int i = x0; i < x1; ++i)
+                        image.at(i, j) = renderPixel(ctx, integrator, i, j, nonFinite,
+                                                     sampleVariance ? &sampleVariance->at(i, j) : nullptr);
                 progress.update(static_cast<double>(tilesDone.fetch_add(1) + 1) / tileCount);
             }
         } catch (...) {

@@ -23,7 +23,9 @@ struct RenderStats {
 
 // Renders options.width x options.height linear radiance. Bit-identical for any thread count.
 // Throws std::invalid_argument for bad options, RenderCancelled when *options.cancel becomes true.
+// sampleVariance (optional, for statistical tests, host/study): per pixel and channel, the unbiased
+// variance of the pixel's rpp sample radiances (0 when rpp = 1); the image itself is unchanged.
 Image renderCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions& options,
-                RenderStats* stats = nullptr);
+                RenderStats* stats = nullptr, Image* sampleVariance = nullptr);
 
 }  // namespace vkrt

@@ -1,0 +1,141 @@
+#include "gnuplot_plots.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <fstream>
+#include <map>
+#include <spawn.h>
+#include <sstream>
+#include <stdexcept>
+#include <sys/wait.h>
+
+extern char** environ;
+
+namespace vkrt::study {
+
+namespace {
+
+// One colour per sampler, the same in every plot; devices differ by dash and point type.
+std::string colour(SamplerKind s) {
+    switch (s) {
+    case SamplerKind::Random: return "#d62728";
+    case SamplerKind::Regular: return "#7f7f7f";
+    case SamplerKind::Jittered: return "#1f77b4";
+    case SamplerKind::Sobol: return "#2ca02c";
+    }
+    return "#000000";
+}
+
+// A gnuplot single-quoted string: a quote inside is written twice.
+std::string quoted(const std::string& text) {
+    std::string out = "'";
+    for (char c : text) out += c == '\'' ? std::string("''") : std::string(1, c);
+    return out + "'";
+}
+
+std::string number(double v) {
+    if (!(v > 0.0) || !std::isfinite(v)) return "NaN";  // gnuplot skips NaN (log scale needs > 0)
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
+
+struct Series {
+    Device device;
+    SamplerKind sampler;
+    std::filesystem::path data;
+};
+
+// Runs `gnuplot script`, stderr into logPath; throws with the log on failure.
+void runGnuplot(const std::filesystem::path& script, const std::filesystem::path& logPath) {
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 2, logPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+    std::string program = "gnuplot", scriptArg = script.string();
+    char* argv[] = {program.data(), scriptArg.data(), nullptr};
+    pid_t pid = 0;
+    const int spawned = posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (spawned != 0)
+        throw std::runtime_error("cannot run gnuplot (" + std::string(std::strerror(spawned)) +
+                                 "): install gnuplot-nox (setup.sh does) to get the sweep's plots");
+    int status = 0;
+    waitpid(pid, &status, 0);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        std::ifstream log(logPath);
+        std::stringstream text;
+        text << log.rdbuf();
+        throw std::runtime_error("gnuplot failed on " + script.string() + ":\n" + text.str());
+    }
+}
+
+}  // namespace
+
+PlotFiles plotSweep(const std::vector<SweepPoint>& points, const std::array<double, 4>& referenceRmse,
+                    const std::array<std::size_t, 4>& regionPixels, const std::string& title,
+                    const std::filesystem::path& outDir) {
+    const std::filesystem::path dir = outDir / "plots";
+    std::filesystem::create_directories(dir);
+
+    std::vector<Series> series;
+    std::map<std::string, std::ofstream> files;
+    for (const SweepPoint& p : points) {
+        const std::string name = deviceName(p.device) + "_" + samplerName(p.sampler);
+        auto [it, added] = files.try_emplace(name);
+        if (added) {
+            series.push_back({p.device, p.sampler, dir / (name + ".dat")});
+            it->second.open(series.back().data);
+            it->second << "# rpp seconds rmse_all rmse_edge rmse_penumbra rmse_gloss (RMSE over seeds)\n";
+        }
+        it->second << p.rpp << ' ' << number(p.seconds);
+        for (double e : p.rmse) it->second << ' ' << number(e);
+        it->second << '\n';
+    }
+    for (auto& [name, f] : files) f.close();
+
+    PlotFiles out{outDir / "error_vs_time.png", outDir / "error_vs_rpp.png"};
+    std::ostringstream gp;
+    gp << "set terminal pngcairo size 1200,900 noenhanced font 'sans,10'\n"
+       << "set logscale xy\nset grid\nset key bottom left box opaque\nset ylabel 'RMSE (linear radiance)'\n";
+    auto figure = [&](const std::filesystem::path& png, bool byTime) {
+        gp << "set output " << quoted(png.string()) << "\n"
+           << "set xlabel " << quoted(byTime ? "render time (s)" : "rays per pixel") << "\n"
+           << "set multiplot layout 2,2 title " << quoted(title + (byTime ? ": error vs time" : ": error vs rpp")) << "\n";
+        for (Region region : kRegions) {
+            const int g = static_cast<int>(region);
+            gp << "set title " << quoted(regionName(region) + " pixels (" + std::to_string(regionPixels[g]) + ")") << "\n";
+            bool anyData = false;
+            for (const SweepPoint& p : points) anyData = anyData || (p.rmse[g] > 0.0 && std::isfinite(p.rmse[g]));
+            if (!anyData) {
+                // An empty region still gets its panel, so the layout does not shift.
+                gp << "unset key\nset label 1 'no pixels in this region' at graph 0.5,0.5 center\n"
+                   << "plot [1:10] [1:10] NaN notitle\nunset label 1\nset key bottom left box opaque\n";
+                continue;
+            }
+            gp << "plot ";
+            for (std::size_t s = 0; s < series.size(); ++s) {
+                const bool gpu = series[s].device == Device::Gpu;
+                gp << (s ? ", \\\n     " : "") << quoted(series[s].data.string()) << " using " << (byTime ? 2 : 1) << ':'
+                   << (3 + g) << " with linespoints lw 2 lc rgb " << quoted(colour(series[s].sampler)) << " dt "
+                   << (gpu ? 1 : 2) << " pt " << (gpu ? 7 : 6) << " title "
+                   << quoted(deviceName(series[s].device) + " " + samplerName(series[s].sampler));
+            }
+            if (referenceRmse[g] > 0.0 && std::isfinite(referenceRmse[g]))
+                gp << ", \\\n     " << number(referenceRmse[g]) << " with lines dt 3 lw 2 lc rgb '#000000' title 'reference noise'";
+            gp << "\n";
+        }
+        gp << "unset multiplot\n";
+    };
+    figure(out.errorVsTime, true);
+    figure(out.errorVsRpp, false);
+
+    const std::filesystem::path script = dir / "sweep.gp";
+    std::ofstream(script) << gp.str();
+    runGnuplot(script, dir / "gnuplot.log");
+    return out;
+}
+
+}  // namespace vkrt::study

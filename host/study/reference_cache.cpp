@@ -1,0 +1,134 @@
+#include "reference_cache.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+#include <unistd.h>
+
+#include <OpenImageIO/hash.h>
+
+namespace vkrt::study {
+
+namespace {
+
+// Bump when the meaning of a cached file changes (the image definition, the noise estimate, the
+// masks), so that old cache entries are not reused.
+constexpr int kCacheFormat = 1;
+
+std::string hexFloat(float v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%a", static_cast<double>(v));
+    return buf;
+}
+
+std::string describe(const ReferenceSpec& spec) {
+    const RenderOptions& o = spec.options;
+    std::ostringstream s;
+    s << "vkrt reference format " << kCacheFormat << "\n"
+      << "size " << o.width << "x" << o.height << "\n"
+      << "camera " << o.camera << "\n"
+      << "max-depth " << o.maxDepth << "\n"
+      << "light-samples " << o.lightSamples << "\n"
+      << "gloss-samples " << o.glossSamples << "\n"
+      << "background " << (o.background ? hexFloat(o.background->r) + "," + hexFloat(o.background->g) + "," + hexFloat(o.background->b) : "scene") << "\n"
+      << "rpp " << spec.rpp << " as two halves with seeds " << kReferenceSeedA << ", " << kReferenceSeedB << "\n"
+      << "sampler " << samplerName(spec.sampler) << "\n"
+      << "device " << deviceName(spec.device) << "\n";
+    return s.str();
+}
+
+// Writes through a temporary name and renames, so a concurrent reader never sees half a file.
+void writeAtomically(const Image& image, const std::filesystem::path& path) {
+    std::filesystem::path tmp = path;
+    tmp.replace_filename(path.stem().string() + ".tmp" + std::to_string(::getpid()) + path.extension().string());
+    writeImage(image, tmp.string());
+    std::filesystem::rename(tmp, path);
+}
+
+}  // namespace
+
+std::filesystem::path defaultCacheDir() {
+    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "vkrt";
+    if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "vkrt";
+    return std::filesystem::current_path() / ".vkrt-cache";
+}
+
+std::string referenceKey(const std::string& sceneText, const ReferenceSpec& spec) {
+    const std::string text = describe(spec) + "scene\n" + sceneText;
+    char buf[24];
+    std::snprintf(buf, sizeof buf, "%016llx", OIIO::xxhash::XXH64(text.data(), text.size(), 0));
+    return buf;
+}
+
+Reference loadOrRenderReference(StudyRenderer& renderer, const Scene& scene, const SceneAccel& accel,
+                                const std::string& sceneText, const ReferenceSpec& spec,
+                                const std::filesystem::path& cacheDir, std::ostream& log) {
+    if (spec.rpp < 2) throw std::invalid_argument("reference rpp must be at least 2 (two halves), not " + std::to_string(spec.rpp));
+    Reference ref;
+    ref.key = referenceKey(sceneText, spec);
+    const std::filesystem::path dir = cacheDir / "references";
+    ref.imagePath = dir / (ref.key + ".exr");
+    const std::filesystem::path noisePath = dir / (ref.key + "_noise.exr");
+    const std::filesystem::path masksPath = dir / (ref.key + "_masks.png");
+    const std::filesystem::path infoPath = dir / (ref.key + ".txt");
+
+    if (std::filesystem::exists(ref.imagePath) && std::filesystem::exists(noisePath) && std::filesystem::exists(masksPath)) {
+        ref.image = readImage(ref.imagePath.string());
+        ref.noise = readImage(noisePath.string());
+        ref.masks = masksFromImage(readImage(masksPath.string()));
+        const bool sized = [&] {
+            for (const Image* i : {&ref.image, &ref.noise})
+                if (i->width != spec.options.width || i->height != spec.options.height) return false;
+            return ref.masks.width == spec.options.width && ref.masks.height == spec.options.height;
+        }();
+        if (!sized) throw std::runtime_error(ref.imagePath.string() + ": cached reference has the wrong size; delete it");
+        ref.fromCache = true;
+        log << "reference: cached " << ref.imagePath.string() << "\n";
+        return ref;
+    }
+
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw std::runtime_error(dir.string() + ": cannot create the reference cache: " + ec.message());
+    log << "reference: rendering " << spec.rpp << " rpp (" << samplerName(spec.sampler) << ") on the "
+        << deviceName(spec.device) << " into " << ref.imagePath.string() << "\n"
+        << std::flush;
+
+    RenderOptions half = spec.options;
+    half.sampler = spec.sampler;
+    half.samplesPerPixel = spec.rpp / 2;
+    half.seed = kReferenceSeedA;
+    const TimedRender a = renderer.render(spec.device, scene, accel, half);
+    half.seed = kReferenceSeedB;
+    const TimedRender b = renderer.render(spec.device, scene, accel, half);
+    ref.seconds = a.seconds + b.seconds;
+
+    ref.image = Image(a.image.width, a.image.height);
+    ref.noise = Image(a.image.width, a.image.height);
+    for (std::size_t k = 0; k < ref.image.pixels.size(); ++k) {
+        const glm::vec3 d = a.image.pixels[k] - b.image.pixels[k];
+        ref.image.pixels[k] = 0.5f * (a.image.pixels[k] + b.image.pixels[k]);
+        // Var(A - B) = 2 v_half and the mean has v_half / 2, so (A - B)^2 / 4 estimates it.
+        ref.noise.pixels[k] = 0.25f * d * d;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    ProbeOptions probe;
+    probe.threads = spec.options.threads;
+    ref.masks = findRegions(scene, accel, spec.options, probe);
+    log << "reference: " << ref.seconds << " s; region masks "
+        << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
+
+    writeAtomically(ref.image, ref.imagePath);
+    writeAtomically(ref.noise, noisePath);
+    writeAtomically(masksToImage(ref.masks), masksPath);
+    std::ofstream info(infoPath);
+    info << describe(spec) << "render seconds " << ref.seconds << "\n";
+    return ref;
+}
+
+}  // namespace vkrt::study

@@ -1,0 +1,56 @@
+// The converged reference a sweep measures error against: rendered once at a high rpp and cached on
+// disk, keyed by a hash of the scene file's text and of every option that changes the image.
+//
+// Cache: <cacheDir>/references/<key>.exr (the reference), <key>_noise.exr (its own estimated
+// variance per pixel and channel), <key>_masks.png (region_masks.h) and <key>.txt (what was
+// rendered, how long it took). defaultCacheDir() is $XDG_CACHE_HOME/vkrt, else ~/.cache/vkrt.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+
+#include "image.h"
+#include "region_masks.h"
+#include "render_options.h"
+#include "scene.h"
+#include "scene_accel.h"
+#include "study_renderer.h"
+
+namespace vkrt::study {
+
+// The reference is the mean of two renders with these seeds (rpp/2 each): the difference of the
+// halves estimates the reference's own noise. Sweeps must not use them (their samples would be
+// correlated with the reference's).
+inline constexpr std::uint32_t kReferenceSeedA = 0x9e3779b9u;
+inline constexpr std::uint32_t kReferenceSeedB = 0x7f4a7c15u;
+
+struct ReferenceSpec {
+    RenderOptions options;   // size, depth, light/gloss samples, background, camera, threads
+    int rpp = 4096;
+    SamplerKind sampler = SamplerKind::Sobol;
+    Device device = Device::Gpu;
+};
+
+struct Reference {
+    Image image;
+    Image noise;          // estimated variance of `image` per pixel and channel: (A - B)^2 / 4
+    RegionMasks masks;
+    std::string key;      // 16 hex digits
+    std::filesystem::path imagePath;
+    bool fromCache = false;
+    double seconds = 0.0; // time to render it (when it was rendered)
+};
+
+std::filesystem::path defaultCacheDir();
+
+// The cache key: XXH64 of the scene text and a canonical description of spec.
+std::string referenceKey(const std::string& sceneText, const ReferenceSpec& spec);
+
+// Loads the cached reference, or renders (and caches) it; progress lines go to `log`.
+Reference loadOrRenderReference(StudyRenderer& renderer, const Scene& scene, const SceneAccel& accel,
+                                const std::string& sceneText, const ReferenceSpec& spec,
+                                const std::filesystem::path& cacheDir, std::ostream& log);
+
+}  // namespace vkrt::study

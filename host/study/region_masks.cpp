@@ -1,0 +1,183 @@
+#include "region_masks.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "bvh.h"
+#include "camera.h"
+#include "lights.h"
+#include "ray_offset.h"
+#include "surface.h"
+
+namespace vkrt::study {
+
+namespace {
+
+// Two primary hits on one object whose shading normals differ by more than this are an edge (a box
+// corner, a crease); smooth curvature across one pixel stays far below it at any useful resolution.
+constexpr float kEdgeNormalDegrees = 30.0f;
+// docs/RENDERING.md §4: shadow rays stop just short of the light point.
+constexpr float kShadowRayEnd = 1.0f - 1.0f / 65536.0f;
+
+struct ObjectId {
+    bool hit = false;
+    std::uint32_t instance = 0;
+    const Shape* shape = nullptr;
+    bool operator==(const ObjectId&) const = default;
+};
+
+bool reflectsGlossily(const Shader& shader) {
+    const bool reflects = shader.type == ShaderType::Mirror ||
+                          ((shader.type == ShaderType::Glaze || shader.type == ShaderType::BlinnPhongMirrored) &&
+                           shader.mirrorCoef > 0.0f);
+    return reflects && shader.roughness > 0.0f;
+}
+
+bool shadowed(const Shader& shader) {
+    return shader.type != ShaderType::CoolToWarm && shader.type != ShaderType::Dielectric &&
+           shader.type != ShaderType::Mirror;  // a pure mirror has no direct light to shadow
+}
+
+class PixelProber {
+public:
+    PixelProber(const Scene& scene, const SceneAccel& accel, const RenderOptions& options, const ProbeOptions& probe)
+        : scene_(scene),
+          accel_(accel),
+          frame_(cpu::makeCameraFrame(scene.cameras.at(options.camera), options.width, options.height)),
+          lights_(cpu::makeLightSources(scene)),
+          probe_(probe) {}
+
+    // Fills the three masks' entries of pixel (i, j).
+    void probe(int i, int j, std::uint8_t& edge, std::uint8_t& penumbra, std::uint8_t& gloss) const {
+        const int n = probe_.pixelProbes;
+        std::vector<int> visible(lights_.size(), 0), tested(lights_.size(), 0);
+        ObjectId first;
+        glm::vec3 firstNormal(0.0f);
+        bool differs = false;
+        for (int s = 0; s < n * n; ++s) {
+            const glm::vec2 offset((static_cast<float>(s % n) + 0.5f) / static_cast<float>(n),
+                                   (static_cast<float>(s / n) + 0.5f) / static_cast<float>(n));
+            const bvh::Ray ray = cpu::cameraRay(frame_, i, j, offset);
+            bvh::Hit hit;
+            ObjectId id;
+            glm::vec3 normal(0.0f);
+            if (bvh::intersectClosest(accel_.bvh, ray, hit)) {
+                id = {true, hit.instance, accel_.origin(hit.instance, hit.prim).shape};
+                const cpu::SurfacePoint sp = cpu::describeHit(accel_, scene_, ray, hit);
+                const bool backFacing = glm::dot(sp.geometricNormal, ray.dir) > 0.0f;
+                const glm::vec3 ng = backFacing ? -sp.geometricNormal : sp.geometricNormal;
+                normal = backFacing ? -sp.shadingNormal : sp.shadingNormal;
+                const Shader& shader = scene_.shaders[sp.shader];
+                if (reflectsGlossily(shader)) gloss = 1;
+                if (shadowed(shader)) countVisibility(sp.position, normal, ng, visible, tested);
+            }
+            if (s == 0) {
+                first = id;
+                firstNormal = normal;
+            } else if (!(id == first) ||
+                       (id.hit && glm::dot(normal, firstNormal) < std::cos(glm::radians(kEdgeNormalDegrees)))) {
+                differs = true;
+            }
+        }
+        edge = differs ? 1 : 0;
+        for (std::size_t l = 0; l < lights_.size(); ++l)
+            if (visible[l] > 0 && visible[l] < tested[l]) penumbra = 1;
+    }
+
+private:
+    // Light points of every light seen from one primary hit: how many of those in front of the
+    // surface are unoccluded.
+    void countVisibility(const glm::vec3& p, const glm::vec3& n, const glm::vec3& ng, std::vector<int>& visible,
+                         std::vector<int>& tested) const {
+        for (std::size_t l = 0; l < lights_.size(); ++l) {
+            const cpu::LightSource& light = lights_[l];
+            const int m = light.type == LightType::Point ? 1 : probe_.lightProbes;
+            for (int s = 0; s < m * m; ++s) {
+                const glm::vec2 u((static_cast<float>(s % m) + 0.5f) / static_cast<float>(m),
+                                  (static_cast<float>(s / m) + 0.5f) / static_cast<float>(m));
+                const glm::vec3 q = cpu::lightPoint(light, u);
+                const glm::vec3 toLight = q - p;
+                if (!(glm::length(toLight) > 0.0f) || glm::dot(n, toLight) <= 0.0f) continue;
+                ++tested[l];
+                bvh::Ray shadow;
+                shadow.origin = cpu::offsetRayOrigin(p, cpu::sideOf(ng, toLight));
+                shadow.dir = q - shadow.origin;
+                shadow.tmax = kShadowRayEnd;
+                if (!bvh::intersectAny(accel_.bvh, shadow)) ++visible[l];
+            }
+        }
+    }
+
+    const Scene& scene_;
+    const SceneAccel& accel_;
+    cpu::CameraFrame frame_;
+    std::vector<cpu::LightSource> lights_;
+    ProbeOptions probe_;
+};
+
+}  // namespace
+
+RegionMasks findRegions(const Scene& scene, const SceneAccel& accel, const RenderOptions& options,
+                        const ProbeOptions& probe) {
+    if (options.width < 1 || options.height < 1)
+        throw std::invalid_argument("region masks: image size " + std::to_string(options.width) + "x" +
+                                    std::to_string(options.height) + " has no pixels");
+    if (options.camera < 0 || options.camera >= static_cast<int>(scene.cameras.size()))
+        throw std::invalid_argument("region masks: camera " + std::to_string(options.camera) + " does not exist");
+    if (probe.pixelProbes < 1 || probe.lightProbes < 1)
+        throw std::invalid_argument("region masks: probe counts must be at least 1");
+
+    RegionMasks masks;
+    masks.width = options.width;
+    masks.height = options.height;
+    const std::size_t pixels = static_cast<std::size_t>(options.width) * options.height;
+    masks.edge.assign(pixels, 0);
+    masks.penumbra.assign(pixels, 0);
+    masks.gloss.assign(pixels, 0);
+
+    const PixelProber prober(scene, accel, options, probe);
+    std::atomic<int> nextRow{0};
+    auto worker = [&] {
+        for (int j = nextRow++; j < options.height; j = nextRow++)
+            for (int i = 0; i < options.width; ++i) {
+                const std::size_t k = static_cast<std::size_t>(j) * options.width + i;
+                prober.probe(i, j, masks.edge[k], masks.penumbra[k], masks.gloss[k]);
+            }
+    };
+    const int threads = std::clamp(probe.threads > 0 ? probe.threads : static_cast<int>(std::thread::hardware_concurrency()),
+                                   1, options.height);
+    std::vector<std::jthread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+    return masks;
+}
+
+std::size_t countPixels(const PixelMask& mask) {
+    return static_cast<std::size_t>(std::count(mask.begin(), mask.end(), std::uint8_t{1}));
+}
+
+Image masksToImage(const RegionMasks& masks) {
+    Image image(masks.width, masks.height);
+    for (std::size_t k = 0; k < image.pixels.size(); ++k)
+        image.pixels[k] = glm::vec3(masks.edge[k], masks.penumbra[k], masks.gloss[k]);
+    return image;
+}
+
+RegionMasks masksFromImage(const Image& image) {
+    RegionMasks masks;
+    masks.width = image.width;
+    masks.height = image.height;
+    for (const glm::vec3& c : image.pixels) {
+        masks.edge.push_back(c.r > 0.5f ? 1 : 0);
+        masks.penumbra.push_back(c.g > 0.5f ? 1 : 0);
+        masks.gloss.push_back(c.b > 0.5f ? 1 : 0);
+    }
+    return masks;
+}
+
+}  // namespace vkrt::study

@@ -1,0 +1,60 @@
+#include "study_renderer.h"
+
+#include <chrono>
+#include <stdexcept>
+
+#include "cpu_renderer.h"
+
+namespace vkrt::study {
+
+std::string deviceName(Device device) { return device == Device::Gpu ? "gpu" : "cpu"; }
+
+std::string samplerName(SamplerKind sampler) {
+    switch (sampler) {
+    case SamplerKind::Jittered: return "jittered";
+    case SamplerKind::Regular: return "regular";
+    case SamplerKind::Random: return "random";
+    case SamplerKind::Sobol: return "sobol";
+    }
+    return "unknown";
+}
+
+SamplerKind parseSampler(const std::string& name) {
+    for (SamplerKind s : {SamplerKind::Jittered, SamplerKind::Regular, SamplerKind::Random, SamplerKind::Sobol})
+        if (samplerName(s) == name) return s;
+    throw std::invalid_argument("unknown sampler '" + name + "' (expected jittered, regular, random or sobol)");
+}
+
+StudyRenderer::StudyRenderer(const std::optional<GpuRendererOptions>& gpu) {
+    if (gpu) gpu_ = std::make_unique<GpuRenderer>(*gpu);
+}
+
+std::string StudyRenderer::gpuDeviceName() const { return gpu_ ? gpu_->deviceName() : std::string("none"); }
+
+std::shared_ptr<const ValidationLog> StudyRenderer::validationLog() const { return gpu_ ? gpu_->validationLog() : nullptr; }
+
+TimedRender StudyRenderer::render(Device device, const Scene& scene, const SceneAccel& accel, const RenderOptions& options,
+                                  Image* sampleVariance) {
+    TimedRender out;
+    if (device == Device::Cpu) {
+        const auto start = std::chrono::steady_clock::now();
+        out.image = renderCpu(scene, accel, options, nullptr, sampleVariance);
+        out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return out;
+    }
+    if (!gpu_) throw std::invalid_argument("study: a GPU render was asked for, but no GPU renderer is open");
+    if (sampleVariance) throw std::invalid_argument("study: the GPU renderer has no per-pixel variance output");
+    if (warmedScene_ != &scene) {
+        RenderOptions warmUp = options;
+        warmUp.samplesPerPixel = 1;
+        warmUp.quiet = true;
+        gpu_->render(scene, accel, warmUp);
+        warmedScene_ = &scene;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    out.image = gpu_->render(scene, accel, options);
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+}
+
+}  // namespace vkrt::study

@@ -1,0 +1,168 @@
+#include "sweep.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "scene_accel.h"
+#include "sweep_csv.h"
+#include "sweep_report.h"
+#include "vulkan_errors.h"
+
+namespace vkrt::study {
+
+namespace {
+
+std::string readText(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error(path.string() + ": cannot read the scene file");
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+bool uses(const std::vector<Device>& devices, Device d) { return std::find(devices.begin(), devices.end(), d) != devices.end(); }
+
+// Opens the GPU when the sweep or its reference needs it; drops it (with a note) when there is no
+// Vulkan device but the CPU can do the work alone.
+std::unique_ptr<StudyRenderer> openRenderer(const SweepOptions& options, std::vector<Device>& devices,
+                                            std::optional<Device>& referenceDevice, std::ostream& log) {
+    const bool wantGpu = uses(devices, Device::Gpu) || referenceDevice == Device::Gpu;
+    if (!wantGpu) return std::make_unique<StudyRenderer>(std::nullopt);
+    try {
+        return std::make_unique<StudyRenderer>(options.gpu);
+    } catch (const VulkanUnavailable& e) {
+        if (!uses(devices, Device::Cpu)) throw;
+        log << "note: no usable Vulkan device (" << e.what() << "); sweeping the CPU reference only\n";
+        devices.erase(std::remove(devices.begin(), devices.end(), Device::Gpu), devices.end());
+        referenceDevice = Device::Cpu;
+        return std::make_unique<StudyRenderer>(std::nullopt);
+    }
+}
+
+std::string joined(const std::vector<int>& values) {
+    std::string s;
+    for (int v : values) {
+        if (!s.empty()) s += ',';
+        s += std::to_string(v);  // appended separately: GCC 12 warns falsely (-Wrestrict) on "," + string
+    }
+    return s;
+}
+
+}  // namespace
+
+void validateSweepOptions(const SweepOptions& o) {
+    auto fail = [](const std::string& what) { throw std::invalid_argument("sweep: " + what); };
+    if (o.outDir.empty()) fail("--out DIR is required");
+    if (o.rpps.empty()) fail("--rpp needs at least one value");
+    for (int r : o.rpps)
+        if (r < 1) fail("--rpp values must be at least 1, not " + std::to_string(r));
+    std::vector<int> sorted = o.rpps;
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) fail("--rpp lists a value twice: " + joined(o.rpps));
+    if (o.seeds < 1) fail("--seeds must be at least 1, not " + std::to_string(o.seeds));
+    if (o.samplers.empty()) fail("--samplers needs at least one sampler");
+    if (o.devices.empty()) fail("no device to sweep");
+    if (o.referenceRpp < 2) fail("--reference-rpp must be at least 2, not " + std::to_string(o.referenceRpp));
+    if (!(o.targetRmse > 0.0)) fail("--target-rmse must be positive, not " + std::to_string(o.targetRmse));
+    for (int s = 0; s < o.seeds; ++s) {
+        const std::uint32_t seed = o.render.seed + static_cast<std::uint32_t>(s);
+        if (seed == kReferenceSeedA || seed == kReferenceSeedB)
+            fail("seed " + std::to_string(seed) + " is one of the reference's seeds; choose another --seed");
+    }
+}
+
+SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostream& log) {
+    validateSweepOptions(options);
+    SweepResult result;
+    result.devices = options.devices;
+    std::optional<Device> referenceDevice = options.referenceDevice;
+    if (!referenceDevice) referenceDevice = uses(options.devices, Device::Gpu) ? Device::Gpu : Device::Cpu;
+    std::unique_ptr<StudyRenderer> renderer = openRenderer(options, result.devices, referenceDevice, log);
+
+    const std::string sceneText = readText(options.scenePath);
+    const SceneAccel accel = buildSceneAccel(scene);
+    std::filesystem::create_directories(options.outDir);
+
+    ReferenceSpec spec;
+    spec.options = options.render;
+    spec.options.quiet = true;
+    spec.rpp = options.referenceRpp;
+    spec.sampler = options.referenceSampler;
+    spec.device = *referenceDevice;
+    const std::filesystem::path cacheDir = options.cacheDir.empty() ? defaultCacheDir() : options.cacheDir;
+    result.reference = loadOrRenderReference(*renderer, scene, accel, sceneText, spec, cacheDir, log);
+    const Reference& ref = result.reference;
+
+    // Interleaved (seed, rpp, sampler, device) order: the machine's speed drifts, and interleaving
+    // spreads the drift over every setting instead of biasing whichever ran last.
+    for (int s = 0; s < options.seeds; ++s)
+        for (int rpp : options.rpps)
+            for (SamplerKind sampler : options.samplers)
+                for (Device device : result.devices) {
+                    RenderOptions o = options.render;
+                    o.quiet = true;
+                    o.samplesPerPixel = rpp;
+                    o.sampler = sampler;
+                    o.seed = options.render.seed + static_cast<std::uint32_t>(s);
+                    const TimedRender r = renderer->render(device, scene, accel, o);
+                    SweepRow row{device, sampler, rpp, o.seed, r.seconds, measureError(r.image, ref.image, ref.masks)};
+                    result.rows.push_back(row);
+                    if (!options.render.quiet) {
+                        char line[160];
+                        std::snprintf(line, sizeof line, "%s %-8s %5d rpp seed %u: %8.3f s  rmse %.3e\n",
+                                      deviceName(device).c_str(), samplerName(sampler).c_str(), rpp, o.seed, r.seconds,
+                                      row.error.rmse);
+                        log << line << std::flush;
+                    }
+                }
+
+    result.csv = options.outDir / "sweep.csv";
+    writeSweepCsv(result.rows, result.csv);
+    result.points = summarize(result.rows);
+
+    SweepReportInput report;
+    report.scenePath = options.scenePath.string();
+    const RenderOptions& r = options.render;
+    std::ostringstream settings;
+    settings << r.width << "x" << r.height << ", max depth " << r.maxDepth << ", " << r.lightSamples
+             << " light sample(s) and " << r.glossSamples << " gloss sample(s) per pixel sample; rpp "
+             << joined(options.rpps) << "; " << options.seeds << " seed(s) from " << r.seed << "; devices:";
+    for (Device d : result.devices)
+        settings << " " << (d == Device::Gpu ? "gpu (" + renderer->gpuDeviceName() + ")" : std::string("cpu"));
+    settings << ". Time = wall time of one render call (scene loaded and BVH built beforehand; GPU kernel "
+                "compiled beforehand).";
+    report.settings = settings.str();
+    std::ostringstream refLine;
+    refLine << options.referenceRpp << " rpp, " << samplerName(spec.sampler) << " sampler, on the "
+            << deviceName(spec.device) << (ref.fromCache ? ", from the cache " : ", rendered in " + std::to_string(ref.seconds) + " s and cached as ")
+            << "`" << ref.imagePath.string() << "`.";
+    report.referenceLine = refLine.str();
+    const PixelMask* masks[4] = {nullptr, &ref.masks.edge, &ref.masks.penumbra, &ref.masks.gloss};
+    for (Region g : kRegions) {
+        const int i = static_cast<int>(g);
+        report.referenceMse[i] = meanOverRegion(ref.noise, masks[i]);
+        report.regionPixels[i] = masks[i] ? countPixels(*masks[i]) : ref.image.pixels.size();
+    }
+    report.points = result.points;
+    report.targetRmse = options.targetRmse;
+    report.files = {"sweep.csv", "error_vs_time.png", "error_vs_rpp.png", "regions.png (red edge, green penumbra, blue gloss)",
+                    "reference.png", "plots/ (gnuplot data and script)"};
+    result.report = options.outDir / "report.md";
+    writeSweepReport(report, result.report);
+    writeImage(masksToImage(ref.masks), (options.outDir / "regions.png").string());
+    writeImage(ref.image, (options.outDir / "reference.png").string());
+
+    std::array<double, 4> referenceRmse{};
+    for (int i = 0; i < 4; ++i) referenceRmse[i] = std::sqrt(report.referenceMse[i]);
+    result.plots = plotSweep(result.points, referenceRmse, report.regionPixels,
+                             options.scenePath.filename().string() + " " + std::to_string(r.width) + "x" + std::to_string(r.height),
+                             options.outDir);
+    return result;
+}
+
+}  // namespace vkrt::study

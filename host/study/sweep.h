@@ -1,0 +1,57 @@
+// `vkrt sweep`: the speed/accuracy trade of a scene, measured. Renders a converged reference
+// (reference_cache.h), then every (seed, rpp, sampler, device) setting, and writes under DIR:
+//   sweep.csv (one row per render), error_vs_time.png and error_vs_rpp.png (gnuplot),
+//   report.md (convergence slopes, the cheapest setting for a target error), plots/ (plot data).
+#pragma once
+
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
+#include <vector>
+
+#include "gnuplot_plots.h"
+#include "gpu_renderer.h"
+#include "reference_cache.h"
+#include "render_options.h"
+#include "scene.h"
+#include "sweep_types.h"
+
+namespace vkrt::study {
+
+struct SweepOptions {
+    std::filesystem::path scenePath;
+    std::filesystem::path outDir;
+    // Size, depth, light/gloss samples, background, camera, threads, quiet. `seed` is the first of
+    // the sweep's seeds (seed, seed + 1, ...); samplesPerPixel and sampler are ignored.
+    RenderOptions render;
+    std::vector<int> rpps{1, 4, 16, 64, 256};
+    int seeds = 3;
+    std::vector<SamplerKind> samplers{SamplerKind::Random, SamplerKind::Regular, SamplerKind::Jittered, SamplerKind::Sobol};
+    std::vector<Device> devices{Device::Gpu, Device::Cpu};
+    int referenceRpp = 4096;
+    std::optional<Device> referenceDevice;  // default: the GPU when the sweep uses it, else the CPU
+    SamplerKind referenceSampler = SamplerKind::Sobol;
+    std::filesystem::path cacheDir;          // empty: defaultCacheDir()
+    double targetRmse = 0.01;                // about 2.5 8-bit steps: noise is hard to see below it
+    GpuRendererOptions gpu;
+};
+
+struct SweepResult {
+    std::vector<SweepRow> rows;
+    std::vector<SweepPoint> points;
+    Reference reference;
+    std::vector<Device> devices;   // the devices actually swept
+    std::filesystem::path csv, report;
+    PlotFiles plots;
+};
+
+// Throws std::invalid_argument for bad options (naming the option and value).
+void validateSweepOptions(const SweepOptions& options);
+
+// `scene` was loaded from options.scenePath (its camera settled in options.render.camera).
+// Progress goes to `log`. Without a Vulkan device, a sweep that asked for both devices continues
+// on the CPU (with a note); one that asked for the GPU only throws VulkanUnavailable.
+// Throws std::runtime_error when gnuplot fails (sweep.csv and report.md are written by then).
+SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostream& log);
+
+}  // namespace vkrt::study

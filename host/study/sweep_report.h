@@ -1,0 +1,47 @@
+// DIR/report.md: what was swept, the fitted convergence slopes per device, sampler and region, and
+// the cheapest setting that reaches a target error.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "convergence_fit.h"
+#include "sweep_types.h"
+
+namespace vkrt::study {
+
+// Settings whose MSE in a region is below this multiple of the reference's own MSE there measure
+// the reference more than the render, and are left out of the slope fit.
+inline constexpr double kReferenceFloorFactor = 4.0;
+
+struct ConvergenceSlope {
+    Device device = Device::Cpu;
+    SamplerKind sampler = SamplerKind::Jittered;
+    Region region = Region::All;
+    LogLogFit fit;
+};
+
+// Slopes of log RMSE against log rpp per (device, sampler, region), over the points whose MSE
+// exceeds kReferenceFloorFactor x referenceMse[region].
+std::vector<ConvergenceSlope> fitSlopes(const std::vector<SweepPoint>& points, const std::array<double, 4>& referenceMse);
+
+// The cheapest (least mean time) point whose RMSE in `region` is <= target; nullopt if none.
+std::optional<SweepPoint> cheapestReaching(const std::vector<SweepPoint>& points, Region region, double target);
+
+struct SweepReportInput {
+    std::string scenePath;
+    std::string settings;                  // one line: size, depth, light/gloss samples, seeds
+    std::string referenceLine;             // how the reference was made and where it is cached
+    std::array<double, 4> referenceMse{};  // the reference's own estimated MSE per region
+    std::array<std::size_t, 4> regionPixels{};
+    std::vector<SweepPoint> points;
+    double targetRmse = 0.01;
+    std::vector<std::string> files;        // output files, relative to DIR
+};
+
+void writeSweepReport(const SweepReportInput& input, const std::filesystem::path& path);
+
+}  // namespace vkrt::study

@@ -1,0 +1,64 @@
+#include "sweep_types.h"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace vkrt::study {
+
+std::string regionName(Region region) {
+    switch (region) {
+    case Region::All: return "all";
+    case Region::Edge: return "edge";
+    case Region::Penumbra: return "penumbra";
+    case Region::Gloss: return "gloss";
+    }
+    return "unknown";
+}
+
+double rmseIn(const ErrorMetrics& e, Region region) {
+    switch (region) {
+    case Region::All: return e.rmse;
+    case Region::Edge: return e.rmseEdge;
+    case Region::Penumbra: return e.rmsePenumbra;
+    case Region::Gloss: return e.rmseGloss;
+    }
+    return e.rmse;
+}
+
+std::vector<SweepPoint> summarize(const std::vector<SweepRow>& rows) {
+    std::vector<std::pair<Device, SamplerKind>> series;
+    for (const SweepRow& r : rows)
+        if (std::find(series.begin(), series.end(), std::pair(r.device, r.sampler)) == series.end())
+            series.emplace_back(r.device, r.sampler);
+
+    std::vector<SweepPoint> points;
+    for (const auto& [device, sampler] : series) {
+        std::vector<int> rpps;
+        for (const SweepRow& r : rows)
+            if (r.device == device && r.sampler == sampler && std::find(rpps.begin(), rpps.end(), r.rpp) == rpps.end())
+                rpps.push_back(r.rpp);
+        std::sort(rpps.begin(), rpps.end());
+        for (int rpp : rpps) {
+            SweepPoint p;
+            p.device = device;
+            p.sampler = sampler;
+            p.rpp = rpp;
+            std::array<double, 4> mse{};
+            for (const SweepRow& r : rows) {
+                if (r.device != device || r.sampler != sampler || r.rpp != rpp) continue;
+                ++p.seeds;
+                p.seconds += r.seconds;
+                p.relMse += r.error.relMse;
+                for (Region g : kRegions) mse[static_cast<int>(g)] += rmseIn(r.error, g) * rmseIn(r.error, g);
+            }
+            p.seconds /= p.seeds;
+            p.relMse /= p.seeds;
+            for (int g = 0; g < 4; ++g) p.rmse[g] = std::sqrt(mse[g] / p.seeds);
+            points.push_back(p);
+        }
+    }
+    return points;
+}
+
+}  // namespace vkrt::study

@@ -1,0 +1,47 @@
+// What a sweep measures: one row per render, and the rows summarised per setting.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "error_metrics.h"
+#include "render_options.h"
+#include "study_renderer.h"
+
+namespace vkrt::study {
+
+// The regions errors are reported for (region_masks.h); All = every pixel.
+enum class Region { All = 0, Edge = 1, Penumbra = 2, Gloss = 3 };
+inline constexpr std::array<Region, 4> kRegions = {Region::All, Region::Edge, Region::Penumbra, Region::Gloss};
+std::string regionName(Region region);  // "all", "edge", "penumbra", "gloss"
+
+// One render of the sweep.
+struct SweepRow {
+    Device device = Device::Cpu;
+    SamplerKind sampler = SamplerKind::Jittered;
+    int rpp = 1;
+    std::uint32_t seed = 0;
+    double seconds = 0.0;
+    ErrorMetrics error;
+};
+
+double rmseIn(const ErrorMetrics& e, Region region);
+
+// One setting (device, sampler, rpp) over its seeds: mean time, and the RMSE of the pooled
+// squared errors (sqrt of the mean MSE over seeds), per region.
+struct SweepPoint {
+    Device device = Device::Cpu;
+    SamplerKind sampler = SamplerKind::Jittered;
+    int rpp = 1;
+    int seeds = 0;
+    double seconds = 0.0;
+    double relMse = 0.0;
+    std::array<double, 4> rmse{};  // indexed by Region
+};
+
+// Points in the order of first appearance of (device, sampler), rpp ascending.
+std::vector<SweepPoint> summarize(const std::vector<SweepRow>& rows);
+
+}  // namespace vkrt::study
