@@ -71,6 +71,12 @@ vk::raii::BufferView makeTexelView(const Context& context, const Buffer& buffer)
     return vk::raii::BufferView(context.device(), info);
 }
 
+std::uint64_t stableTexelBufferBytes(std::uint64_t bytes) {
+    auto unstable = [](std::uint64_t b) { return (b & (b - 1)) == 0 || ((b >> 8) & 0xff) == 0; };
+    while (unstable(bytes)) bytes += 16;  // at most 16 + 256 bytes more
+    return bytes;
+}
+
 namespace {
 
 constexpr vk::BufferUsageFlags kStagingUsage = vk::BufferUsageFlagBits::eTransferSrc | vk::BufferUsageFlagBits::eTransferDst;

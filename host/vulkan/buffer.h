@@ -43,6 +43,13 @@ private:
 // A typed view of a buffer for `usamplerBuffer` (RGBA32UI texels) reads.
 vk::raii::BufferView makeTexelView(const Context& context, const Buffer& buffer);
 
+// The size to give a texel buffer of `bytes` (a multiple of 16): a few zero texels more, so
+// that lavapipe compiles a kernel once per process instead of once per scene. llvmpipe (Mesa
+// 22.3) keys its compiled kernels on each bound texel buffer's "power-of-two width" and on a
+// "level zero only" bit that, for buffers, aliases bits 8-15 of the view's byte size; sizes
+// that are not powers of two and have a non-zero byte 1 give every scene the same key.
+std::uint64_t stableTexelBufferBytes(std::uint64_t bytes);
+
 // The index of a memory type allowed by `typeBits` with all of `required`, preferring one with
 // all of `preferred`; throws std::runtime_error naming the buffer when there is none.
 std::uint32_t chooseMemoryType(const vk::PhysicalDeviceMemoryProperties& memory, std::uint32_t typeBits,

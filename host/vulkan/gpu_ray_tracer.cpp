@@ -101,8 +101,8 @@ std::uint32_t batchRays(const Context& context) {
 std::uint32_t checkedBatch(const Context& context, const bvh::SceneBvh& bvh) {
     const std::uint32_t batch = batchRays(context);
     const BufferLimits& limits = context.limits();
-    checkBufferFits(limits, "BVH nodes", BufferKind::UniformTexel, paddedBytes(bvh.nodes));
-    checkBufferFits(limits, "primitives", BufferKind::UniformTexel, paddedBytes(bvh.prims));
+    checkBufferFits(limits, "BVH nodes", BufferKind::UniformTexel, stableTexelBufferBytes(paddedBytes(bvh.nodes)));
+    checkBufferFits(limits, "primitives", BufferKind::UniformTexel, stableTexelBufferBytes(paddedBytes(bvh.prims)));
     checkBufferFits(limits, "instances", BufferKind::Storage, paddedBytes(bvh.instances));
     checkTotalFits(limits, paddedBytes(bvh.nodes) + paddedBytes(bvh.prims) + paddedBytes(bvh.instances) +
                                std::uint64_t{batch} * (sizeof(gpu::TraceRayInput) + sizeof(gpu::TraceHitOutput)));
@@ -116,8 +116,8 @@ GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& opt
     : context(contextOptionsOf(options)), runner(context), transfers(context, runner), layout(traceLayout(context)),
       kernels(context, layout, loadKernel(traceSource(options))), features(traversalFeatures(bvh)),
       batch(checkedBatch(context, bvh)),
-      nodes(context, "BVH nodes", paddedBytes(bvh.nodes), kTexels, MemoryUse::Device),
-      prims(context, "primitives", paddedBytes(bvh.prims), kTexels, MemoryUse::Device),
+      nodes(context, "BVH nodes", stableTexelBufferBytes(paddedBytes(bvh.nodes)), kTexels, MemoryUse::Device),
+      prims(context, "primitives", stableTexelBufferBytes(paddedBytes(bvh.prims)), kTexels, MemoryUse::Device),
       instances(context, "instances", paddedBytes(bvh.instances), kStorage, MemoryUse::Device),
       frame(context, "frame parameters", sizeof(gpu::FrameParams),
             vk::BufferUsageFlagBits::eUniformBuffer | vk::BufferUsageFlagBits::eTransferDst, MemoryUse::Device),

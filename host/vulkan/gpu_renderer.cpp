@@ -92,6 +92,10 @@ Image GpuRenderer::render(const Scene& scene, const SceneAccel& accel, const Ren
     stats.uploadSeconds = secondsSince(start);
     stats.sceneBytes = gpuScene.bytes();
 
+    stats.warmUpSeconds = impl_->runner.run([&](const vk::raii::CommandBuffer& commands) {
+        recordWarmUp(commands, *pipeline, impl_->layout.pipelineLayout(), gpuScene.descriptorSet());
+    });
+
     TilingPolicy tiling = settings.tiling;
     tiling.maxWorkgroups = std::min(tiling.maxWorkgroups, impl_->context.info().maxWorkGroupCountX);
     const auto width = static_cast<std::uint32_t>(options.width);

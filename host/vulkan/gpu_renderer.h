@@ -49,6 +49,8 @@ struct GpuRenderStats {
     std::string features;         // the specialisation, FeatureSet::describe()
     bool generalKernel = false;
     double pipelineSeconds = 0.0; // creating the kernel variant (0 when it was cached)
+    double warmUpSeconds = 0.0;   // an empty dispatch: lavapipe's LLVM compile of the variant happens
+                                  // here (~0.1-1 s) the first time it meets these resources
     double uploadSeconds = 0.0;   // scene tables and BVH into device buffers
     double renderSeconds = 0.0;   // all submissions, first to last
     double readbackSeconds = 0.0;

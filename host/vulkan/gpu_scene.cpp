@@ -37,8 +37,8 @@ vk::BufferUsageFlags usageOf(BufferKind kind) {
 
 std::vector<BufferPlan> planSceneBuffers(const SceneTables& tables, const bvh::SceneBvh& bvh, std::uint64_t pixels) {
     std::vector<BufferPlan> plan(gpu::BINDING_STATUS + 1);
-    plan[gpu::BINDING_NODES] = {"BVH nodes", BufferKind::UniformTexel, bytesOf(bvh.nodes)};
-    plan[gpu::BINDING_PRIMS] = {"primitives", BufferKind::UniformTexel, bytesOf(bvh.prims)};
+    plan[gpu::BINDING_NODES] = {"BVH nodes", BufferKind::UniformTexel, stableTexelBufferBytes(bytesOf(bvh.nodes))};
+    plan[gpu::BINDING_PRIMS] = {"primitives", BufferKind::UniformTexel, stableTexelBufferBytes(bytesOf(bvh.prims))};
     plan[gpu::BINDING_PRIM_INFO] = {"primitive info", BufferKind::Storage, bytesOf(tables.primInfos)};
     plan[gpu::BINDING_VERTEX_ATTRIBS] = {"vertex attributes", BufferKind::Storage, bytesOf(tables.vertexAttribs)};
     plan[gpu::BINDING_INSTANCES] = {"instances", BufferKind::Storage, bytesOf(bvh.instances)};

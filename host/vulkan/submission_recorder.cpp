@@ -12,6 +12,18 @@ gpu::PassParams passParams(const TileRect& tile, std::uint32_t sample) {
     return p;
 }
 
+void recordWarmUp(const vk::raii::CommandBuffer& commands, vk::Pipeline pipeline, vk::PipelineLayout layout,
+                  vk::DescriptorSet set) {
+    gpu::PassParams params{};
+    params.pass = glm::uvec4(0u, 1u, 1u, 0u);  // sample 0, stride 1, one workgroup; tile 0x0 at (0, 0)
+    computeToComputeBarrier(commands);
+    commands.bindPipeline(vk::PipelineBindPoint::eCompute, pipeline);
+    commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, layout, 0, set, {});
+    commands.pushConstants<gpu::PassParams>(layout, vk::ShaderStageFlagBits::eCompute, 0, params);
+    commands.dispatch(1, 1, 1);
+    computeToHostBarrier(commands);
+}
+
 void recordSubmission(const vk::raii::CommandBuffer& commands, vk::Pipeline pipeline, vk::PipelineLayout layout,
                       vk::DescriptorSet set, const Submission& submission) {
     // The previous submission's additions to the accumulation buffer come first (in-order

@@ -13,6 +13,12 @@ namespace vkrt {
 // PassParams for sample `sample` of `tile` (device_host.h; render.comp's block mapping).
 gpu::PassParams passParams(const TileRect& tile, std::uint32_t sample);
 
+// One workgroup over an empty tile: computes nothing, but lavapipe JIT-compiles the pipeline for
+// the bound resources at its first dispatch, so this keeps compile time out of the first
+// measured submission.
+void recordWarmUp(const vk::raii::CommandBuffer& commands, vk::Pipeline pipeline, vk::PipelineLayout layout,
+                  vk::DescriptorSet set);
+
 void recordSubmission(const vk::raii::CommandBuffer& commands, vk::Pipeline pipeline, vk::PipelineLayout layout,
                       vk::DescriptorSet set, const Submission& submission);
 

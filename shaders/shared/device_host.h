@@ -177,6 +177,9 @@ struct RenderStatus {
 };
 
 // Push constants: which pixels and which sample this dispatch computes.
+// Dispatches may cover a run of the tile's workgroups only (vkCmdDispatchBase offsets
+// gl_WorkGroupID). A tile of width 0 (z = 0, pass.z = 1) must compute nothing: the host's
+// warm-up dispatch, which makes lavapipe compile the kernel before the first timed submission.
 struct PassParams {
     uvec4 tile;        // x, y origin, z width, w height (pixels)
     uvec4 pass;        // x sample index, y workgroup interleave stride, z workgroups, w unused

@@ -134,10 +134,22 @@ TEST(SceneBuffers, PlanPadsEmptyTablesToOneElement) {
     ASSERT_EQ(plan.size(), gpu::BINDING_STATUS + 1u);
     EXPECT_EQ(plan[gpu::BINDING_SHADERS].bytes, sizeof(gpu::Material));
     EXPECT_EQ(plan[gpu::BINDING_TEXELS].bytes, 4u);
-    EXPECT_EQ(plan[gpu::BINDING_NODES].bytes, 2 * sizeof(gpu::BvhNode));
+    EXPECT_EQ(plan[gpu::BINDING_NODES].bytes, stableTexelBufferBytes(2 * sizeof(gpu::BvhNode)));
     EXPECT_EQ(plan[gpu::BINDING_NODES].kind, BufferKind::UniformTexel);
     EXPECT_EQ(plan[gpu::BINDING_ACCUM].bytes, 10 * 16u);
     EXPECT_EQ(plan[gpu::BINDING_FRAME].kind, BufferKind::Uniform);
+}
+
+TEST(SceneBuffers, TexelBufferSizesAvoidLavapipesRecompileTriggers) {
+    for (std::uint64_t bytes : {16ull, 64ull, 128ull, 4096ull, 48ull * 1000, 65536ull, 65536ull * 3 + 16, 1ull << 27}) {
+        const std::uint64_t padded = stableTexelBufferBytes(bytes);
+        EXPECT_GE(padded, bytes);
+        EXPECT_LE(padded, bytes + 16 + 256);
+        EXPECT_EQ(padded % 16, 0u);
+        EXPECT_NE(padded & (padded - 1), 0u) << padded << " is a power of two";
+        EXPECT_NE((padded >> 8) & 0xff, 0u) << padded;
+    }
+    EXPECT_EQ(stableTexelBufferBytes(48 * 1000), 48u * 1000);  // already stable: unchanged
 }
 
 // A chain of `depth` inner nodes: node i has child 0 = node i+1 (inner) and child 1 = a leaf; the
