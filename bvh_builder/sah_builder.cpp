@@ -127,13 +127,31 @@ struct Bins {
 };
 
 // Bins a run of references. Neighbouring references of a mesh usually fall in the same bin, and
-// updating one bin twice in a row waits for the previous update; alternating two sets of bins
-// halves that dependency chain. min/max merging is exact, so the result is the same.
+// updating one bin twice in a row waits for the previous update; spreading consecutive references
+// over four sets of bins (two for short runs, where resetting and merging would dominate) breaks
+// that dependency chain. min/max merging is exact, so the result is the same.
 void binRefs(const PrimRef* refs, std::uint32_t n, const BinMapper& mapper, Bins& out) {
     out.reset(mapper.bins);
+    std::uint32_t i = 0;
+    if (n >= 256) {
+        Bins b1, b2, b3;
+        b1.reset(mapper.bins);
+        b2.reset(mapper.bins);
+        b3.reset(mapper.bins);
+        for (; i + 3 < n; i += 4) {
+            out.add(refs[i], mapper);
+            b1.add(refs[i + 1], mapper);
+            b2.add(refs[i + 2], mapper);
+            b3.add(refs[i + 3], mapper);
+        }
+        for (; i < n; ++i) out.add(refs[i], mapper);
+        b1.merge(b3, mapper.bins);
+        out.merge(b2, mapper.bins);
+        out.merge(b1, mapper.bins);
+        return;
+    }
     Bins odd;
     odd.reset(mapper.bins);
-    std::uint32_t i = 0;
     for (; i + 1 < n; i += 2) {
         out.add(refs[i], mapper);
         odd.add(refs[i + 1], mapper);
@@ -247,11 +265,11 @@ void Builder::partitionByBin(const Range& r, const BinMapper::Axis& map, int pla
         PrimRef* base = refs_.data() + r.begin;
         std::uint32_t l = 0, rr = n;  // left refs fill scratch[0, l), right refs scratch[rr, n) backwards
         for (std::uint32_t i = 0; i < n; ++i) {
-            const bool goesLeft = map(base[i]) < plane;
+            const auto goesLeft = static_cast<std::uint32_t>(map(base[i]) < plane);
             scratch[l] = base[i];
             scratch[rr - 1] = base[i];
-            l += goesLeft ? 1 : 0;
-            rr -= goesLeft ? 0 : 1;
+            l += goesLeft;
+            rr -= 1u - goesLeft;
         }
         std::copy(scratch, scratch + l, base);
         std::reverse_copy(scratch + l, scratch + n, base + l);  // keep the right side's order too
@@ -306,37 +324,47 @@ bool Builder::splitSmall(const Range& r, Range& left, Range& right) {
     PrimRef* base = refs_.data() + r.begin;
     const float nodeArea = r.bounds.halfArea();
     const float areaScale = nodeArea > 0.0f ? p_.intersectionCost / nodeArea : 0.0f;
-    // Sort keys: the centroid's bits mapped to an order-preserving unsigned integer, then the
-    // position, in one 64-bit word (one comparison per step, no tie-break branch).
-    auto key = [](float c, std::uint32_t i) {
-        const auto bits = std::bit_cast<std::uint32_t>(c);
-        const std::uint32_t ordered = (bits & 0x80000000u) ? ~bits : (bits | 0x80000000u);
-        return (std::uint64_t{ordered} << 32) | i;
-    };
-    auto index = [](std::uint64_t k) { return static_cast<std::uint32_t>(k); };
-    std::array<std::uint64_t, kSweepSize> order{}, bestOrder{};
-    std::array<float, kSweepSize> rightArea{};
+    // Sort keys: the centroid's bits mapped to an order-preserving signed integer whose low 4 bits
+    // are replaced by the position (centroids closer than 2^-19 relative sort by position), so
+    // the keys are distinct and the order is deterministic.
+    alignas(16) std::int32_t keys[kSweepSize];
+    std::array<std::uint8_t, kSweepSize> order, bestOrder;
+    std::array<float, kSweepSize> rightArea;
     Split best;
     for (int a = 0; a < 3 && nodeArea > 0.0f; ++a) {
         if (!(lane(r.centroids.hi, a) > lane(r.centroids.lo, a))) continue;
-        std::array<std::uint64_t, kSweepSize> keys{};
-        for (std::uint32_t i = 0; i < n; ++i) keys[i] = key(lane(base[i].centroid2(), a), i);
-        // Sorted by rank (the keys are distinct): n^2 <= 256 branch-free comparisons beat an
-        // insertion sort's unpredictable branches.
+        for (std::uint32_t i = 0; i < kSweepSize; ++i) {
+            if (i >= n) {
+                keys[i] = INT32_MAX;  // padding: never below a real key
+                continue;
+            }
+            const auto bits = std::bit_cast<std::uint32_t>(lane(base[i].centroid2(), a));
+            const std::uint32_t ordered = (bits & 0x80000000u) ? ~bits : (bits | 0x80000000u);
+            keys[i] = static_cast<std::int32_t>(((ordered ^ 0x80000000u) & ~0xFu) | i);
+        }
+        // Sorted by rank, 4 keys per SSE comparison: branch-free, where an insertion sort's
+        // branches are coin flips.
+        const __m128i k0 = _mm_load_si128(reinterpret_cast<const __m128i*>(keys));
+        const __m128i k1 = _mm_load_si128(reinterpret_cast<const __m128i*>(keys + 4));
+        const __m128i k2 = _mm_load_si128(reinterpret_cast<const __m128i*>(keys + 8));
+        const __m128i k3 = _mm_load_si128(reinterpret_cast<const __m128i*>(keys + 12));
         for (std::uint32_t i = 0; i < n; ++i) {
-            std::uint32_t rank = 0;
-            for (std::uint32_t j = 0; j < kSweepSize; ++j) rank += (j < n && keys[j] < keys[i]) ? 1u : 0u;
-            order[rank] = keys[i];
+            const __m128i ki = _mm_set1_epi32(keys[i]);
+            const int below = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmplt_epi32(k0, ki))) |
+                              (_mm_movemask_ps(_mm_castsi128_ps(_mm_cmplt_epi32(k1, ki))) << 4) |
+                              (_mm_movemask_ps(_mm_castsi128_ps(_mm_cmplt_epi32(k2, ki))) << 8) |
+                              (_mm_movemask_ps(_mm_castsi128_ps(_mm_cmplt_epi32(k3, ki))) << 12);
+            order[std::popcount(static_cast<unsigned>(below))] = static_cast<std::uint8_t>(i);
         }
         Box4 acc;
         for (std::uint32_t j = n - 1; j > 0; --j) {
-            acc.grow(base[index(order[j])].lo, base[index(order[j])].hi);
+            acc.grow(base[order[j]].lo, base[order[j]].hi);
             rightArea[j] = halfArea(acc.lo, acc.hi);
         }
         acc = Box4{};
         bool improved = false;
         for (std::uint32_t j = 1; j < n; ++j) {
-            acc.grow(base[index(order[j - 1])].lo, base[index(order[j - 1])].hi);
+            acc.grow(base[order[j - 1]].lo, base[order[j - 1]].hi);
             const float cost = p_.traversalCost + areaScale * (halfArea(acc.lo, acc.hi) * static_cast<float>(j) +
                                                                rightArea[j] * static_cast<float>(n - j));
             if (best.axis < 0 || cost < best.cost) {
@@ -353,7 +381,7 @@ bool Builder::splitSmall(const Range& r, Range& left, Range& right) {
         return true;
     }
     std::array<PrimRef, kSweepSize> sorted;
-    for (std::uint32_t i = 0; i < n; ++i) sorted[i] = base[index(bestOrder[i])];
+    for (std::uint32_t i = 0; i < n; ++i) sorted[i] = base[bestOrder[i]];
     std::copy(sorted.begin(), sorted.begin() + n, base);
     childRanges(r, r.begin + static_cast<std::uint32_t>(best.plane), left, right);
     return true;
