@@ -8,8 +8,8 @@
 //    cost of a leaf: C_isect * N.
 //  - A node becomes a leaf when it holds <= maxLeafSize primitives and no split is cheaper;
 //    above maxLeafSize it is always split.
-//  - Nodes of at most 16 references evaluate every split between consecutive centroids on each
-//    axis instead (a superset of the planes 16 bins could offer, at a lower cost for tiny nodes).
+//  - Nodes of at most 16 references evaluate every split between consecutive centroids along the
+//    widest centroid axis instead (on that axis a superset of the planes 16 bins could offer).
 //  - When the centroids cannot be binned (all identical), or the SAH split would let the tree grow
 //    deeper than maxDepth, the node is split at the median along its widest centroid axis (by count
 //    when every centroid is identical), so the build always terminates and the depth stays bounded.
