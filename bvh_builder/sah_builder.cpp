@@ -227,19 +227,19 @@ public:
 
 private:
     // Splits a range into two children, or returns false when it becomes a leaf.
-    // scratch: room for the range's references (subtree jobs), or null (the top phase).
-    bool split(const Range& r, PrimRef* scratch, Range& left, Range& right);
+    // branchFree: the partition subtree jobs use (see partitionByBin).
+    bool split(const Range& r, bool branchFree, Range& left, Range& right);
     bool splitSmall(const Range& r, Range& left, Range& right);
     // For ranges above kSweepSize: what to do given the range's bins, and doing it.
     Decision decideLarge(const Range& r, const Bins& bins, const BinMapper& mapper) const;
-    void apply(const Range& r, const Decision& d, const BinMapper& mapper, PrimRef* scratch, Range& left, Range& right);
-    void partitionByBin(const Range& r, const BinMapper::Axis& map, int plane, PrimRef* scratch, Range& left,
+    void apply(const Range& r, const Decision& d, const BinMapper& mapper, bool branchFree, Range& left, Range& right);
+    void partitionByBin(const Range& r, const BinMapper::Axis& map, int plane, bool branchFree, Range& left,
                         Range& right);
     void splitMedian(const Range& r, Range& left, Range& right);
     void childRanges(const Range& r, std::uint32_t mid, Range& left, Range& right);
     bool keepsDepthBound(const Range& r, std::uint32_t leftSize) const;
     // Builds the subtree of r into nodes[next...]; returns its root.
-    std::uint32_t buildSubtree(const Range& r, BuildNode* nodes, std::uint32_t& next, PrimRef* scratch);
+    std::uint32_t buildSubtree(const Range& r, BuildNode* nodes, std::uint32_t& next);
 
     std::span<PrimRef> refs_;
     const SahParams& p_;
@@ -255,24 +255,20 @@ void Builder::childRanges(const Range& r, std::uint32_t mid, Range& left, Range&
 }
 
 // Two partitions, chosen by who calls (never by the thread count): subtree jobs use a branch-free
-// stable partition through a scratch buffer (whether a reference goes left is a coin flip for the
-// branch predictor; writing it to both sides and advancing one costs no misprediction); the top
-// phase, whose ranges have no scratch, partitions in place (Hoare).
-void Builder::partitionByBin(const Range& r, const BinMapper::Axis& map, int plane, PrimRef* scratch, Range& left,
+// Lomuto partition (whether a reference goes left is a coin flip for the branch predictor, so
+// every reference is swapped and the boundary advanced by the comparison's 0 or 1); the top phase
+// uses Hoare's, which moves fewer references through memory for the large ranges it handles.
+void Builder::partitionByBin(const Range& r, const BinMapper::Axis& map, int plane, bool branchFree, Range& left,
                              Range& right) {
-    if (scratch) {
-        const std::uint32_t n = r.size();
+    if (branchFree) {
         PrimRef* base = refs_.data() + r.begin;
-        std::uint32_t l = 0, rr = n;  // left refs fill scratch[0, l), right refs scratch[rr, n) backwards
-        for (std::uint32_t i = 0; i < n; ++i) {
-            const auto goesLeft = static_cast<std::uint32_t>(map(base[i]) < plane);
-            scratch[l] = base[i];
-            scratch[rr - 1] = base[i];
-            l += goesLeft;
-            rr -= 1u - goesLeft;
+        std::uint32_t l = 0;  // [0, l) go left, [l, i) go right
+        for (std::uint32_t i = 0; i < r.size(); ++i) {
+            const PrimRef x = base[i];
+            base[i] = base[l];
+            base[l] = x;
+            l += static_cast<std::uint32_t>(map(x) < plane);
         }
-        std::copy(scratch, scratch + l, base);
-        std::reverse_copy(scratch + l, scratch + n, base + l);  // keep the right side's order too
         childRanges(r, r.begin + l, left, right);
         return;
     }
@@ -396,17 +392,17 @@ Decision Builder::decideLarge(const Range& r, const Bins& bins, const BinMapper&
     return {Decision::Binned, s.axis, s.plane};
 }
 
-void Builder::apply(const Range& r, const Decision& d, const BinMapper& mapper, PrimRef* scratch, Range& left,
+void Builder::apply(const Range& r, const Decision& d, const BinMapper& mapper, bool branchFree, Range& left,
                     Range& right) {
     if (d.kind == Decision::Median) {
         splitMedian(r, left, right);
         return;
     }
-    partitionByBin(r, mapper.axis(d.axis), d.plane, scratch, left, right);
+    partitionByBin(r, mapper.axis(d.axis), d.plane, branchFree, left, right);
     if (left.size() == 0 || right.size() == 0 || !keepsDepthBound(r, left.size())) splitMedian(r, left, right);
 }
 
-bool Builder::split(const Range& r, PrimRef* scratch, Range& left, Range& right) {
+bool Builder::split(const Range& r, bool branchFree, Range& left, Range& right) {
     const std::uint32_t n = r.size();
     const auto maxLeaf = static_cast<std::uint32_t>(p_.maxLeafSize);
     if (n <= 1) return false;
@@ -417,18 +413,18 @@ bool Builder::split(const Range& r, PrimRef* scratch, Range& left, Range& right)
     if (mapper.anyUsable()) binRefs(refs_.data() + r.begin, n, mapper, bins);
     const Decision d = decideLarge(r, bins, mapper);
     if (d.kind == Decision::Leaf) return false;
-    apply(r, d, mapper, scratch, left, right);
+    apply(r, d, mapper, branchFree, left, right);
     return true;
 }
 
-std::uint32_t Builder::buildSubtree(const Range& r, BuildNode* nodes, std::uint32_t& next, PrimRef* scratch) {
+std::uint32_t Builder::buildSubtree(const Range& r, BuildNode* nodes, std::uint32_t& next) {
     const std::uint32_t index = next++;
     const Aabb box = r.bounds.toAabb();
     nodes[index] = BuildNode::leafNode(box, r.begin, r.size());
     Range left, right;
-    if (!split(r, scratch, left, right)) return index;
-    const std::uint32_t l = buildSubtree(left, nodes, next, scratch);
-    const std::uint32_t rr = buildSubtree(right, nodes, next, scratch);
+    if (!split(r, true, left, right)) return index;
+    const std::uint32_t l = buildSubtree(left, nodes, next);
+    const std::uint32_t rr = buildSubtree(right, nodes, next);
     nodes[index] = BuildNode::innerNode(box, l, rr);
     return index;
 }
@@ -492,7 +488,7 @@ BuildTree Builder::run() {
         }
         std::vector<std::pair<Range, Range>> children(big.size());
         pool_.parallelFor(big.size(), [&](std::size_t i) {
-            apply(big[i].range, decisions[i], mappers[i], nullptr, children[i].first, children[i].second);
+            apply(big[i].range, decisions[i], mappers[i], false, children[i].first, children[i].second);
         });
         for (std::size_t i = 0; i < big.size(); ++i) {
             const auto index = static_cast<std::uint32_t>(top.size());
@@ -519,17 +515,12 @@ BuildTree Builder::run() {
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return jobs[a].range.size() > jobs[b].range.size(); });
-    // One partition scratch buffer per thread, as large as the largest job, reused job after job.
-    std::uint32_t largestJob = 0;
-    for (const Job& job : jobs) largestJob = std::max(largestJob, job.range.size());
-    std::vector<HugeArray<PrimRef>> scratch(static_cast<std::size_t>(pool_.size()));
-    pool_.parallelFor(jobs.size(), std::function<void(std::size_t, int)>([&](std::size_t k, int worker) {
+    pool_.parallelFor(jobs.size(), [&](std::size_t k) {
         Job& job = jobs[order[k]];
         std::uint32_t next = job.offset;
-        if (!scratch[worker]) scratch[worker] = HugeArray<PrimRef>(largestJob, false);
-        job.root = buildSubtree(job.range, tree.nodes.get(), next, scratch[worker].get());
+        job.root = buildSubtree(job.range, tree.nodes.get(), next);
         job.inner = (next - job.offset - 1) / 2;  // a full binary tree: inner = leaves - 1
-    }));
+    });
     tree.root = 0;
     tree.topCount = static_cast<std::uint32_t>(top.size());
     for (const Job& job : jobs) {

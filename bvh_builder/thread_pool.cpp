@@ -7,7 +7,7 @@ namespace vkrt::bvh {
 
 ThreadPool::ThreadPool(int threads) {
     if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    for (int i = 1; i < threads; ++i) workers_.emplace_back([this, i] { workerLoop(i); });
+    for (int i = 1; i < threads; ++i) workers_.emplace_back([this] { workerLoop(); });
 }
 
 ThreadPool::~ThreadPool() {
@@ -21,7 +21,7 @@ ThreadPool::~ThreadPool() {
 
 // Claims and runs items of the current job until none are left. Items are coarse (a chunk of
 // primitives, a subtree, a group), so a mutex per claim costs nothing measurable.
-void ThreadPool::drain(int worker) {
+void ThreadPool::drain() {
     std::unique_lock lock(mutex_);
     while (job_ && next_ < jobCount_) {
         const std::size_t i = next_++;
@@ -29,7 +29,7 @@ void ThreadPool::drain(int worker) {
         lock.unlock();
         std::exception_ptr error;
         try {
-            (*fn)(i, worker);
+            (*fn)(i);
         } catch (...) {
             error = std::current_exception();
         }
@@ -39,7 +39,7 @@ void ThreadPool::drain(int worker) {
     }
 }
 
-void ThreadPool::workerLoop(int worker) {
+void ThreadPool::workerLoop() {
     std::size_t seen = 0;
     for (;;) {
         {
@@ -48,21 +48,17 @@ void ThreadPool::workerLoop(int worker) {
             if (stopping_) return;
             seen = generation_;
         }
-        drain(worker);
+        drain();
     }
 }
 
 void ThreadPool::parallelFor(std::size_t count, const std::function<void(std::size_t)>& fn) {
-    parallelFor(count, std::function<void(std::size_t, int)>([&fn](std::size_t i, int) { fn(i); }));
-}
-
-void ThreadPool::parallelFor(std::size_t count, const std::function<void(std::size_t, int)>& fn) {
     if (count == 0) return;
     if (workers_.empty() || count == 1) {
         std::exception_ptr error;
         for (std::size_t i = 0; i < count; ++i) {
             try {
-                fn(i, 0);
+                fn(i);
             } catch (...) {
                 if (!error) error = std::current_exception();
             }
@@ -80,7 +76,7 @@ void ThreadPool::parallelFor(std::size_t count, const std::function<void(std::si
         ++generation_;
     }
     wake_.notify_all();
-    drain(0);
+    drain();
     std::unique_lock lock(mutex_);
     done_.wait(lock, [&] { return finished_ == jobCount_; });
     job_ = nullptr;

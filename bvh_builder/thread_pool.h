@@ -28,19 +28,16 @@ public:
     // Not reentrant: fn must not call parallelFor. The first exception thrown by fn is rethrown
     // here after every other item has run.
     void parallelFor(std::size_t count, const std::function<void(std::size_t)>& fn);
-    // The same, also telling fn which thread runs it (0 = the caller, up to size() - 1), so
-    // callers can reuse per-thread scratch memory.
-    void parallelFor(std::size_t count, const std::function<void(std::size_t, int)>& fn);
 
 private:
-    void workerLoop(int worker);
-    void drain(int worker);
+    void workerLoop();
+    void drain();
 
     std::vector<std::thread> workers_;
     std::mutex mutex_;
     std::condition_variable wake_;
     std::condition_variable done_;
-    const std::function<void(std::size_t, int)>* job_ = nullptr;
+    const std::function<void(std::size_t)>* job_ = nullptr;
     std::size_t jobCount_ = 0;
     std::size_t next_ = 0;       // next item to claim (under mutex_)
     std::size_t finished_ = 0;   // items completed (under mutex_)
