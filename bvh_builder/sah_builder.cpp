@@ -13,6 +13,8 @@ namespace {
 constexpr int kMaxBins = 64;
 // Nodes with at most this many references use the exact sweep instead of bins.
 constexpr std::uint32_t kSweepSize = 16;
+// Nodes with at most this many references (in subtree jobs) bin only their widest centroid axis.
+constexpr std::uint32_t kWidestAxisOnly = 64;
 // Above this many references a node's binning is spread over the pool, and its children are
 // split further before being handed out as subtree jobs; below it one thread builds the subtree.
 constexpr std::uint32_t kParallelNodeSize = 16 * 1024;
@@ -72,6 +74,15 @@ struct BinMapper {
         scale = _mm_load_ps(s);
     }
     bool anyUsable() const { return usable[0] || usable[1] || usable[2]; }
+    // Keeps only the usable axis of largest centroid extent (see kWidestAxisOnly).
+    void keepWidestAxis(const Box4& centroids) {
+        int w = -1;
+        for (int a = 0; a < 3; ++a)
+            if (usable[a] && (w < 0 || lane(centroids.hi, a) - lane(centroids.lo, a) >
+                                           lane(centroids.hi, w) - lane(centroids.lo, w)))
+                w = a;
+        for (int a = 0; a < 3; ++a) usable[a] = a == w;
+    }
     // Bin index per axis; unusable axes map everything to bin 0.
     __m128i binOf(__m128 centroid2) const {
         __m128 f = _mm_mul_ps(_mm_sub_ps(centroid2, origin), scale);
@@ -96,14 +107,21 @@ struct Bins {
     __m128 lo[3][kMaxBins], hi[3][kMaxBins];
     std::uint32_t count[3][kMaxBins];
 
-    void reset(int bins) {
+    void reset(int bins, int onlyAxis = -1) {
         const __m128 big = _mm_set1_ps(FLT_MAX), small = _mm_set1_ps(-FLT_MAX);
-        for (int a = 0; a < 3; ++a)
+        for (int a = 0; a < 3; ++a) {
+            if (onlyAxis >= 0 && a != onlyAxis) continue;
             for (int i = 0; i < bins; ++i) {
                 lo[a][i] = big;
                 hi[a][i] = small;
                 count[a][i] = 0;
             }
+        }
+    }
+    void addAxis(const PrimRef& r, int b, int a) {
+        lo[a][b] = _mm_min_ps(lo[a][b], r.lo);
+        hi[a][b] = _mm_max_ps(hi[a][b], r.hi);
+        ++count[a][b];
     }
     void add(const PrimRef& r, const BinMapper& mapper) {
         // Lanes are extracted in registers: storing the vector and reloading single lanes would
@@ -131,6 +149,27 @@ struct Bins {
 // over four sets of bins (two for short runs, where resetting and merging would dominate) breaks
 // that dependency chain. min/max merging is exact, so the result is the same.
 void binRefs(const PrimRef* refs, std::uint32_t n, const BinMapper& mapper, Bins& out) {
+    const int single = mapper.usable[0] + mapper.usable[1] + mapper.usable[2] == 1
+                           ? (mapper.usable[0] ? 0 : mapper.usable[1] ? 1 : 2) : -1;
+    if (single >= 0) {
+        // One axis (kWidestAxisOnly): the scalar mapping the partition uses, one bin update.
+        const BinMapper::Axis map = mapper.axis(single);
+        Bins odd;
+        out.reset(mapper.bins, single);
+        odd.reset(mapper.bins, single);
+        std::uint32_t i = 0;
+        for (; i + 1 < n; i += 2) {
+            out.addAxis(refs[i], map(refs[i]), single);
+            odd.addAxis(refs[i + 1], map(refs[i + 1]), single);
+        }
+        if (i < n) out.addAxis(refs[i], map(refs[i]), single);
+        for (int k = 0; k < mapper.bins; ++k) {
+            out.lo[single][k] = _mm_min_ps(out.lo[single][k], odd.lo[single][k]);
+            out.hi[single][k] = _mm_max_ps(out.hi[single][k], odd.hi[single][k]);
+            out.count[single][k] += odd.count[single][k];
+        }
+        return;
+    }
     out.reset(mapper.bins);
     std::uint32_t i = 0;
     if (n >= 256) {
@@ -408,7 +447,8 @@ bool Builder::split(const Range& r, bool branchFree, Range& left, Range& right) 
     if (n <= 1) return false;
     if (r.level > p_.maxDepth && n <= maxLeaf) return false;  // only reached when the depth bound is tight
     if (n <= kSweepSize) return splitSmall(r, left, right);
-    const BinMapper mapper(r.centroids, p_.bins);
+    BinMapper mapper(r.centroids, p_.bins);
+    if (n <= kWidestAxisOnly) mapper.keepWidestAxis(r.centroids);
     Bins bins;
     if (mapper.anyUsable()) binRefs(refs_.data() + r.begin, n, mapper, bins);
     const Decision d = decideLarge(r, bins, mapper);
