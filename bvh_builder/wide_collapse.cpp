@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 
 #include "node_layout.h"
 
@@ -10,8 +11,10 @@ namespace vkrt::bvh {
 namespace {
 
 struct Slot {
-    Aabb box;
-    std::uint32_t link = gpu::NODE_NONE, count = 0;
+    const float* box;  // the two-child node's 6 floats for this child, see readBox
+    int k;             // which child of that node (selects the lanes)
+    float area;        // half surface area, computed once
+    std::uint32_t link, count;
     bool inner() const { return count == 0 && link != gpu::NODE_NONE; }
 };
 
@@ -33,11 +36,15 @@ public:
         auto addChildren = [&](std::uint32_t index, int at) {
             // Inserts the non-empty child slots of a two-child node at position `at`.
             const gpu::BvhNode& src = nodes_[index];
+            const auto* f = reinterpret_cast<const float*>(&src);
             for (int k = 0; k < 2; ++k) {
-                const Slot s{childBox(src, k), childLink(src, k), childCount(src, k)};
-                if (s.count == 0 && s.link == gpu::NODE_NONE) continue;
+                const std::uint32_t link = childLink(src, k), count = childCount(src, k);
+                if (count == 0 && link == gpu::NODE_NONE) continue;
+                const float* xy = f + 4 * k;
+                const float* z = f + 8 + 2 * k;
+                const float ex = xy[1] - xy[0], ey = xy[3] - xy[2], ez = z[1] - z[0];
                 for (int j = n; j > at; --j) slots[j] = slots[j - 1];
-                slots[at++] = s;
+                slots[at++] = {f, k, ex * ey + ey * ez + ez * ex, link, count};
                 ++n;
             }
         };
@@ -47,8 +54,7 @@ public:
         for (;;) {
             int widest = -1;
             for (int k = 0; k < n; ++k)
-                if (slots[k].inner() && block(slots[k].link) < 0 &&
-                    (widest < 0 || slots[k].box.halfArea() > slots[widest].box.halfArea()))
+                if (slots[k].inner() && block(slots[k].link) < 0 && (widest < 0 || slots[k].area > slots[widest].area))
                     widest = k;
             if (widest < 0 || n + 1 > 4) break;
             const std::uint32_t open = slots[widest].link;
@@ -58,7 +64,7 @@ public:
         }
         const auto index = static_cast<std::uint32_t>(out_.size());
         out_.emplace_back();
-        std::array<std::uint32_t, 4> links{};
+        std::array<std::uint32_t, 4> links;
         for (int k = 0; k < n; ++k) {
             if (!slots[k].inner()) links[k] = slots[k].link;
             else if (const int b = block(slots[k].link); b >= 0) links[k] = kBlockLink | static_cast<std::uint32_t>(b);
@@ -66,15 +72,22 @@ public:
         }
         WideNode& w = out_[index];
         for (int k = 0; k < 4; ++k) {
-            const Slot s = k < n ? slots[k] : Slot{};
-            w.bounds[0][k] = s.box.lo.x;
-            w.bounds[1][k] = s.box.hi.x;
-            w.bounds[2][k] = s.box.lo.y;
-            w.bounds[3][k] = s.box.hi.y;
-            w.bounds[4][k] = s.box.lo.z;
-            w.bounds[5][k] = s.box.hi.z;
-            w.link[k] = k < n ? links[k] : gpu::NODE_NONE;
-            w.count[k] = s.count;
+            if (k >= n) {  // empty slot: the empty box (see wide_bvh.h)
+                for (int row = 0; row < 6; ++row) w.bounds[row][k] = (row % 2) ? -FLT_MAX : FLT_MAX;
+                w.link[k] = gpu::NODE_NONE;
+                w.count[k] = 0;
+                continue;
+            }
+            const float* xy = slots[k].box + 4 * slots[k].k;
+            const float* z = slots[k].box + 8 + 2 * slots[k].k;
+            w.bounds[0][k] = xy[0];
+            w.bounds[1][k] = xy[1];
+            w.bounds[2][k] = xy[2];
+            w.bounds[3][k] = xy[3];
+            w.bounds[4][k] = z[0];
+            w.bounds[5][k] = z[1];
+            w.link[k] = links[k];
+            w.count[k] = slots[k].count;
         }
         return index;
     }
