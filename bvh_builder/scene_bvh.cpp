@@ -158,6 +158,7 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
     for (std::size_t g = 0; g < groups.size(); ++g)
         bvh.cpu.groupRoots.push_back(collapseTree(bvh.nodes, bvh.groups[g].rootNode, groupBlocks[g].first,
                                                   groupBlocks[g].second, pool, bvh.cpu.nodes));
+    for (const InstanceInput& in : instances) bvh.cpu.identity.push_back(in.objectToWorld == glm::mat4(1.0f) ? 1 : 0);
     bvh.cpu.topRoot = collapseTree(bvh.nodes, bvh.topRoot, top.blockRoots, top.blockSizes, pool, bvh.cpu.nodes);
     bvh.stats.nodeCount = bvh.nodes.size();
     bvh.stats.bytes = bvh.nodes.size() * sizeof(gpu::BvhNode) + bvh.prims.size() * sizeof(gpu::Primitive) +

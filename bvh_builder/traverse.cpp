@@ -161,9 +161,10 @@ bool trace(const SceneBvh& bvh, const Ray& ray, Hit* out) {
     walk(bvh.cpu.nodes, bvh.cpu.topRoot, worldRay, tmax, [&](std::uint32_t instanceIndex, std::uint32_t count) {
         for (std::uint32_t i = instanceIndex; i < instanceIndex + count; ++i) {
             const gpu::Instance& inst = bvh.instances[i];
-            const glm::vec3 o = transformPoint(inst.worldToObject, ray.origin);
-            const glm::vec3 d = transformVector(inst.worldToObject, ray.dir);
-            const NodeRay objectRay(o, d);
+            const bool identity = bvh.cpu.identity[i] != 0;
+            const glm::vec3 o = identity ? ray.origin : transformPoint(inst.worldToObject, ray.origin);
+            const glm::vec3 d = identity ? ray.dir : transformVector(inst.worldToObject, ray.dir);
+            const NodeRay objectRay = identity ? worldRay : NodeRay(o, d);
             const WatertightRay wr(o, d);
             bool stop = false;
             walk(bvh.cpu.nodes, bvh.cpu.groupRoots[inst.info.z], objectRay, tmax, [&](std::uint32_t first, std::uint32_t n) {
