@@ -112,10 +112,11 @@ PlotFiles plotSweep(const std::vector<SweepPoint>& points, const std::array<doub
             if (!anyData) {
                 // An empty region still gets its panel, so the layout does not shift.
                 gp << "unset key\nset label 1 'no pixels in this region' at graph 0.5,0.5 center\n"
-                   << "plot [1:10] [1:10] NaN notitle\nunset label 1\nset key bottom left box opaque\n";
+                   << "plot [1:10] [1:10] NaN notitle\nunset label 1\n";
                 continue;
             }
-            gp << "plot ";
+            // One legend, in the first panel: the colours and dashes mean the same in every panel.
+            gp << (region == Region::All ? "set key bottom left box opaque\n" : "unset key\n") << "plot ";
             for (std::size_t s = 0; s < series.size(); ++s) {
                 const bool gpu = series[s].device == Device::Gpu;
                 gp << (s ? ", \\\n     " : "") << quoted(series[s].data.string()) << " using " << (byTime ? 2 : 1) << ':'

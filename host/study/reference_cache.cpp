@@ -16,9 +16,11 @@ namespace vkrt::study {
 
 namespace {
 
-// Bump when the meaning of a cached file changes (the image definition, the noise estimate, the
-// masks), so that old cache entries are not reused.
+// Bump when the meaning of the cached reference or noise changes (the image definition, the noise
+// estimate), so that old cache entries are not reused. The masks have their own version in their
+// file name: they are cheap to recompute and change independently.
 constexpr int kCacheFormat = 1;
+constexpr int kMasksFormat = 2;
 
 std::string hexFloat(float v) {
     char buf[32];
@@ -74,13 +76,27 @@ Reference loadOrRenderReference(StudyRenderer& renderer, const Scene& scene, con
     const std::filesystem::path dir = cacheDir / "references";
     ref.imagePath = dir / (ref.key + ".exr");
     const std::filesystem::path noisePath = dir / (ref.key + "_noise.exr");
-    const std::filesystem::path masksPath = dir / (ref.key + "_masks.png");
+    const std::filesystem::path masksPath = dir / (ref.key + "_masks_v" + std::to_string(kMasksFormat) + ".png");
     const std::filesystem::path infoPath = dir / (ref.key + ".txt");
 
-    if (std::filesystem::exists(ref.imagePath) && std::filesystem::exists(noisePath) && std::filesystem::exists(masksPath)) {
+    ProbeOptions probe;
+    probe.threads = spec.options.threads;
+    auto loadOrFindMasks = [&] {
+        if (std::filesystem::exists(masksPath)) {
+            ref.masks = masksFromImage(readImage(masksPath.string()));
+            return;
+        }
+        const auto start = std::chrono::steady_clock::now();
+        ref.masks = findRegions(scene, accel, spec.options, probe);
+        writeAtomically(masksToImage(ref.masks), masksPath);
+        log << "reference: region masks in "
+            << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
+    };
+
+    if (std::filesystem::exists(ref.imagePath) && std::filesystem::exists(noisePath)) {
         ref.image = readImage(ref.imagePath.string());
         ref.noise = readImage(noisePath.string());
-        ref.masks = masksFromImage(readImage(masksPath.string()));
+        loadOrFindMasks();
         const bool sized = [&] {
             for (const Image* i : {&ref.image, &ref.noise})
                 if (i->width != spec.options.width || i->height != spec.options.height) return false;
@@ -116,16 +132,10 @@ Reference loadOrRenderReference(StudyRenderer& renderer, const Scene& scene, con
         // Var(A - B) = 2 v_half and the mean has v_half / 2, so (A - B)^2 / 4 estimates it.
         ref.noise.pixels[k] = 0.25f * d * d;
     }
-    const auto start = std::chrono::steady_clock::now();
-    ProbeOptions probe;
-    probe.threads = spec.options.threads;
-    ref.masks = findRegions(scene, accel, spec.options, probe);
-    log << "reference: " << ref.seconds << " s; region masks "
-        << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
-
+    log << "reference: " << ref.seconds << " s\n";
     writeAtomically(ref.image, ref.imagePath);
     writeAtomically(ref.noise, noisePath);
-    writeAtomically(masksToImage(ref.masks), masksPath);
+    loadOrFindMasks();
     std::ofstream info(infoPath);
     info << describe(spec) << "render seconds " << ref.seconds << "\n";
     return ref;

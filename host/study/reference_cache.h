@@ -2,8 +2,9 @@
 // disk, keyed by a hash of the scene file's text and of every option that changes the image.
 //
 // Cache: <cacheDir>/references/<key>.exr (the reference), <key>_noise.exr (its own estimated
-// variance per pixel and channel), <key>_masks.png (region_masks.h) and <key>.txt (what was
-// rendered, how long it took). defaultCacheDir() is $XDG_CACHE_HOME/vkrt, else ~/.cache/vkrt.
+// variance per pixel and channel), <key>_masks_v<N>.png (region_masks.h; recomputed alone when
+// missing) and <key>.txt (what was rendered, how long it took). defaultCacheDir() is
+// $XDG_CACHE_HOME/vkrt, else ~/.cache/vkrt.
 #pragma once
 
 #include <cstdint>

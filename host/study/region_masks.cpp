@@ -59,9 +59,11 @@ public:
         ObjectId first;
         glm::vec3 firstNormal(0.0f);
         bool differs = false;
+        // Probes on a grid that includes the pixel's borders (0, 1/(n-1), ..., 1): an edge that
+        // crosses the pixel anywhere but through a sliver between probes separates two of them.
+        auto at = [n](int k) { return n == 1 ? 0.5f : static_cast<float>(k) / static_cast<float>(n - 1); };
         for (int s = 0; s < n * n; ++s) {
-            const glm::vec2 offset((static_cast<float>(s % n) + 0.5f) / static_cast<float>(n),
-                                   (static_cast<float>(s / n) + 0.5f) / static_cast<float>(n));
+            const glm::vec2 offset(at(s % n), at(s / n));
             const bvh::Ray ray = cpu::cameraRay(frame_, i, j, offset);
             bvh::Hit hit;
             ObjectId id;

@@ -24,7 +24,7 @@ struct RegionMasks {
 };
 
 struct ProbeOptions {
-    int pixelProbes = 3;  // per axis: pixelProbes^2 primary rays at stratum centres per pixel
+    int pixelProbes = 4;  // per axis: pixelProbes^2 primary rays per pixel, on a grid from border to border
     int lightProbes = 8;  // per axis: lightProbes^2 points (stratum centres) per area light and primary hit
     int threads = 0;      // 0 = all hardware threads
 };

@@ -138,9 +138,11 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
                 "compiled beforehand).";
     report.settings = settings.str();
     std::ostringstream refLine;
-    refLine << options.referenceRpp << " rpp, " << samplerName(spec.sampler) << " sampler, on the "
-            << deviceName(spec.device) << (ref.fromCache ? ", from the cache " : ", rendered in " + std::to_string(ref.seconds) + " s and cached as ")
-            << "`" << ref.imagePath.string() << "`.";
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%.1f", ref.seconds);
+    refLine << options.referenceRpp << " rpp, " << samplerName(spec.sampler) << " sampler, on the " << deviceName(spec.device)
+            << (ref.fromCache ? ", from the cache " : ", rendered in " + std::string(seconds) + " s and cached as ") << "`"
+            << ref.imagePath.string() << "`.";
     report.referenceLine = refLine.str();
     const PixelMask* masks[4] = {nullptr, &ref.masks.edge, &ref.masks.penumbra, &ref.masks.gloss};
     for (Region g : kRegions) {
