@@ -136,6 +136,7 @@ int runSweep(CommandLine& cl) {
     options.render = cl.render;
     options.gpu = gpuOptions(cl);
     const study::SweepResult result = study::runSweep(options, scene, std::cerr);
+    if (!result.validationMessages.empty()) std::cerr << "warning: Vulkan validation messages:\n" << result.validationMessages;
     if (!cl.render.quiet)
         std::fprintf(stderr, "sweep: %zu renders -> %s, %s, %s, %s\n", result.rows.size(), result.csv.c_str(),
                      result.plots.errorVsTime.c_str(), result.plots.errorVsRpp.c_str(), result.report.c_str());

@@ -81,7 +81,7 @@ void addSweepOptions(CLI::App& app, CommandLine& cl, std::string& bg, SweepText&
         ->delimiter(',')
         ->check(CLI::IsMember({"jittered", "regular", "random", "sobol"}));
     app.add_option("--device", text.device, "Devices to sweep: gpu, cpu or both")->check(CLI::IsMember({"gpu", "cpu", "both"}));
-    app.add_option("--reference-rpp", sw.referenceRpp, "Rays per pixel of the converged reference (sobol)")
+    app.add_option("--reference-rpp", sw.referenceRpp, "Rays per pixel of the converged reference (sobol; even: two halves estimate its noise)")
         ->check(CLI::Range(2, 1 << 24));
     app.add_option("--reference-device", text.referenceDevice,
                    "Device for the reference (default: gpu when sweeping the gpu, else cpu)")

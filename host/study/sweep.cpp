@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 
 #include "scene_accel.h"
 #include "sweep_csv.h"
@@ -67,7 +68,8 @@ void validateSweepOptions(const SweepOptions& o) {
     if (o.seeds < 1) fail("--seeds must be at least 1, not " + std::to_string(o.seeds));
     if (o.samplers.empty()) fail("--samplers needs at least one sampler");
     if (o.devices.empty()) fail("no device to sweep");
-    if (o.referenceRpp < 2) fail("--reference-rpp must be at least 2, not " + std::to_string(o.referenceRpp));
+    if (o.referenceRpp < 2 || o.referenceRpp % 2 != 0)
+        fail("--reference-rpp must be even (two halves) and at least 2, not " + std::to_string(o.referenceRpp));
     if (!(o.targetRmse > 0.0)) fail("--target-rmse must be positive, not " + std::to_string(o.targetRmse));
     for (int s = 0; s < o.seeds; ++s) {
         const std::uint32_t seed = o.render.seed + static_cast<std::uint32_t>(s);
@@ -86,7 +88,9 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
 
     const std::string sceneText = readText(options.scenePath);
     const SceneAccel accel = buildSceneAccel(scene);
-    std::filesystem::create_directories(options.outDir);
+    std::error_code ec;
+    std::filesystem::create_directories(options.outDir, ec);
+    if (ec) throw std::runtime_error("sweep: cannot create the output directory " + options.outDir.string() + ": " + ec.message());
 
     ReferenceSpec spec;
     spec.options = options.render;
@@ -161,6 +165,8 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
 
     std::array<double, 4> referenceRmse{};
     for (int i = 0; i < 4; ++i) referenceRmse[i] = std::sqrt(report.referenceMse[i]);
+    if (auto validation = renderer->validationLog(); validation && validation->count() > 0)
+        result.validationMessages = validation->joined();
     result.plots = plotSweep(result.points, referenceRmse, report.regionPixels,
                              options.scenePath.filename().string() + " " + std::to_string(r.width) + "x" + std::to_string(r.height),
                              options.outDir);

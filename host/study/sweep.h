@@ -43,6 +43,7 @@ struct SweepResult {
     std::vector<Device> devices;   // the devices actually swept
     std::filesystem::path csv, report;
     PlotFiles plots;
+    std::string validationMessages;  // Vulkan validation messages (with gpu.validation), empty when none
 };
 
 // Throws std::invalid_argument for bad options (naming the option and value).

@@ -70,6 +70,7 @@ TEST(Sweep, WritesCsvPlotsAndReportAndReusesTheCachedReference) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_LT(seconds, 60.0) << "the small sweep should take seconds";
     EXPECT_FALSE(first.reference.fromCache);
+    EXPECT_EQ(first.validationMessages, "");
     ASSERT_EQ(first.devices.size(), 2u);
 
     const auto rows = readCsv(dir / "out" / "sweep.csv");
