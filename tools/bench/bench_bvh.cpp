@@ -19,6 +19,7 @@
 
 #include "bench_command.h"
 #include "bench_mesh.h"
+#include "node_layout.h"
 #include "peer_runner.h"
 
 namespace vkrt::bench {
@@ -106,8 +107,37 @@ double overRows(int rows, int threads, Body&& body) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// SAH cost of group 0's tree under one fixed model (C_trav = C_isect = 1), whatever constants
+// built it, so trees built with different constants can be compared:
+// sum over inner nodes of A(node)/A(root) + sum over leaves of N * A(leaf)/A(root).
+double unitSahCost(const bvh::SceneBvh& scene) {
+    if (scene.groups.empty()) return 0.0;
+    auto area = [](const bvh::Aabb& b) { return static_cast<double>(b.halfArea()); };
+    const gpu::BvhNode& rootNode = scene.nodes[scene.groups[0].rootNode];
+    bvh::Aabb rootBox = bvh::childBox(rootNode, 0);
+    if (!bvh::childBox(rootNode, 1).empty()) rootBox.grow(bvh::childBox(rootNode, 1));
+    const double rootArea = area(rootBox);
+    if (rootArea <= 0.0) return 0.0;
+    double cost = 0.0;
+    std::vector<std::pair<std::uint32_t, double>> stack{{scene.groups[0].rootNode, rootArea}};
+    while (!stack.empty()) {
+        const auto [index, nodeArea] = stack.back();
+        stack.pop_back();
+        cost += nodeArea / rootArea;
+        const gpu::BvhNode& node = scene.nodes[index];
+        for (int k = 0; k < 2; ++k) {
+            const double a = bvh::childBox(node, k).empty() ? 0.0 : area(bvh::childBox(node, k));
+            if (bvh::childCount(node, k) > 0) cost += bvh::childCount(node, k) * a / rootArea;
+            else if (bvh::childIsInner(node, k)) stack.push_back({bvh::childLink(node, k), a});
+        }
+    }
+    return cost;
+}
+
 struct VkrtFigures {
     bvh::BuildStats stats;
+    double unitSah = 0.0;
+    std::size_t cpuBytes = 0;  // the CPU traversal's 4-wide copy (not uploaded)
     std::size_t triangles = 0, primaryRays = 0, shadowRays = 0;
     double primaryMrays = 0.0, shadowMrays = 0.0, diffuseMrays = 0.0;
 };
@@ -121,6 +151,8 @@ VkrtFigures measureVkrt(const std::vector<bvh::PrimitiveInput>& prims, const Cam
 
     VkrtFigures f;
     f.stats = scene.stats;
+    f.unitSah = unitSahCost(scene);
+    f.cpuBytes = scene.cpu.nodes.size() * sizeof(bvh::WideNode);
     f.triangles = prims.size();
     const int w = a.width, spp = a.spp;
     const std::size_t n = static_cast<std::size_t>(w) * a.height * spp;
@@ -245,10 +277,10 @@ int runBvhBench(const std::vector<std::string>& argv) {
     std::printf("diffuse rays %zu Mrays_per_s %.2f\n", v.shadowRays, v.diffuseMrays);
     const double nodeBytes = static_cast<double>(v.stats.nodeCount) * sizeof(gpu::BvhNode);
     const double primBytes = tris * sizeof(gpu::Primitive);
-    std::printf("bvh sah_cost %.2f nodes %zu leaves %zu depth %d node_bytes %.0f prim_bytes %.0f "
-                "node_bytes_per_triangle %.1f bytes_per_triangle %.1f\n",
-                v.stats.sahCost, v.stats.nodeCount, v.stats.leafCount, v.stats.bottomDepth, nodeBytes, primBytes,
-                nodeBytes / tris, (nodeBytes + primBytes) / tris);
+    std::printf("bvh sah_cost %.2f unit_sah_cost %.2f nodes %zu leaves %zu depth %d node_bytes %.0f prim_bytes %.0f "
+                "node_bytes_per_triangle %.1f bytes_per_triangle %.1f cpu_wide_bytes_per_triangle %.1f\n",
+                v.stats.sahCost, v.unitSah, v.stats.nodeCount, v.stats.leafCount, v.stats.bottomDepth, nodeBytes,
+                primBytes, nodeBytes / tris, (nodeBytes + primBytes) / tris, static_cast<double>(v.cpuBytes) / tris);
     if (bestMedium && bestHigh) {
         std::printf("embree_medium triangles %zu build_s %.4f build_Mtris_per_s %.2f\n", bestMedium->triangles,
                     bestMedium->buildSeconds, bestMedium->buildMtrisPerS);
