@@ -260,7 +260,8 @@ int levelsNeeded(std::uint32_t n, std::uint32_t maxLeaf) {
 
 class Builder {
 public:
-    Builder(std::span<PrimRef> refs, const SahParams& p, ThreadPool& pool) : refs_(refs), p_(p), pool_(pool) {}
+    Builder(std::span<PrimRef> refs, const SahParams& p, ThreadPool& pool, const SubtreeDone& done)
+        : refs_(refs), p_(p), pool_(pool), done_(done) {}
 
     BuildTree run();
 
@@ -283,6 +284,7 @@ private:
     std::span<PrimRef> refs_;
     const SahParams& p_;
     ThreadPool& pool_;
+    const SubtreeDone& done_;
 };
 
 void Builder::childRanges(const Range& r, std::uint32_t mid, Range& left, Range& right) {
@@ -560,6 +562,7 @@ BuildTree Builder::run() {
         std::uint32_t next = job.offset;
         job.root = buildSubtree(job.range, tree.nodes.get(), next);
         job.inner = (next - job.offset - 1) / 2;  // a full binary tree: inner = leaves - 1
+        if (done_) done_(job.range.begin, job.range.end);
     });
     tree.root = 0;
     tree.topCount = static_cast<std::uint32_t>(top.size());
@@ -574,7 +577,7 @@ BuildTree Builder::run() {
 
 }  // namespace
 
-BuildTree buildSah(std::span<PrimRef> refs, const SahParams& params, ThreadPool& pool) {
+BuildTree buildSah(std::span<PrimRef> refs, const SahParams& params, ThreadPool& pool, const SubtreeDone& subtreeDone) {
     if (params.bins < 2 || params.bins > kMaxBins)
         throw std::invalid_argument("bvh: bins must be in [2, " + std::to_string(kMaxBins) + "], got " +
                                     std::to_string(params.bins));
@@ -584,7 +587,7 @@ BuildTree buildSah(std::span<PrimRef> refs, const SahParams& params, ThreadPool&
         throw std::invalid_argument("bvh: maxLeafSize must be >= 1, got " + std::to_string(params.maxLeafSize));
     if (!(params.traversalCost >= 0.0f) || !(params.intersectionCost > 0.0f))
         throw std::invalid_argument("bvh: SAH costs must be traversal >= 0 and intersection > 0");
-    return Builder(refs, params, pool).run();
+    return Builder(refs, params, pool, subtreeDone).run();
 }
 
 }  // namespace vkrt::bvh

@@ -19,6 +19,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -78,7 +79,12 @@ struct BuildTree {
 };
 
 // Reorders refs so that every leaf's references are contiguous, in depth-first order of the tree.
-BuildTree buildSah(std::span<PrimRef> refs, const SahParams& params, ThreadPool& pool);
+// subtreeDone(begin, end), if given, runs on the building thread as soon as refs[begin, end) have
+// reached their final order (once per subtree job; the jobs cover refs exactly once), so callers
+// can consume them while they are still in cache.
+using SubtreeDone = std::function<void(std::uint32_t begin, std::uint32_t end)>;
+BuildTree buildSah(std::span<PrimRef> refs, const SahParams& params, ThreadPool& pool,
+                   const SubtreeDone& subtreeDone = {});
 
 
 }  // namespace vkrt::bvh

@@ -39,9 +39,11 @@ void validateOptions(const BuildOptions& o) {
                                     std::to_string(o.maxBottomDepth));
 }
 
-// Builds the PrimRefs of one group (validating every primitive) and its SAH tree.
+// Builds the PrimRefs of one group (validating every primitive) and its SAH tree, and writes the
+// group's primitive records in leaf order into records[first...] / sources[first...] as each
+// subtree completes.
 void buildGroup(const std::vector<PrimitiveInput>& prims, std::size_t groupIndex, const SahParams& params,
-                ThreadPool& pool, GroupBuild& out) {
+                ThreadPool& pool, gpu::Primitive* records, std::uint32_t* sources, GroupBuild& out) {
     out.count = prims.size();
     out.refs = HugeArray<PrimRef>(out.count);
     const std::size_t chunks = (prims.size() + kRefChunk - 1) / kRefChunk;
@@ -56,7 +58,15 @@ void buildGroup(const std::vector<PrimitiveInput>& prims, std::size_t groupIndex
         }
     });
     for (const Aabb& b : partial) out.bounds.grow(b);
-    out.tree = buildSah(std::span<PrimRef>(out.refs.get(), out.count), params, pool);
+    const PrimRef* refs = out.refs.get();
+    out.tree = buildSah(std::span<PrimRef>(out.refs.get(), out.count), params, pool,
+                        [&](std::uint32_t begin, std::uint32_t end) {
+                            for (std::uint32_t i = begin; i < end; ++i) {
+                                const std::uint32_t source = refs[i].id();
+                                records[i] = encode(prims[source]);
+                                sources[i] = source;
+                            }
+                        });
 }
 
 }  // namespace
@@ -79,23 +89,32 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
                            options.maxBottomDepth};
     ThreadPool pool(options.threads);
 
-    // Bottom levels: large groups use the whole pool, small ones run side by side.
-    std::vector<GroupBuild> built(groups.size());
-    std::vector<std::size_t> small;
-    for (std::size_t g = 0; g < groups.size(); ++g) {
-        if (groups[g].size() >= kLargeGroup) buildGroup(groups[g], g, params, pool, built[g]);
-        else small.push_back(g);
-    }
-    pool.parallelFor(small.size(), [&](std::size_t k) {
-        const std::size_t g = small[k];
-        ThreadPool local(1);
-        buildGroup(groups[g], g, params, local, built[g]);
-    });
-
-    // Flatten in group order, so the layout does not depend on which thread built what.
     SceneBvh bvh;
     reserveHuge(bvh.prims, totalPrims);
     reserveHuge(bvh.primSource, totalPrims);
+    bvh.prims.resize(totalPrims);
+    bvh.primSource.resize(totalPrims);
+    std::vector<std::uint32_t> firstPrims(groups.size());
+    for (std::size_t g = 1; g < groups.size(); ++g)
+        firstPrims[g] = firstPrims[g - 1] + static_cast<std::uint32_t>(groups[g - 1].size());
+
+    // Bottom levels: large groups use the whole pool, small ones run side by side.
+    std::vector<GroupBuild> built(groups.size());
+    std::vector<std::size_t> small;
+    auto build = [&](std::size_t g, ThreadPool& p) {
+        buildGroup(groups[g], g, params, p, bvh.prims.data() + firstPrims[g], bvh.primSource.data() + firstPrims[g],
+                   built[g]);
+    };
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        if (groups[g].size() >= kLargeGroup) build(g, pool);
+        else small.push_back(g);
+    }
+    pool.parallelFor(small.size(), [&](std::size_t k) {
+        ThreadPool local(1);
+        build(small[k], local);
+    });
+
+    // Flatten in group order, so the layout does not depend on which thread built what.
     // A tree over n references has at most n - 1 inner nodes; every group and the top level
     // have at least one node.
     reserveHuge(bvh.nodes, totalPrims + 2 * groups.size() + instances.size() + 1);
@@ -110,17 +129,6 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
         range.primCount = static_cast<std::uint32_t>(groups[g].size());
         range.lo = b.bounds.lo;
         range.hi = b.bounds.hi;
-        // Primitive records in leaf order, written in parallel chunks into the grown arrays.
-        bvh.prims.resize(firstPrim + b.count);
-        bvh.primSource.resize(firstPrim + b.count);
-        pool.parallelFor((b.count + kRefChunk - 1) / kRefChunk, [&](std::size_t c) {
-            const std::size_t end = std::min(b.count, (c + 1) * kRefChunk);
-            for (std::size_t i = c * kRefChunk; i < end; ++i) {
-                const std::uint32_t source = b.refs[i].id();
-                bvh.prims[firstPrim + i] = encode(groups[g][source]);
-                bvh.primSource[firstPrim + i] = source;
-            }
-        });
         const FlattenResult flat =
             flatten(b.tree, [&](const BuildNode& leaf) { return firstPrim + leaf.first(); }, params, pool, bvh.nodes);
         range.rootNode = flat.root;
