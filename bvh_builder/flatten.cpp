@@ -131,7 +131,6 @@ FlattenResult flatten(const BuildTree& tree, const LeafLink& leafLink, const Sah
         result.leafCount += b.leaves;
         sahRaw += b.sahRaw;
         result.blockRoots.push_back(b.offset);
-        result.blockSizes.push_back(b.size);
     }
     const double rootArea = tree[tree.root].box().halfArea();
     result.sahCost = rootArea > 0.0 ? sahRaw / rootArea : 0.0;  // no area, no cost model

@@ -24,7 +24,6 @@ struct FlattenResult {
     // thread count).
     double sahCost = 0.0;
     std::vector<std::uint32_t> blockRoots;  // output nodes rooting the blocks flattened in parallel
-    std::vector<std::uint32_t> blockSizes;  // their node counts
 };
 
 // leafLink(buildLeaf) gives the link written for a leaf slot (its count is the leaf's count).

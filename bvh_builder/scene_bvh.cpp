@@ -119,8 +119,8 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
     // have at least one node.
     reserveHuge(bvh.nodes, totalPrims + 2 * groups.size() + instances.size() + 1);
     bvh.groups.resize(groups.size());
-    // Per group: the blocks flattened in parallel (roots, sizes), collapsed in parallel below.
-    std::vector<std::pair<std::vector<std::uint32_t>, std::vector<std::uint32_t>>> groupBlocks(groups.size());
+    // Per group: the blocks flattened in parallel, collapsed in parallel below.
+    std::vector<std::vector<std::uint32_t>> groupBlocks(groups.size());
     std::uint32_t firstPrim = 0;
     for (std::size_t g = 0; g < groups.size(); ++g) {
         GroupBuild& b = built[g];
@@ -135,7 +135,7 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
         bvh.stats.leafCount += flat.leafCount;
         bvh.stats.bottomDepth = std::max(bvh.stats.bottomDepth, flat.depth);
         bvh.stats.sahCost += flat.sahCost;
-        groupBlocks[g] = {flat.blockRoots, flat.blockSizes};
+        groupBlocks[g] = flat.blockRoots;
         firstPrim += range.primCount;
         b = GroupBuild{};  // release the references early
     }
@@ -164,10 +164,9 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
     // The CPU's 4-wide copy: about a third of the two-child nodes.
     reserveHuge(bvh.cpu.nodes, bvh.nodes.size() / 2 + groups.size() + 1);
     for (std::size_t g = 0; g < groups.size(); ++g)
-        bvh.cpu.groupRoots.push_back(collapseTree(bvh.nodes, bvh.groups[g].rootNode, groupBlocks[g].first,
-                                                  groupBlocks[g].second, pool, bvh.cpu.nodes));
+        bvh.cpu.groupRoots.push_back(collapseTree(bvh.nodes, bvh.groups[g].rootNode, groupBlocks[g], pool, bvh.cpu.nodes));
     for (const InstanceInput& in : instances) bvh.cpu.identity.push_back(in.objectToWorld == glm::mat4(1.0f) ? 1 : 0);
-    bvh.cpu.topRoot = collapseTree(bvh.nodes, bvh.topRoot, top.blockRoots, top.blockSizes, pool, bvh.cpu.nodes);
+    bvh.cpu.topRoot = collapseTree(bvh.nodes, bvh.topRoot, top.blockRoots, pool, bvh.cpu.nodes);
     bvh.stats.nodeCount = bvh.nodes.size();
     bvh.stats.bytes = bvh.nodes.size() * sizeof(gpu::BvhNode) + bvh.prims.size() * sizeof(gpu::Primitive) +
                       bvh.instances.size() * sizeof(gpu::Instance);

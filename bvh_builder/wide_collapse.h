@@ -12,9 +12,7 @@ namespace vkrt::bvh {
 // Collapses the two-child tree rooted at `root` into `out`; returns the wide root. The subtrees
 // rooted at blockRoots (FlattenResult::blockRoots) are collapsed in parallel and appended after
 // the nodes of the part above them, which never opens a block's root.
-// blockSizes: their two-child node counts (an upper bound of their 4-wide node counts).
 std::uint32_t collapseTree(const std::vector<gpu::BvhNode>& nodes, std::uint32_t root,
-                           const std::vector<std::uint32_t>& blockRoots, const std::vector<std::uint32_t>& blockSizes,
-                           ThreadPool& pool, std::vector<WideNode>& out);
+                           const std::vector<std::uint32_t>& blockRoots, ThreadPool& pool, std::vector<WideNode>& out);
 
 }  // namespace vkrt::bvh
