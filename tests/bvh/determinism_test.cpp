@@ -32,6 +32,8 @@ TEST(Determinism, ThreadCountDoesNotChangeTheResult) {
         EXPECT_TRUE(sameBytes(bvh.prims, reference.prims)) << threads << " threads";
         EXPECT_TRUE(sameBytes(bvh.primSource, reference.primSource)) << threads << " threads";
         EXPECT_TRUE(sameBytes(bvh.instances, reference.instances)) << threads << " threads";
+        EXPECT_TRUE(sameBytes(bvh.cpu.nodes, reference.cpu.nodes)) << threads << " threads (4-wide copy)";
+        EXPECT_EQ(bvh.cpu.groupRoots, reference.cpu.groupRoots);
         EXPECT_EQ(bvh.topRoot, reference.topRoot);
         EXPECT_EQ(bvh.stats.sahCost, reference.stats.sahCost);
     }

@@ -33,7 +33,11 @@ BenchMesh objMesh(const std::string& path) {
     tinyobj::ObjReader reader;
     tinyobj::ObjReaderConfig config;
     config.triangulate = false;
-    if (!reader.ParseFromFile(path, config)) throw std::runtime_error(path + ": " + reader.Error());
+    if (!reader.ParseFromFile(path, config)) {
+        std::string why = reader.Error();
+        while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
+        throw std::runtime_error(path + ": cannot read the OBJ file: " + (why.empty() ? "unknown error" : why));
+    }
     BenchMesh m;
     const auto& v = reader.GetAttrib().vertices;
     for (std::size_t i = 0; i + 2 < v.size(); i += 3) m.positions.emplace_back(v[i], v[i + 1], v[i + 2]);
