@@ -11,6 +11,7 @@ struct Surface {
     vec3 shadeNormal;  // world space, unit, same side as geomNormal
     vec2 uv;
     uint material;
+    float errorMagnitude;  // largest world-space magnitude in the point's computation (ray_offset.glsl)
 };
 
 vec3 rowTransformPoint(vec4 r0, vec4 r1, vec4 r2, vec3 p) {
@@ -19,6 +20,18 @@ vec3 rowTransformPoint(vec4 r0, vec4 r1, vec4 r2, vec3 p) {
 
 vec3 rowTransformVector(vec4 r0, vec4 r1, vec4 r2, vec3 v) {
     return vec3(dot(r0.xyz, v), dot(r1.xyz, v), dot(r2.xyz, v));
+}
+
+float maxAbs(vec3 v) {
+    vec3 a = abs(v);
+    return max(max(a.x, a.y), a.z);
+}
+
+// RENDERING.md §6: the bound on |M p| over object-space coordinates of magnitude m (max over rows
+// of |t| + sum |A| * m).
+float transformedMagnitude(vec4 r0, vec4 r1, vec4 r2, float m) {
+    vec4 a0 = abs(r0), a1 = abs(r1), a2 = abs(r2);
+    return max(max(a0.w + (a0.x + a0.y + a0.z) * m, a1.w + (a1.x + a1.y + a1.z) * m), a2.w + (a2.x + a2.y + a2.z) * m);
 }
 
 // A unit vector, or `fallback` when v is zero or not finite (degenerate geometry must not make NaN).
@@ -47,10 +60,12 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
     vec3 p;
     vec3 ng;
     vec3 ns;
+    float objectMagnitude;  // largest |coordinate| of the primitive's data
     if (kind == PRIM_KIND_TRIANGLE) {
         vec3 v0 = texelFloats(a);
         vec3 v1 = texelFloats(texelFetch(primitives, base + 1));
         vec3 v2 = texelFloats(texelFetch(primitives, base + 2));
+        objectMagnitude = max(maxAbs(v0), max(maxAbs(v1), maxAbs(v2)));
         float b0 = 1.0 - hit.bary.x - hit.bary.y;
         // Barycentric reconstruction: accurate to a few ULPs of the vertices, unlike o + t*d.
         p = b0 * v0 + hit.bary.x * v1 + hit.bary.y * v2;
@@ -70,6 +85,7 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
     } else if (kind == PRIM_KIND_SPHERE) {
         vec3 center = texelFloats(a);
         float radius = uintBitsToFloat(texelFetch(primitives, base + 1).x);
+        objectMagnitude = maxAbs(center) + radius;
         vec3 q = o + hit.t * d;
         vec3 n = normalizeOr(q - center, vec3(0.0, 1.0, 0.0));
         p = center + radius * n;  // re-projected onto the sphere
@@ -79,6 +95,7 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
     } else {
         vec3 lo = texelFloats(a);
         vec3 hi = texelFloats(texelFetch(primitives, base + 1));
+        objectMagnitude = max(maxAbs(lo), maxAbs(hi));
         // Which face: redo the slab test and take the axis that decided the entry (or exit).
         vec3 invD = safeInverse(d);
         vec3 t0 = (lo - o) * invD;
@@ -113,6 +130,7 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
     if (HAS_INSTANCES) {
         Instance inst = instances[hit.instance];
         p = rowTransformPoint(inst.objectToWorld[0], inst.objectToWorld[1], inst.objectToWorld[2], p);
+        objectMagnitude = transformedMagnitude(inst.objectToWorld[0], inst.objectToWorld[1], inst.objectToWorld[2], objectMagnitude);
         ng = rowTransformVector(inst.normalToWorld[0], inst.normalToWorld[1], inst.normalToWorld[2], ng);
         ns = rowTransformVector(inst.normalToWorld[0], inst.normalToWorld[1], inst.normalToWorld[2], ns);
         s.material = inst.info.y != MATERIAL_NONE ? inst.info.y : info.x;
@@ -120,6 +138,7 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
         s.material = info.x;
     }
     s.position = p;
+    s.errorMagnitude = max(objectMagnitude, maxAbs(p));
     s.geomNormal = normalizeOr(ng, fallback);
     s.shadeNormal = normalizeOr(ns, s.geomNormal);
     if (dot(s.shadeNormal, s.geomNormal) < 0.0) s.shadeNormal = -s.shadeNormal;

@@ -100,7 +100,7 @@ glm::vec3 Integrator::directLight(const Shader& shader, const SurfacePoint& sp, 
         const glm::vec3 l = toLight / distance;
         if (!shadowed) return coolToWarm(kd, intensity, n, l);
         if (glm::dot(n, l) <= 0.0f) return glm::vec3(0.0f);
-        const glm::vec3 origin = offsetRayOrigin(sp.position, sideOf(ng, l));
+        const glm::vec3 origin = offsetRayOrigin(sp.position, sideOf(ng, l), sp.errorMagnitude);
         if (occluded(origin, q)) return glm::vec3(0.0f);
         glm::vec3 c = lambertian(kd, intensity, n, l);
         if (specular) c += blinnPhongSpecular(ks, shader.phongExp, intensity, n, l, view);
@@ -135,7 +135,7 @@ glm::vec3 Integrator::reflection(const bvh::Ray& ray, const SurfacePoint& sp, co
         if (glm::dot(dir, ng) <= 0.0f || !worthTracing(branchWeight)) return glm::vec3(0.0f);
         ++counts_.reflection;
         bvh::Ray next;
-        next.origin = offsetRayOrigin(sp.position, sideOf(ng, dir));
+        next.origin = offsetRayOrigin(sp.position, sideOf(ng, dir), sp.errorMagnitude);
         next.dir = dir;
         return trace(next, depth + 1, branchWeight, key);
     };
@@ -175,14 +175,14 @@ glm::vec3 Integrator::dielectric(const bvh::Ray& ray, const bvh::Hit& hit, const
             ++counts_.reflection;
             bvh::Ray next;
             next.dir = mirrorDirection(ray.dir, n);
-            next.origin = offsetRayOrigin(sp.position, sideOf(sp.geometricNormal, next.dir));
+            next.origin = offsetRayOrigin(sp.position, sideOf(sp.geometricNormal, next.dir), sp.errorMagnitude);
             reflected = trace(next, depth + 1, here * f, key);
         }
         if (worthTracing(here * (1.0f - f))) {
             ++counts_.refraction;
             bvh::Ray next;
             next.dir = refractDirection(ray.dir, n, n1, n2);
-            next.origin = offsetRayOrigin(sp.position, sideOf(sp.geometricNormal, next.dir));
+            next.origin = offsetRayOrigin(sp.position, sideOf(sp.geometricNormal, next.dir), sp.errorMagnitude);
             refracted = trace(next, depth + 1, here * (1.0f - f), key);
         }
     }

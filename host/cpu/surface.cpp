@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "ray_offset.h"
+
 namespace vkrt::cpu {
 
 namespace {
@@ -28,6 +30,17 @@ glm::vec2 sphereUv(const glm::vec3& n) {
 }
 
 float unitRange(float x, float lo, float hi) { return hi > lo ? (x - lo) / (hi - lo) : 0.0f; }
+
+// RENDERING.md §6: the bound on |M p| over the primitive's object-space coordinate magnitude m,
+// max over rows of |t| + sum |A|*m, and the world point itself.
+float errorMagnitude(const glm::vec4 rows[3], float objectMagnitude, const glm::vec3& worldPoint) {
+    float m = maxAbs(worldPoint);
+    for (int r = 0; r < 3; ++r) {
+        const glm::vec4 a = glm::abs(rows[r]);
+        m = std::max(m, a.w + (a.x + a.y + a.z) * objectMagnitude);
+    }
+    return m;
+}
 
 }  // namespace
 
@@ -61,6 +74,7 @@ SurfacePoint describeHit(const SceneAccel& accel, const Scene& scene, const bvh:
     sp.shader = accel.shaderOf(hit.instance, hit.prim);
 
     glm::vec3 pObject{0.0f}, nObject{0.0f}, shadingObject{0.0f};
+    float objectMagnitude = 0.0f;  // largest |coordinate| of the primitive's data
     bool hasShadingNormal = false;
     if (shape.type == ShapeType::Sphere || shape.type == ShapeType::Box) {
         const glm::vec3 o = applyPoint(inst.worldToObject, ray.origin);
@@ -68,10 +82,12 @@ SurfacePoint describeHit(const SceneAccel& accel, const Scene& scene, const bvh:
         const glm::vec3 p = o + hit.t * d;
         if (shape.type == ShapeType::Sphere) {
             // Re-projected onto the sphere: removes the error of o + t*d along the ray.
+            objectMagnitude = maxAbs(shape.center) + shape.radius;
             nObject = glm::normalize(p - shape.center);
             pObject = shape.center + shape.radius * nObject;
             sp.uv = sphereUv(nObject);
         } else {
+            objectMagnitude = std::max(maxAbs(shape.minPt), maxAbs(shape.maxPt));
             const BoxFace face = boxFaceHit(o, d, shape.minPt, shape.maxPt);
             const int axis = face.axis;
             pObject = p;
@@ -94,6 +110,7 @@ SurfacePoint describeHit(const SceneAccel& accel, const Scene& scene, const bvh:
             v1 = mesh->positions[tri.y];
             v2 = mesh->positions[tri.z];
         }
+        objectMagnitude = std::max(maxAbs(v0), std::max(maxAbs(v1), maxAbs(v2)));
         const float b1 = hit.u, b2 = hit.v, b0 = 1.0f - hit.u - hit.v;
         pObject = b0 * v0 + b1 * v1 + b2 * v2;
         nObject = glm::cross(v1 - v0, v2 - v0);
@@ -108,6 +125,7 @@ SurfacePoint describeHit(const SceneAccel& accel, const Scene& scene, const bvh:
     }
 
     sp.position = applyPoint(inst.objectToWorld, pObject);
+    sp.errorMagnitude = errorMagnitude(inst.objectToWorld, objectMagnitude, sp.position);
     sp.geometricNormal = glm::normalize(applyVector(inst.normalToWorld, nObject));
     sp.shadingNormal = sp.geometricNormal;
     if (hasShadingNormal) {

@@ -16,6 +16,8 @@ struct SurfacePoint {
     glm::vec3 shadingNormal{0.0f};    // unit, world space, on the same side as geometricNormal
     glm::vec2 uv{0.0f};
     int shader = 0;                   // index into Scene::shaders
+    float errorMagnitude = 0.0f;      // the largest world-space magnitude the hit point's computation
+                                      // involved: it scales the ray offset (ray_offset.h, RENDERING.md §6)
 };
 
 // `ray` is the world-space ray that produced `hit` (its direction as traced, not renormalised).

@@ -1,5 +1,5 @@
-// Wachter & Binder ray offsets (RENDERING.md §6): the offset point is strictly on the requested
-// side of the surface, by an amount that scales with the coordinates, and tiny near the origin.
+// Ray offsets (RENDERING.md §6): the offset point is strictly on the requested side of the surface,
+// by 2^-20 of the error magnitude (the larger of the point's own and the primitive's).
 #include <cmath>
 #include <cstdint>
 
@@ -27,24 +27,28 @@ TEST(RayOffset, LeavesOnTheRequestedSideAtEveryScale) {
             }
 }
 
-TEST(RayOffset, MovesByIntScaleUlpsAwayFromTheOrigin) {
-    // A coordinate of 8 along a +x normal moves by exactly 256 ULPs; the others do not move.
+TEST(RayOffset, MovesAlongTheNormalByTheMagnitudeBound) {
+    // |p| = 8 is the magnitude: 8 * 2^-20 = 2^-17 along +x, computed exactly in float.
     const glm::vec3 q = offsetRayOrigin({8.0f, 8.0f, -8.0f}, {1, 0, 0});
-    EXPECT_EQ(q.x, std::nextafter(8.0f, 16.0f) + 255.0f * std::ldexp(1.0f, 3 - 23));
+    EXPECT_EQ(q.x, 8.0f + std::ldexp(1.0f, -17));
     EXPECT_EQ(q.y, 8.0f);
     EXPECT_EQ(q.z, -8.0f);
-    // Negative coordinates move in the normal's direction too.
-    const glm::vec3 r = offsetRayOrigin({-8.0f, 1.0f, 1.0f}, {1, 0, 0});
-    EXPECT_GT(r.x, -8.0f);
-    EXPECT_EQ(r.x, -8.0f + 256.0f * std::ldexp(1.0f, 2 - 23));  // below 8 in magnitude ULPs halve
+    // A larger primitive magnitude wins over the point's own.
+    const glm::vec3 r = offsetRayOrigin({0.0f, 0.0f, 0.0f}, {0, 1, 0}, 1024.0f);
+    EXPECT_EQ(r, glm::vec3(0.0f, 1024.0f * std::ldexp(1.0f, -20), 0.0f));
 }
 
-TEST(RayOffset, NearTheOriginUsesAFixedOffset) {
+TEST(RayOffset, ScalesWithTheScene) {
+    // The same configuration scaled by a power of two moves by exactly the scaled offset, also
+    // near the origin (where the Wachter & Binder offset used a fixed 2^-16).
     const glm::vec3 n = glm::normalize(glm::vec3(1, 1, 0));
-    const glm::vec3 q = offsetRayOrigin({0.0f, 0.01f, 0.0f}, n);
-    EXPECT_FLOAT_EQ(q.x, n.x / 65536.0f);
-    EXPECT_FLOAT_EQ(q.y, 0.01f + n.y / 65536.0f);
-    EXPECT_EQ(q.z, 0.0f);
+    for (float scale : {0x1p-14f, 1.0f, 0x1p17f}) {
+        const glm::vec3 p = scale * glm::vec3(0.0f, 0.01f, 0.0f);
+        const glm::vec3 q = offsetRayOrigin(p, n, scale * 2.0f);
+        EXPECT_FLOAT_EQ(q.x, scale * 2.0f * n.x * std::ldexp(1.0f, -20)) << "scale " << scale;
+        EXPECT_GT(q.y, p.y) << "scale " << scale;
+        EXPECT_EQ(q.z, 0.0f);
+    }
 }
 
 TEST(RayOffset, SideOfFollowsTheDirection) {
