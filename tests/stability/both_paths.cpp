@@ -1,0 +1,83 @@
+#include "both_paths.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "gpu_environment.h"
+#include "image_compare.h"
+#include "scene_accel.h"
+#include "test_paths.h"
+
+namespace vkrt::stability {
+
+BothImages renderBoth(const Scene& scene, const RenderOptions& options) {
+    const SceneAccel accel = buildSceneAccel(scene);
+    BothImages out;
+    out.cpu = renderCpu(scene, accel, options, &out.cpuStats);
+    GpuRenderer& gpu = sharedGpu();
+    const std::size_t messagesBefore = gpu.validationLog()->count();
+    out.gpu = gpu.render(scene, accel, options, &out.gpuStats);
+    EXPECT_EQ(out.cpuStats.nonFiniteSamples, 0u) << "CPU samples replaced by black (NaN/Inf radiance)";
+    EXPECT_EQ(out.gpuStats.nonFiniteSamples, 0u) << "GPU samples replaced by black (NaN/Inf radiance)";
+    EXPECT_EQ(countNonFinite(out.cpu), 0u) << "non-finite pixels in the CPU image";
+    EXPECT_EQ(countNonFinite(out.gpu), 0u) << "non-finite pixels in the GPU image";
+    EXPECT_EQ(gpu.validationLog()->count(), messagesBefore) << "validation messages:\n" << gpu.validationLog()->joined();
+    return out;
+}
+
+RenderOptions smallOptions(int width, int height, int samplesPerPixel) {
+    RenderOptions o;
+    o.width = width;
+    o.height = height;
+    o.samplesPerPixel = samplesPerPixel;
+    o.quiet = true;
+    return o;
+}
+
+std::string Distance::describe() const {
+    std::ostringstream s;
+    s << "worst " << maxSteps << "/255, " << 100.0 * fractionWithin2 << "% within 2/255, mean " << meanSteps << "/255";
+    return s.str();
+}
+
+Distance distance(const Image& a, const Image& b) {
+    const ImageDifference diff = compareImages(a, b);
+    Distance d;
+    d.maxSteps = static_cast<int>(std::lround(diff.maxAbs * 255.0));
+    d.fractionWithin2 = 1.0 - diff.fractionOver2;
+    d.meanSteps = diff.meanAbs * 255.0;
+    return d;
+}
+
+bool agrees(const Distance& d) { return d.fractionWithin2 >= 0.995 && d.meanSteps <= 0.5; }
+
+namespace {
+
+std::string cell(const Distance& d) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%d (%.2f%%)", d.maxSteps, 100.0 * d.fractionWithin2);
+    return text;
+}
+
+void writeRow(const std::string& row) {
+    std::ofstream(vkrt::test::artifactDir() + "/stability_table.tsv", std::ios::app) << row << "\n";
+    ::testing::Test::RecordProperty("measured", row);
+    std::printf("[ measured ] %s\n", row.c_str());
+}
+
+}  // namespace
+
+void recordRow(const std::string& caseName, const Distance& cpuVsReference, const Distance& gpuVsReference,
+               const Distance& gpuVsCpu) {
+    writeRow(caseName + "\t" + cell(cpuVsReference) + "\t" + cell(gpuVsReference) + "\t" + cell(gpuVsCpu));
+}
+
+void recordRow(const std::string& caseName, const Distance& gpuVsCpu) {
+    writeRow(caseName + "\t-\t-\t" + cell(gpuVsCpu));
+}
+
+}  // namespace vkrt::stability
