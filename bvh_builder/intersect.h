@@ -53,7 +53,8 @@ bool intersectSphere(const glm::vec3& o, const glm::vec3& d, const glm::vec3& ce
                      PrimHit& hit);
 
 // Ray/box slab test for a solid box, returning the face hit (the exit face when the origin is
-// inside). Axis-parallel rays are handled per axis without dividing by zero, so no NaN can arise.
+// inside). A zero direction component is taken as +1e-30 (the kernel's rule), so no NaN can arise
+// and a ray lying exactly in a face plane is inside at the min face, outside at the max face.
 bool intersectBox(const glm::vec3& o, const glm::vec3& d, const glm::vec3& lo, const glm::vec3& hi, float tmax,
                   PrimHit& hit);
 

@@ -2,6 +2,8 @@
 // which are compiled without floating-point contraction (see intersect.h).
 #pragma once
 
+#include <algorithm>
+
 #include "intersect.h"
 
 namespace vkrt::bvh {
@@ -74,13 +76,12 @@ inline bool intersectBoxInline(const glm::vec3& o, const glm::vec3& d, const glm
     float tNear = -INFINITY, tFar = INFINITY;
     int nearFace = -1, farFace = -1;
     for (int axis = 0; axis < 3; ++axis) {
-        if (d[axis] == 0.0f) {
-            if (o[axis] < lo[axis] || o[axis] > hi[axis]) return false;
-            continue;
-        }
-        const float inv = 1.0f / d[axis];
+        // A zero component (either sign) becomes +1e-30, as in the GLSL kernel, so both paths agree on
+        // rays lying exactly in a face plane (RENDERING.md §3): inside at the min face, outside at the
+        // max face, never inside a zero-thickness slab. Slab distances stay finite or infinite, never NaN.
+        const bool positive = !(d[axis] < 0.0f);
+        const float inv = (positive ? 1.0f : -1.0f) / std::max(std::fabs(d[axis]), 1e-30f);
         float t0 = (lo[axis] - o[axis]) * inv, t1 = (hi[axis] - o[axis]) * inv;
-        const bool positive = d[axis] > 0.0f;
         if (!positive) std::swap(t0, t1);
         if (t0 > tNear) {
             tNear = t0;
