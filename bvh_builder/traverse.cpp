@@ -33,7 +33,8 @@ struct NodeRay {
 
     NodeRay(const glm::vec3& origin, const glm::vec3& dir) {
         for (int a = 0; a < 3; ++a) {
-            const float d = std::abs(dir[a]) < 0x1p-100f ? std::copysign(0x1p-100f, dir[a]) : dir[a];
+            // -0 counts as positive, as in the box test and the GLSL kernel (RENDERING.md §3).
+            const float d = std::abs(dir[a]) < 0x1p-100f ? (dir[a] < 0.0f ? -0x1p-100f : 0x1p-100f) : dir[a];
             o[a] = _mm_set1_ps(origin[a]);
             inv[a] = _mm_set1_ps(1.0f / d);
             nearRow[a] = 2 * a + (d < 0.0f ? 1 : 0);
