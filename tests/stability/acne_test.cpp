@@ -119,6 +119,14 @@ INSTANTIATE_TEST_SUITE_P(
                       Placement{"Scale1e2Away1e5", "s=1e2 T=1e5", {1e2, away(1e5)}}),
     [](const auto& info) { return info.param.id; });
 
+TEST(GrazingView, FromJustAboveTheGroundIsLitUniformly) {
+    // The eye 1e-3 above the ground, looking at the horizon: the ground is met at incidences down
+    // to ~2e-5 rad (50 units away), where a hit point's error along the ray is largest.
+    Scene scene = flatGround();
+    scene.cameras[0] = perspective({0.0f, 1e-3f, 3.0f}, {0.0f, -0.05f, -5.0f}, 1.0f, 1.5f);
+    expectUniformGround(scene, "grazing view 1e-3 above the ground");
+}
+
 class GroundSphere : public ::testing::TestWithParam<float> {};
 
 // Radius 1e3 showed 664 (CPU) and 1437 (GPU) acne pixels of 4096 with the Wachter & Binder offset.
