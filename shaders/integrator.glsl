@@ -43,6 +43,13 @@ vec3 glossyDirection(vec3 r, float roughness, vec2 u) {
     vec3 axis = (a.x <= a.y && a.x <= a.z) ? vec3(1.0, 0.0, 0.0) : (a.y <= a.z ? vec3(0.0, 1.0, 0.0) : vec3(0.0, 0.0, 1.0));
     vec3 U = normalize(cross(r, axis));
     vec3 V = cross(r, U);
+    if (roughness > 1.0) {
+        // Divided by the roughness (same direction): r + a*(..) overflowed for a > ~1e19 and every
+        // sample came out black; rescaled by the largest component since r / a can be tiny.
+        vec3 w = r / roughness + (u.x - 0.5) * U + (u.y - 0.5) * V;
+        float m = max(max(abs(w.x), abs(w.y)), abs(w.z));
+        return m > 0.0 ? normalize(w / m) : r;
+    }
     return normalize(r + roughness * (u.x - 0.5) * U + roughness * (u.y - 0.5) * V);
 }
 

@@ -1,5 +1,6 @@
 #include "shading.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace vkrt::cpu {
@@ -39,6 +40,14 @@ glm::vec3 glossyDirection(const glm::vec3& r, float roughness, glm::vec2 sample)
     else axis.z = 1.0f;
     const glm::vec3 u = glm::normalize(glm::cross(r, axis));
     const glm::vec3 v = glm::cross(r, u);
+    if (roughness > 1.0f) {
+        // The same direction divided by the roughness: r + a*(..) overflowed float's squared length
+        // for a > ~1e19 and normalised to a zero vector (every sample black). The sum is then
+        // rescaled by its largest component, since r / a alone can be tiny (a sample at the centre).
+        const glm::vec3 w = r / roughness + (sample.x - 0.5f) * u + (sample.y - 0.5f) * v;
+        const float m = std::max(std::fabs(w.x), std::max(std::fabs(w.y), std::fabs(w.z)));
+        return m > 0.0f ? glm::normalize(w / m) : r;
+    }
     return glm::normalize(r + roughness * (sample.x - 0.5f) * u + roughness * (sample.y - 0.5f) * v);
 }
 
