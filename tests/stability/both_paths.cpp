@@ -1,5 +1,6 @@
 #include "both_paths.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -50,6 +51,20 @@ Distance distance(const Image& a, const Image& b) {
     d.maxSteps = static_cast<int>(std::lround(diff.maxAbs * 255.0));
     d.fractionWithin2 = 1.0 - diff.fractionOver2;
     d.meanSteps = diff.meanAbs * 255.0;
+    return d;
+}
+
+void Deviation::add(double error, bool ok, const std::string& where) {
+    ++checked;
+    worst = std::max(worst, error);
+    if (ok) return;
+    if (wrong++ == 0) first = where;
+}
+
+Distance Deviation::asDistance() const {
+    Distance d;
+    d.maxSteps = static_cast<int>(std::lround(worst * 255.0));
+    d.fractionWithin2 = checked > 0 ? 1.0 - static_cast<double>(wrong) / checked : 1.0;
     return d;
 }
 

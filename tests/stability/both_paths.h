@@ -35,6 +35,16 @@ struct Distance {
 };
 Distance distance(const Image& a, const Image& b);
 
+// How far one path's pixels are from what a closed form or an exact identity says they must be.
+struct Deviation {
+    double worst = 0.0;  // largest |got - expected|, linear radiance
+    int checked = 0;
+    int wrong = 0;       // pixels outside the test's tolerance
+    std::string first;   // the first wrong pixel, for the failure message
+    void add(double error, bool ok, const std::string& where);
+    Distance asDistance() const;  // worst in 8-bit steps, share of pixels within tolerance
+};
+
 // The project's CPU/GPU agreement rule (tests/vulkan and `vkrt compare`): >= 99.5% of pixels within
 // 2/255 and a mean difference <= 0.5/255. The two paths round differently (FMA contraction on the
 // GPU, the order of a few sums), which may tip a ray at a silhouette or a shadow edge to the other
