@@ -91,6 +91,10 @@ void recordRow(const std::string& caseName, const Distance& cpuVsReference, cons
     writeRow(caseName + "\t" + cell(cpuVsReference) + "\t" + cell(gpuVsReference) + "\t" + cell(gpuVsCpu));
 }
 
+void recordNote(const std::string& caseName, const std::string& cpuMeasurement) {
+    writeRow(caseName + "\t" + cpuMeasurement + "\t-\t-");
+}
+
 void recordRow(const std::string& caseName, const Distance& gpuVsCpu) {
     writeRow(caseName + "\t-\t-\t" + cell(gpuVsCpu));
 }

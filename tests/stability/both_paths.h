@@ -56,5 +56,7 @@ bool agrees(const Distance& d);
 void recordRow(const std::string& caseName, const Distance& cpuVsReference, const Distance& gpuVsReference,
                const Distance& gpuVsCpu);
 void recordRow(const std::string& caseName, const Distance& gpuVsCpu);
+// A CPU-only case (intersection routines called directly): its measurement in words.
+void recordNote(const std::string& caseName, const std::string& cpuMeasurement);
 
 }  // namespace vkrt::stability
