@@ -6,20 +6,18 @@
 // traversal), alternating, and the median of the per-round ratios vkrt/Embree is printed:
 // this machine's speed drifts too much for figures taken minutes apart to be compared.
 #include <algorithm>
-#include <bit>
-#include <atomic>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <optional>
-#include <random>
 #include <stdexcept>
-#include <thread>
 #include <vector>
 
+#include "bench_args.h"
 #include "bench_command.h"
 #include "bench_mesh.h"
+#include "bench_timing.h"
 #include "node_layout.h"
+#include "peer_rays.h"
 #include "peer_runner.h"
 
 namespace vkrt::bench {
@@ -35,32 +33,17 @@ struct Args {
     bvh::BuildOptions build;  // --ctrav, --cisect, --max-leaf, --bins: for measuring the SAH constants
 };
 
-float number(const std::string& s, const char* what) {
-    char* end = nullptr;
-    const float v = std::strtof(s.c_str(), &end);
-    if (end == s.c_str() || *end || !(v >= 0.0f)) throw std::runtime_error(std::string(what) + " must be a number >= 0, got '" + s + "'");
-    return v;
-}
-
-int positive(const std::string& s, const char* what) {
-    char* end = nullptr;
-    const long v = std::strtol(s.c_str(), &end, 10);
-    if (end == s.c_str() || *end || v < 1 || v > 1 << 20)
-        throw std::runtime_error(std::string(what) + " must be a positive integer, got '" + s + "'");
-    return static_cast<int>(v);
-}
-
 Args parseArgs(const std::vector<std::string>& args) {
     Args a;
     std::vector<std::string> positional;
     for (std::size_t i = 0; i < args.size(); ++i) {
         if (args[i] == "--peer" && i + 1 < args.size()) a.peer = args[++i];
         else if (args[i] == "--build-peer") a.buildPeer = true;
-        else if (args[i] == "--rounds" && i + 1 < args.size()) a.rounds = positive(args[++i], "--rounds");
-        else if (args[i] == "--ctrav" && i + 1 < args.size()) a.build.traversalCost = number(args[++i], "--ctrav");
-        else if (args[i] == "--cisect" && i + 1 < args.size()) a.build.intersectionCost = number(args[++i], "--cisect");
-        else if (args[i] == "--max-leaf" && i + 1 < args.size()) a.build.maxLeafSize = positive(args[++i], "--max-leaf");
-        else if (args[i] == "--bins" && i + 1 < args.size()) a.build.bins = positive(args[++i], "--bins");
+        else if (args[i] == "--rounds" && i + 1 < args.size()) a.rounds = positiveInt(args[++i], "--rounds");
+        else if (args[i] == "--ctrav" && i + 1 < args.size()) a.build.traversalCost = nonNegativeNumber(args[++i], "--ctrav");
+        else if (args[i] == "--cisect" && i + 1 < args.size()) a.build.intersectionCost = nonNegativeNumber(args[++i], "--cisect");
+        else if (args[i] == "--max-leaf" && i + 1 < args.size()) a.build.maxLeafSize = positiveInt(args[++i], "--max-leaf");
+        else if (args[i] == "--bins" && i + 1 < args.size()) a.build.bins = positiveInt(args[++i], "--bins");
         else if (args[i].rfind("--", 0) == 0) throw std::runtime_error("unknown option " + args[i]);
         else positional.push_back(args[i]);
     }
@@ -68,43 +51,11 @@ Args parseArgs(const std::vector<std::string>& args) {
         throw std::runtime_error("usage: vkrt-bench bvh MESH.obj|sphere:N [W H SPP THREADS] [--peer PATH] [--build-peer] [--rounds R] "
                                  "[--ctrav C] [--cisect C] [--max-leaf N] [--bins B]");
     a.source = positional[0];
-    if (positional.size() > 1) a.width = positive(positional[1], "W");
-    if (positional.size() > 2) a.height = positive(positional[2], "H");
-    if (positional.size() > 3) a.spp = positive(positional[3], "SPP");
-    if (positional.size() > 4) a.threads = positive(positional[4], "THREADS");
+    if (positional.size() > 1) a.width = positiveInt(positional[1], "W");
+    if (positional.size() > 2) a.height = positiveInt(positional[2], "H");
+    if (positional.size() > 3) a.spp = positiveInt(positional[3], "SPP");
+    if (positional.size() > 4) a.threads = positiveInt(positional[4], "THREADS");
     return a;
-}
-
-// The peer's camera rule (../shared/peer/README.md).
-struct Camera {
-    glm::vec3 centre, eye, fwd, right, up, light;
-    float radius;
-    explicit Camera(const BenchMesh& m) {
-        centre = (m.lo + m.hi) * 0.5f;
-        const glm::vec3 ext = m.hi - m.lo;
-        radius = 0.5f * std::sqrt(glm::dot(ext, ext));
-        eye = centre + normalised(glm::vec3(0.6f, 0.4f, 1.0f)) * (1.5f * radius);
-        fwd = normalised(centre - eye);
-        right = normalised(glm::cross(fwd, glm::vec3(0.0f, 1.0f, 0.0f)));
-        up = glm::cross(right, fwd);
-        light = centre + glm::vec3(radius * 2.0f, radius * 3.0f, radius * 2.0f);
-    }
-    // Scaling by the reciprocal length (not dividing) matches the peer's rounding.
-    static glm::vec3 normalised(const glm::vec3& v) { return v * (1.0f / std::sqrt(glm::dot(v, v))); }
-};
-
-// Runs body(y) for every image row on `threads` threads, rows handed out one at a time. Seconds.
-template <class Body>
-double overRows(int rows, int threads, Body&& body) {
-    std::atomic<int> next{0};
-    const auto start = std::chrono::steady_clock::now();
-    std::vector<std::thread> pool;
-    for (int t = 0; t < threads; ++t)
-        pool.emplace_back([&] {
-            for (int y; (y = next++) < rows;) body(y);
-        });
-    for (std::thread& t : pool) t.join();
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 // SAH cost of group 0's tree under one fixed model (C_trav = C_isect = 1), whatever constants
@@ -142,7 +93,7 @@ struct VkrtFigures {
     double primaryMrays = 0.0, shadowMrays = 0.0, diffuseMrays = 0.0;
 };
 
-VkrtFigures measureVkrt(const std::vector<bvh::PrimitiveInput>& prims, const Camera& cam, const Args& a) {
+VkrtFigures measureVkrt(const std::vector<bvh::PrimitiveInput>& prims, const PeerCamera& cam, const Args& a) {
     bvh::BuildOptions options = a.build;
     options.threads = a.threads;
     const std::vector<std::vector<bvh::PrimitiveInput>> groups{prims};
@@ -158,62 +109,33 @@ VkrtFigures measureVkrt(const std::vector<bvh::PrimitiveInput>& prims, const Cam
     const std::size_t n = static_cast<std::size_t>(w) * a.height * spp;
     std::vector<glm::vec3> hitP(n), hitN(n);
     std::vector<char> hit(n, 0);
-    auto facingNormal = [&](const bvh::Hit& h, const glm::vec3& d) {
-        const gpu::Primitive& p = scene.prims[h.prim];
-        auto vtx = [](const glm::uvec4& u) {
-            return glm::vec3(std::bit_cast<float>(u.x), std::bit_cast<float>(u.y), std::bit_cast<float>(u.z));
-        };
-        const glm::vec3 v0 = vtx(p.a);
-        glm::vec3 ng = Camera::normalised(glm::cross(vtx(p.b) - v0, vtx(p.c) - v0));
-        return glm::dot(ng, d) > 0.0f ? -ng : ng;
-    };
 
-    const double tPrimary = overRows(a.height, a.threads, [&](int y) {
-        std::mt19937 rng(y);
-        std::uniform_real_distribution<float> u(0.0f, 1.0f);
-        for (int x = 0; x < w; ++x)
-            for (int s = 0; s < spp; ++s) {
-                const std::size_t k = (static_cast<std::size_t>(y) * w + x) * spp + s;
-                const float px = (x + u(rng)) / w * 2 - 1;
-                const float py = 1 - (y + u(rng)) / a.height * 2;
-                const glm::vec3 d = Camera::normalised(cam.fwd + cam.right * (px * 0.8f) + cam.up * (py * 0.8f));
-                bvh::Ray ray{cam.eye, d, 1e30f};
-                bvh::Hit h;
-                hit[k] = bvh::intersectClosest(scene, ray, h);
-                if (hit[k]) {
-                    hitP[k] = cam.eye + d * h.t;
-                    hitN[k] = facingNormal(h, d);
-                }
+    // Each ray is made inside the timed loop, as the peer makes its rays.
+    const double tPrimary = overItems(a.height, a.threads, [&](int y) {
+        forEachPrimaryRay(cam, w, a.height, spp, y, [&](std::size_t k, const bvh::Ray& ray) {
+            bvh::Hit h;
+            hit[k] = bvh::intersectClosest(scene, ray, h);
+            if (hit[k]) {
+                hitP[k] = ray.origin + ray.dir * h.t;
+                hitN[k] = facingNormal(scene.prims[h.prim], ray.dir);
             }
+        });
     });
     std::size_t hits = 0;
     for (char h : hit) hits += h;
-    const double offset = 1e-4 * cam.radius;
-    const double tShadow = overRows(a.height, a.threads, [&](int y) {
+    const double tShadow = overItems(a.height, a.threads, [&](int y) {
         for (std::size_t k = static_cast<std::size_t>(y) * w * spp; k < static_cast<std::size_t>(y + 1) * w * spp; ++k) {
             if (!hit[k]) continue;
-            const glm::vec3 o = hitP[k] + hitN[k] * static_cast<float>(offset);
-            glm::vec3 d = cam.light - o;
-            const float len = std::sqrt(glm::dot(d, d));
-            d = d * (1 / len);
-            volatile bool blocked = bvh::intersectAny(scene, bvh::Ray{o, d, len});
+            volatile bool blocked = bvh::intersectAny(scene, shadowRay(cam, hitP[k], hitN[k]));
             (void)blocked;
         }
     });
-    const double tDiffuse = overRows(a.height, a.threads, [&](int y) {
-        std::mt19937 rng(1000 + y);
-        std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    const double tDiffuse = overItems(a.height, a.threads, [&](int y) {
+        DiffuseRow row(y);
         for (std::size_t k = static_cast<std::size_t>(y) * w * spp; k < static_cast<std::size_t>(y + 1) * w * spp; ++k) {
             if (!hit[k]) continue;
-            const glm::vec3 nrm = hitN[k];
-            const glm::vec3 axis = std::fabs(nrm.x) > 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
-            const glm::vec3 t = Camera::normalised(glm::cross(axis, nrm)), b = glm::cross(nrm, t);
-            const float r1 = u(rng), r2 = u(rng), sr = std::sqrt(r1);
-            const float ph = static_cast<float>(2 * M_PI * r2);
-            const glm::vec3 d = Camera::normalised(t * (sr * std::cos(ph)) + b * (sr * std::sin(ph)) + nrm * std::sqrt(1 - r1));
-            const glm::vec3 o = hitP[k] + nrm * static_cast<float>(offset);
             bvh::Hit h;
-            volatile bool any = bvh::intersectClosest(scene, bvh::Ray{o, d, 1e30f}, h);
+            volatile bool any = bvh::intersectClosest(scene, row.next(cam, hitP[k], hitN[k]), h);
             (void)any;
         }
     });
@@ -225,18 +147,13 @@ VkrtFigures measureVkrt(const std::vector<bvh::PrimitiveInput>& prims, const Cam
     return f;
 }
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
-
 }  // namespace
 
 int runBvhBench(const std::vector<std::string>& argv) {
     const Args a = parseArgs(argv);
     const BenchMesh mesh = loadBenchMesh(a.source);
     const std::vector<bvh::PrimitiveInput> prims = toPrimitives(mesh);
-    const Camera cam(mesh);
+    const PeerCamera cam(mesh);
     const std::string peer = locatePeer(a.peer, a.buildPeer);
     if (peer.empty())
         std::fprintf(stderr, "no Embree peer (--peer PATH, $VKRT_EMBREE_PEER or --build-peer): vkrt figures only\n");
