@@ -18,6 +18,10 @@ constexpr Subcommand kSubcommands[] = {
     {"bvh", "bvh MESH.obj|sphere:N [W H SPP THREADS] [--peer PATH] [--build-peer] [--rounds R]\n"
             "               [--ctrav C] [--cisect C] [--max-leaf N] [--bins B]",
      vkrt::bench::runBvhBench},
+    {"gpu", "gpu rays MESH.obj|sphere:N [W H SPP] [--rounds R] [--threads T] [--peer PATH | --build-peer | --no-peer]\n"
+            "               [--max-mismatch-fraction F]\n"
+            "  vkrt-bench gpu scenes [DIR] [-w W] [-h H] [-r RPP] [--repeat N]",
+     vkrt::bench::runGpuBench},
 };
 
 void usage() {
