@@ -64,13 +64,15 @@ void emitReflection(inout PathQueue q, PathRay ray, Surface s, vec3 N, float rou
     bool fanOut = ray.depth == 0u;  // gloss samples apply at primary hits only (RENDERING.md §5)
     uint g = fanOut ? frame.sampling.w : 1u;
     vec3 w = weight / float(g);
-    for (uint j = 0u; j < g; ++j) {
+    uint j = 0u;
+    for (; j < g; ++j) {
         if (!chargeLoop()) break;
         vec2 u = fanOut ? sample2D(frame.sampling.x, frame.glossGrid, key.pixel, key.index * g + j, dimGloss(0u), key.seed)
                         : sample2D(frame.sampling.x, frame.pixelGrid, key.pixel, key.index, dimGloss(ray.depth), key.seed);
         vec3 rg = glossyDirection(r, roughness, u);
         if (dot(rg, s.geomNormal) > 0.0) emitRay(q, offsetTowards(s, rg), rg, w, ray.depth + 1u);
     }
+    if (j < g) markLoopCutOff();
 }
 
 // Fresnel-weighted reflection and refraction at a dielectric boundary (RENDERING.md §6).
@@ -114,6 +116,7 @@ vec3 cameraSampleRadiance(vec3 origin, vec3 dir, SampleKey key) {
     g_pathTop = 0u;
     PathRay ray = PathRay(origin, dir, vec3(1.0), 0u);
     vec3 background = frame.background.rgb;
+    bool finished = false;  // set by the loop's own exit (budget.glsl)
     while (true) {
         if (!chargeLoop()) break;
         PathQueue q;
@@ -165,9 +168,11 @@ vec3 cameraSampleRadiance(vec3 origin, vec3 dir, SampleKey key) {
         } else if (g_pathTop > 0u) {
             ray = g_pathStack[--g_pathTop];
         } else {
+            finished = true;
             break;
         }
     }
+    if (!finished) markLoopCutOff();
     return radiance;
 }
 

@@ -5,9 +5,9 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "device_host.h"
-#include "sampling.h"
 #include "bindings.glsl"
-#include "budget.glsl"
+#include "budget.glsl"  // before sampling.h, whose loop reports through it
+#include "sampling.h"
 #include "intersect.glsl"
 #include "traverse.glsl"
 #include "surface.glsl"
@@ -49,8 +49,9 @@ void main() {
     CameraRay camera = cameraRay(x, y, subPixel);
     vec3 radiance = cameraSampleRadiance(camera.origin, camera.dir, key);
 
-    if (g_budgetExceeded) {
-        atomicOr(status.flags.x, STATUS_LOOP_BUDGET_EXCEEDED);
+    if (g_budgetExceeded || g_loopCutOff) {
+        atomicOr(status.flags.x, (g_budgetExceeded ? STATUS_LOOP_BUDGET_EXCEEDED : 0u) |
+                                     (g_loopCutOff && !g_budgetExceeded ? STATUS_LOOP_CUT_OFF : 0u));
         if (atomicCompSwap(status.flags.y, 0u, key.pixel + 1u) == 0u) status.flags.z = key.index;
     }
     if (any(isnan(radiance)) || any(isinf(radiance))) {

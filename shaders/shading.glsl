@@ -49,24 +49,28 @@ vec3 lightFrom(Surface s, vec3 N, vec3 V, uint type, vec3 kd, vec3 ks, float pho
 vec3 directLighting(Surface s, vec3 N, vec3 V, uint type, vec3 kd, vec3 ks, float phongExp, uint depth, SampleKey key) {
     vec3 sum = vec3(0.0);
     uint lightCount = frame.scene.z;
-    for (uint l = 0u; l < lightCount; ++l) {
+    uint l = 0u;
+    for (; l < lightCount; ++l) {
         if (!chargeLoop()) break;
         Light light = lights[l];
         if (HAS_AREA_LIGHTS && light.info.x == LIGHT_AREA) {
             uint k = frame.sampling.z;
             vec3 acc = vec3(0.0);
-            for (uint j = 0u; j < k; ++j) {
+            uint j = 0u;
+            for (; j < k; ++j) {
                 if (!chargeLoop()) break;
                 vec2 u = sample2D(frame.sampling.x, frame.lightGrid, key.pixel, key.index * k + j,
                                   dimLight(depth, light.info.y), key.seed);
                 vec3 q = light.position.xyz + (u.x - 0.5) * light.edgeU.xyz + (u.y - 0.5) * light.edgeV.xyz;
                 acc += lightFrom(s, N, V, type, kd, ks, phongExp, q, light.intensity.rgb);
             }
+            if (j < k) markLoopCutOff();
             sum += acc / float(k);
         } else {
             sum += lightFrom(s, N, V, type, kd, ks, phongExp, light.position.xyz, light.intensity.rgb);
         }
     }
+    if (l < lightCount) markLoopCutOff();
     return sum;
 }
 

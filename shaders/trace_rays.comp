@@ -6,7 +6,7 @@
 
 #include "device_host.h"
 #include "bindings.glsl"
-#include "budget.glsl"
+#include "budget.glsl"  // before sampling.h (if ever included), whose loop reports through it
 #include "intersect.glsl"
 #include "traverse.glsl"
 
@@ -23,5 +23,6 @@ void main() {
     Hit hit;
     bool found = traceScene(r.origin.xyz, r.direction.xyz, r.origin.w, trace.rays.y != 0u, hit);
     if (g_budgetExceeded) atomicOr(status.flags.x, STATUS_LOOP_BUDGET_EXCEEDED);
+    else if (g_loopCutOff) atomicOr(status.flags.x, STATUS_LOOP_CUT_OFF);
     hits[i].hit = found ? uvec4(floatBitsToUint(hit.t), hit.prim, hit.instance, 0u) : uvec4(0xffffffffu, 0u, 0u, 0u);
 }

@@ -70,7 +70,8 @@ uint visitChild(TraceRay ray, bool hitChild, uint childLink, uint count, bool in
     if (!hitChild) return ENTRY_NONE;
     if (count == 0u) return childLink;
     if (!inBottom) return ENTRY_INSTANCE_BIT | childLink;  // top-level leaves hold one instance
-    for (uint i = 0u; i < count; ++i) {
+    uint i = 0u;
+    for (; i < count; ++i) {
         if (!chargeLoop()) break;
         float t;
         vec2 bary;
@@ -80,9 +81,10 @@ uint visitChild(TraceRay ray, bool hitChild, uint childLink, uint count, bool in
             hit.prim = childLink + i;
             hit.bary = bary;
             found = true;
-            if (anyHit) break;
+            if (anyHit) return ENTRY_NONE;
         }
     }
+    if (i < count) markLoopCutOff();
     return ENTRY_NONE;
 }
 
@@ -103,6 +105,7 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
     bool inBottom = !HAS_INSTANCES;
     uint entry = HAS_INSTANCES ? frame.scene.w : instances[0].info.x;
 
+    bool finished = false;  // set by the loop's own exits (budget.glsl)
     while (true) {
         if (!chargeLoop()) break;
         if (entry == ENTRY_LEAVE_INSTANCE) {
@@ -112,7 +115,11 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             instance = entry & ~ENTRY_INSTANCE_BIT;
             ray = rayIntoInstance(origin, dir, instance);
             inBottom = true;
-            if (sp >= TRAVERSAL_STACK_SIZE) { atomicOr(status.flags.x, STATUS_RAY_STACK_OVERFLOW); break; }
+            if (sp >= TRAVERSAL_STACK_SIZE) {
+                atomicOr(status.flags.x, STATUS_RAY_STACK_OVERFLOW);
+                finished = true;  // reported as the overflow it is
+                break;
+            }
             stack[sp++] = ENTRY_LEAVE_INSTANCE;
             entry = instances[instance].info.x;
             continue;
@@ -138,7 +145,11 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
                 bool swapOrder = tNear1 < tNear0;
                 uint nearEntry = swapOrder ? next1 : next0;
                 uint farEntry = swapOrder ? next0 : next1;
-                if (sp >= TRAVERSAL_STACK_SIZE) { atomicOr(status.flags.x, STATUS_RAY_STACK_OVERFLOW); break; }
+                if (sp >= TRAVERSAL_STACK_SIZE) {
+                atomicOr(status.flags.x, STATUS_RAY_STACK_OVERFLOW);
+                finished = true;  // reported as the overflow it is
+                break;
+            }
                 stack[sp++] = farEntry;
                 entry = nearEntry;
                 continue;
@@ -146,9 +157,13 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             if (next0 != ENTRY_NONE) { entry = next0; continue; }
             if (next1 != ENTRY_NONE) { entry = next1; continue; }
         }
-        if (sp == 0u) break;
+        if (sp == 0u) {
+            finished = true;
+            break;
+        }
         entry = stack[--sp];
     }
+    if (!finished) markLoopCutOff();
     return found;
 }
 

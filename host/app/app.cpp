@@ -94,8 +94,16 @@ int runRender(CommandLine& cl) {
     const Scene scene = loadWithWarnings(cl);
     const SceneAccel accel = buildSceneAccel(scene);
     std::unique_ptr<GpuRenderer> gpu = openGpu(cl);
-    DeviceRender result = gpu ? renderOnGpu(*gpu, scene, accel, cl.render, cl.general)
-                              : renderOnCpu(scene, accel, cl.render);
+    DeviceRender result;
+    try {
+        result = gpu ? renderOnGpu(*gpu, scene, accel, cl.render, cl.general) : renderOnCpu(scene, accel, cl.render);
+    } catch (const GpuKernelError& e) {
+        // The kernel refused this scene (e.g. lavapipe's loop limiter): with --device auto the
+        // CPU reference computes the same image; with --device gpu the error stands.
+        if (cl.device != DeviceChoice::Auto) throw;
+        std::cerr << "note: " << e.what() << "\nnote: rendering on the CPU reference instead\n";
+        result = renderOnCpu(scene, accel, cl.render);
+    }
     writeImage(result.image, cl.outputPath);
     if (!cl.render.quiet)
         std::fprintf(stderr, "%s: %dx%d, %d rpp on %s: render %.2fs, total %.2fs -> %s\n", cl.scenePath.c_str(),

@@ -190,6 +190,10 @@ std::vector<gpu::TraceHitOutput> GpuRayTracer::trace(std::span<const gpu::TraceR
             throw GpuKernelError("a ray of batch " + std::to_string(first / m.batch) + " needed more than " +
                                  std::to_string(gpu::LOOP_BUDGET) + " traversal steps (the kernel's loop budget; lavapipe before Mesa 25 "
                                  "cuts loops off silently at 65,535 passes)");
+        if (status.flags.x & gpu::STATUS_LOOP_CUT_OFF)
+            throw GpuKernelError("the traversal of a ray of batch " + std::to_string(first / m.batch) +
+                                 " was cut off by the driver's loop limiter (lavapipe before Mesa 25 ends every loop "
+                                 "silently after 65,535 passes per group of 8 lanes)");
         if (status.flags.x & gpu::STATUS_RAY_STACK_OVERFLOW)
             throw GpuKernelError("the BVH traversal stack (" + std::to_string(gpu::TRAVERSAL_STACK_SIZE) + " entries) overflowed");
         m.transfers.download(m.hits, std::as_writable_bytes(std::span(hits).subspan(first, count)));

@@ -22,10 +22,15 @@ void throwIfKernelFailed(const gpu::RenderStatus& status, std::uint32_t imageWid
                    " loop iterations (the kernel stops there because lavapipe before Mesa 25 silently cuts every "
                    "invocation off at 65,535); reduce --max-depth, --gloss-samples or --light-samples, or the scene's "
                    "geometry overlap;";
+    if (flags & gpu::STATUS_LOOP_CUT_OFF)
+        message += " a loop of the kernel was cut off before it finished: this driver ends loops silently after "
+                   "65,535 passes per group of 8 lanes (lavapipe before Mesa 25), and one sample of this scene needs "
+                   "more (many lights, deep reflection, heavy overlap); reduce the number of lights, --light-samples, "
+                   "--gloss-samples or --max-depth, or render with --device cpu;";
     if (flags & gpu::STATUS_RAY_STACK_OVERFLOW)
         message += " a ray stack overflowed (BVH traversal stack of " + std::to_string(gpu::TRAVERSAL_STACK_SIZE) +
                    " entries, or the pending reflection/refraction rays); reduce --max-depth or --gloss-samples;";
-    const std::uint32_t known = gpu::STATUS_LOOP_BUDGET_EXCEEDED | gpu::STATUS_RAY_STACK_OVERFLOW;
+    const std::uint32_t known = gpu::STATUS_LOOP_BUDGET_EXCEEDED | gpu::STATUS_RAY_STACK_OVERFLOW | gpu::STATUS_LOOP_CUT_OFF;
     if (flags & ~known) {
         std::ostringstream hex;
         hex << std::hex << (flags & ~known);

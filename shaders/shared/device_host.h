@@ -171,6 +171,7 @@ struct FrameParams {
 // Written by the kernel, read by the host after each submission.
 VKRT_CONST uint STATUS_LOOP_BUDGET_EXCEEDED = 1u;
 VKRT_CONST uint STATUS_RAY_STACK_OVERFLOW = 2u;
+VKRT_CONST uint STATUS_LOOP_CUT_OFF = 4u;  // a loop ended before its work was done (a driver's loop limiter)
 struct RenderStatus {
     uvec4 flags;       // x: STATUS_* bits, y: first offending pixel index + 1 (0: none), z: its sample,
                        // w: number of samples whose radiance was NaN/Inf (replaced by black)
@@ -218,8 +219,11 @@ VKRT_CONST uint SPEC_COUNT = 13;
 // deepest bottom-level depth exceeds it, so the stack can never overflow at run time.
 VKRT_CONST uint TRAVERSAL_STACK_SIZE = 48u;
 
-// Per invocation, the kernel counts loop iterations and stops (setting
-// STATUS_LOOP_BUDGET_EXCEEDED) before Mesa's silent 65,535-back-edge loop limit can cut it off.
+// Per invocation, the kernel counts loop iterations and stops at this many (setting
+// STATUS_LOOP_BUDGET_EXCEEDED). That bounds one sample's work on every driver, but cannot keep
+// Mesa's silent 65,535-pass loop limiter from firing first (its counter is shared by 8 lanes and
+// charged for the slowest one): every loop therefore also checks that it finished (budget.glsl,
+// STATUS_LOOP_CUT_OFF).
 VKRT_CONST uint LOOP_BUDGET = 60000u;
 
 #ifdef __cplusplus

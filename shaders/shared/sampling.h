@@ -25,6 +25,16 @@ using uvec2 = glm::uvec2;
 #define VKRT_FN
 #endif
 
+// How a loop reports that a driver's loop limiter ended it early: the GLSL kernels define it
+// (shaders/budget.glsl, included first); the CPU has no limiter.
+#ifndef VKRT_LOOP_CUT_OFF
+#ifdef __cplusplus
+#define VKRT_LOOP_CUT_OFF() ((void)0)
+#else
+#error "include budget.glsl (or define VKRT_LOOP_CUT_OFF) before sampling.h"
+#endif
+#endif
+
 // pcg4d: four 32-bit outputs from four 32-bit inputs, all lanes mixed into each other.
 VKRT_FN uvec4 pcg4d(uvec4 v) {
     v = v * 1664525u + 1013904223u;
@@ -76,6 +86,7 @@ VKRT_FN uint permuteIndex(uint i, uint n, uint key) {
         i = (i * 0xc2b2ae3du) & mask;
         i ^= i >> 5u;
     } while (i >= n);
+    if (i >= n) VKRT_LOOP_CUT_OFF();  // only a driver's loop limiter can end the walk outside [0, n)
     return i;
 }
 

@@ -35,6 +35,15 @@ TEST(RenderStatus, LoopBudgetNamesPixelSampleAndRemedy) {
     EXPECT_NE(m.find("--max-depth"), std::string::npos) << m;
 }
 
+TEST(RenderStatus, LoopCutOffNamesTheLimiterAndTheWayOut) {
+    const std::string m = failure({glm::uvec4(gpu::STATUS_LOOP_CUT_OFF, 2u * 64u + 5u + 1u, 0u, 0u)}, 64);
+    EXPECT_NE(m.find("pixel (5, 2), sample 0"), std::string::npos) << m;
+    EXPECT_NE(m.find("cut off"), std::string::npos) << m;
+    EXPECT_NE(m.find("65,535"), std::string::npos) << m;
+    EXPECT_NE(m.find("--device cpu"), std::string::npos) << m;
+    EXPECT_EQ(m.find("unknown status"), std::string::npos) << m;
+}
+
 TEST(RenderStatus, StackOverflowWithoutARecordedPixel) {
     const std::string m = failure({glm::uvec4(gpu::STATUS_RAY_STACK_OVERFLOW, 0u, 0u, 0u)}, 100);
     EXPECT_NE(m.find("stack overflowed"), std::string::npos) << m;
