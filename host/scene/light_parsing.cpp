@@ -8,11 +8,12 @@
 namespace vkrt {
 
 namespace {
-float parsePositiveSize(const ParseContext& context, pugi::xml_node node, const char* name) {
+float parseLightSize(const ParseContext& context, pugi::xml_node node, const char* name) {
     const pugi::xml_node element = requireChild(context, node, name);
     const float value = parseScalar(context, element);
-    // A zero-sized area light has no area to sample or divide by; a point light says that better.
-    if (!(value > 0.0f)) context.fail(element, "must be positive", elementText(element));
+    // Zero is allowed: a 0x0 area light is exactly its point light (docs/RENDERING.md; tested in
+    // tests/stability), so a user can shrink a light to nothing without rewriting it.
+    if (!(value >= 0.0f)) context.fail(element, "must not be negative", elementText(element));
     return value;
 }
 }  // namespace
@@ -39,8 +40,8 @@ std::optional<Light> parseLight(const ParseContext& context, pugi::xml_node node
         const float length = glm::length(n);
         if (!(length > 0.0f) || !std::isfinite(length)) context.fail(normal, "normal has zero length", elementText(normal));
         light.normal = n / length;
-        light.width = parsePositiveSize(context, node, "width");
-        light.length = parsePositiveSize(context, node, "length");
+        light.width = parseLightSize(context, node, "width");
+        light.length = parseLightSize(context, node, "length");
     }
     return light;
 }

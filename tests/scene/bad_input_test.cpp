@@ -112,7 +112,7 @@ TEST_F(BadInput, AreaLightZeroNormalAndNonPositiveSizes) {
     expectIssue(errorOf(area("0 0 0", "1", "1")), 5, "normal", "0 0 0");
     expectIssue(errorOf(area("0 -1 0", "-2", "1")), 6, "width", "-2");
     expectIssue(errorOf(area("0 -1 0", "2", "-1")), 7, "length", "-1");
-    expectIssue(errorOf(area("0 -1 0", "0", "1")), 6, "width", "0");
+    expectIssue(errorOf(area("0 -1 0", "-0.001", "1")), 6, "width", "-0.001");
     const Issue missing = errorOf(sceneWith("<light type=\"area\"><position>0 5 0</position><intensity>1 1 1</intensity><normal>0 -1 0</normal></light>"));
     expectIssue(missing, 4, "light", "");
     EXPECT_NE(missing.problem.find("<width>"), std::string::npos);

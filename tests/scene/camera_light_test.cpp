@@ -96,6 +96,18 @@ TEST_F(LightParsing, AreaLightNormalIsNormalisedAndSizesKept) {
     EXPECT_EQ(light.length, 4.0f);
 }
 
+TEST_F(LightParsing, ZeroSizedAreaLightLoads) {
+    // 0x0 is the point light (tests/stability checks the images are identical); only negative
+    // sizes are errors (bad_input_test).
+    const Scene scene = loadClean(sceneWith(
+        "<light type=\"area\"><position>0 5 0</position><intensity>1 1 1</intensity>"
+        "<normal>0 -1 0</normal><width>0</width><length>0</length></light>"));
+    ASSERT_EQ(scene.lights.size(), 1u);
+    EXPECT_EQ(scene.lights[0].type, LightType::Area);
+    EXPECT_EQ(scene.lights[0].width, 0.0f);
+    EXPECT_EQ(scene.lights[0].length, 0.0f);
+}
+
 TEST_F(LightParsing, AreaChildrenOnAPointLightAreIgnoredSilently) {
     // solarSystem.xml, oneSphereUpPt.xml; even a zero normal there is not looked at.
     const Scene scene = loadClean(sceneWith(
