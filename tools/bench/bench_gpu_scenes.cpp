@@ -116,7 +116,7 @@ int runGpuScenesBench(const std::vector<std::string>& argv) {
                 "#   RenderStats::seconds (the render loop). Ratios are of times: general/spec > 1 means specialising pays,\n"
                 "#   gpu/cpu > 1 means the GPU path (specialised) is slower. mean_diff = mean |GPU - CPU| of the 8-bit images.\n");
     if (a.repeat > 1) std::printf("# each time is the median of %d renders\n", a.repeat);
-    std::printf("%-40s %10s %10s %8s %10s %8s %10s\n", "scene", "spec_s", "general_s", "gen/spec", "cpu_s", "gpu/cpu",
+    std::printf("%-42s %10s %10s %8s %10s %8s %10s\n", "scene", "spec_s", "general_s", "gen/spec", "cpu_s", "gpu/cpu",
                 "mean_diff");
 
     std::vector<double> generalOverSpec, gpuOverCpu;
@@ -135,11 +135,11 @@ int runGpuScenesBench(const std::vector<std::string>& argv) {
             const double g = gpuSeconds(gpu, scene, accel, options, KernelVariant::General, a.repeat, &general);
             const double c = cpuSeconds(scene, accel, options, a.repeat, &cpu);
             const double diff = compareImages(spec, cpu).meanAbs;
-            std::printf("%-40s %10.4f %10.4f %8.2f %10.4f %8.2f %10.5f\n", label.c_str(), s, g, g / s, c, s / c, diff);
+            std::printf("%-42s %10.4f %10.4f %8.2f %10.4f %8.2f %10.5f\n", label.c_str(), s, g, g / s, c, s / c, diff);
             generalOverSpec.push_back(g / s);
             gpuOverCpu.push_back(s / c);
         } catch (const std::exception& e) {
-            std::printf("%-40s error: %s\n", label.c_str(), e.what());
+            std::printf("%-42s error: %s\n", label.c_str(), e.what());
             ++failed;
         }
     }
