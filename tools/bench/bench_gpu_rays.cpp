@@ -41,6 +41,7 @@ struct Args {
     int threads = 2;  // CPU traversal and Embree; lavapipe uses every core (LP_NUM_THREADS)
     int rounds = 5;
     std::string peer;
+    std::string shaderDir;  // kernel GLSL compiled at run time (shader developers' A/B runs)
     bool buildPeer = false, noPeer = false;
     // GPU and CPU traversal share algorithms, not arithmetic (the device may fuse multiply-adds),
     // so grazing rays may go either way; tests/vulkan/test_ray_tracer.cpp allows 0.2%.
@@ -54,6 +55,7 @@ Args parseArgs(const std::vector<std::string>& args) {
         const bool value = i + 1 < args.size();
         if (args[i] == "--peer" && value) a.peer = args[++i];
         else if (args[i] == "--build-peer") a.buildPeer = true;
+        else if (args[i] == "--shader-dir" && value) a.shaderDir = args[++i];
         else if (args[i] == "--no-peer") a.noPeer = true;
         else if (args[i] == "--rounds" && value) a.rounds = positiveInt(args[++i], "--rounds");
         else if (args[i] == "--threads" && value) a.threads = positiveInt(args[++i], "--threads");
@@ -64,7 +66,7 @@ Args parseArgs(const std::vector<std::string>& args) {
     }
     if (positional.empty() || positional.size() > 4)
         throw std::runtime_error("usage: vkrt-bench gpu rays MESH.obj|sphere:N [W H SPP] [--rounds R] [--threads T] "
-                                 "[--peer PATH | --build-peer | --no-peer] [--max-mismatch-fraction F]");
+                                 "[--peer PATH | --build-peer | --no-peer] [--max-mismatch-fraction F] [--shader-dir DIR]");
     a.source = positional[0];
     if (positional.size() > 1) a.width = positiveInt(positional[1], "W");
     if (positional.size() > 2) a.height = positiveInt(positional[2], "H");
@@ -186,7 +188,9 @@ int runGpuRaysBench(const std::vector<std::string>& argv) {
     const std::vector<RaySet> sets = makeRays(scene, cam, a);
 
     const auto uploadStart = std::chrono::steady_clock::now();
-    GpuRayTracer tracer(scene);
+    GpuRendererOptions gpuOptions;
+    if (!a.shaderDir.empty()) gpuOptions.shaderDir = a.shaderDir;
+    GpuRayTracer tracer(scene, gpuOptions);
     const double uploadSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - uploadStart).count();
 
     // Warm-up: creates the pipeline and lets lavapipe JIT it at its first dispatch; its hits are

@@ -19,7 +19,7 @@ constexpr Subcommand kSubcommands[] = {
             "               [--ctrav C] [--cisect C] [--max-leaf N] [--bins B]",
      vkrt::bench::runBvhBench},
     {"gpu", "gpu rays MESH.obj|sphere:N [W H SPP] [--rounds R] [--threads T] [--peer PATH | --build-peer | --no-peer]\n"
-            "               [--max-mismatch-fraction F]\n"
+            "               [--max-mismatch-fraction F] [--shader-dir DIR]\n"
             "  vkrt-bench gpu scenes [DIR] [-w W] [-h H] [-r RPP] [--repeat N]",
      vkrt::bench::runGpuBench},
 };
