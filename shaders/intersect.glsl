@@ -44,28 +44,30 @@ TraceRay makeTraceRay(vec3 origin, vec3 dir) {
 // Watertight ray/triangle. On a hit with 0 < t < tBest returns true, t and the barycentric
 // weights (b1, b2) of v1 and v2. Edge functions are `precise` so no FMA contraction breaks the
 // exact sign symmetry between triangles that share an edge (the watertightness argument).
+float pickAxis(vec3 v, int k) { return k == 0 ? v.x : (k == 1 ? v.y : v.z); }
+vec3 permuteAxes(vec3 v, ivec3 k) { return vec3(pickAxis(v, k.x), pickAxis(v, k.y), pickAxis(v, k.z)); }
+
 bool intersectTriangle(TraceRay ray, vec3 v0, vec3 v1, vec3 v2, float tBest, out float tHit, out vec2 bary) {
     tHit = 0.0;
     bary = vec2(0.0);
-    int kx = ray.axes.x, ky = ray.axes.y, kz = ray.axes.z;
-    vec3 A = v0 - ray.origin;
-    vec3 B = v1 - ray.origin;
-    vec3 C = v2 - ray.origin;
-    precise float Ax = A[kx] - ray.shear.x * A[kz];
-    precise float Ay = A[ky] - ray.shear.y * A[kz];
-    precise float Bx = B[kx] - ray.shear.x * B[kz];
-    precise float By = B[ky] - ray.shear.y * B[kz];
-    precise float Cx = C[kx] - ray.shear.x * C[kz];
-    precise float Cy = C[ky] - ray.shear.y * C[kz];
+    vec3 A = permuteAxes(v0 - ray.origin, ray.axes);
+    vec3 B = permuteAxes(v1 - ray.origin, ray.axes);
+    vec3 C = permuteAxes(v2 - ray.origin, ray.axes);
+    precise float Ax = A.x - ray.shear.x * A.z;
+    precise float Ay = A.y - ray.shear.y * A.z;
+    precise float Bx = B.x - ray.shear.x * B.z;
+    precise float By = B.y - ray.shear.y * B.z;
+    precise float Cx = C.x - ray.shear.x * C.z;
+    precise float Cy = C.y - ray.shear.y * C.z;
     precise float U = Cx * By - Cy * Bx;
     precise float V = Ax * Cy - Ay * Cx;
     precise float W = Bx * Ay - By * Ax;
     if ((U < 0.0 || V < 0.0 || W < 0.0) && (U > 0.0 || V > 0.0 || W > 0.0)) return false;
     precise float det = U + V + W;
     if (det == 0.0) return false;  // degenerate triangle or ray in its plane
-    precise float Az = ray.shear.z * A[kz];
-    precise float Bz = ray.shear.z * B[kz];
-    precise float Cz = ray.shear.z * C[kz];
+    precise float Az = ray.shear.z * A.z;
+    precise float Bz = ray.shear.z * B.z;
+    precise float Cz = ray.shear.z * C.z;
     precise float T = U * Az + V * Bz + W * Cz;
     // Compare T against the range scaled by det to avoid dividing for rejected hits.
     if (det < 0.0 && (T >= 0.0 || T <= tBest * det)) return false;

@@ -63,29 +63,11 @@ TraceRay rayIntoInstance(vec3 origin, vec3 dir, uint instance) {
     return makeTraceRay(o, d);
 }
 
-// One child of a node whose box the ray hits: an inner node or an instance to visit later
-// (returned), or a bottom-level leaf intersected right away (ENTRY_NONE returned).
-uint visitChild(TraceRay ray, bool hitChild, uint childLink, uint count, bool inBottom, uint instance, bool anyHit,
-                inout Hit hit, inout bool found) {
-    if (!hitChild) return ENTRY_NONE;
-    if (count == 0u) return childLink;
-    if (!inBottom) return ENTRY_INSTANCE_BIT | childLink;  // top-level leaves hold one instance
-    uint i = 0u;
-    for (; i < count; ++i) {
-        if (!chargeLoop()) break;
-        float t;
-        vec2 bary;
-        if (intersectPrimitive(ray, childLink + i, hit.t, t, bary)) {
-            hit.t = t;
-            hit.instance = instance;
-            hit.prim = childLink + i;
-            hit.bary = bary;
-            found = true;
-            if (anyHit) return ENTRY_NONE;
-        }
-    }
-    if (i < count) markLoopCutOff();
-    return ENTRY_NONE;
+// The stack entry for child K of a node: an inner node, a bottom-level leaf, or an instance.
+uint childEntry(uint link, uint count, bool inBottom) {
+    if (count == 0u) return link;
+    if (!inBottom) return ENTRY_INSTANCE_BIT | link;  // top-level leaves hold one instance
+    return ENTRY_LEAF_BIT | (link << 4u) | count;  // device_host.h: the host checked it fits
 }
 
 // Closest hit (anyHit = false) or any hit (shadow rays) with 0 < t < tMax.
@@ -98,31 +80,51 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
 
     TraceRay worldRay = makeTraceRay(origin, dir);
     TraceRay ray = worldRay;
-    uint stack[TRAVERSAL_STACK_SIZE];
+    // One spare slot: every iteration writes the free slot stack[sp] (see below), also when full.
+    uint stack[TRAVERSAL_STACK_SIZE + 1u];
     uint sp = 0u;
     uint instance = 0u;
-    // Without instancing the scene is one identity instance whose bottom level is in world space.
     bool inBottom = !HAS_INSTANCES;
     uint entry = HAS_INSTANCES ? frame.scene.w : instances[0].info.x;
+    bool finished = false;
 
-    bool finished = false;  // set by the loop's own exits (budget.glsl)
     while (true) {
         if (!chargeLoop()) break;
-        if (entry == ENTRY_LEAVE_INSTANCE) {
+        // Each lane does one kind of step; the stack is touched only after the branches, by every
+        // lane: a push writes the free slot stack[sp] whether or not it is needed, and the pop reads
+        // the top whether or not it is needed. Lanes run in lockstep and a private array indexed per
+        // lane costs a scalar access per lane; done inside a divergent branch, each of those also
+        // tests the lane's mask and branches on it, which mispredicts (measured: ~30% of the time).
+        uint pushed = ENTRY_NONE;
+        bool descend = false;
+        if (HAS_INSTANCES && entry == ENTRY_LEAVE_INSTANCE) {
             ray = worldRay;
             inBottom = false;
-        } else if ((entry & ENTRY_INSTANCE_BIT) != 0u) {
+        } else if (HAS_INSTANCES && (entry & ENTRY_INSTANCE_BIT) != 0u) {
             instance = entry & ~ENTRY_INSTANCE_BIT;
             ray = rayIntoInstance(origin, dir, instance);
             inBottom = true;
-            if (sp >= TRAVERSAL_STACK_SIZE) {
-                atomicOr(status.flags.x, STATUS_RAY_STACK_OVERFLOW);
-                finished = true;  // reported as the overflow it is
-                break;
-            }
-            stack[sp++] = ENTRY_LEAVE_INSTANCE;
+            pushed = ENTRY_LEAVE_INSTANCE;
             entry = instances[instance].info.x;
-            continue;
+            descend = true;
+        } else if ((entry & ENTRY_LEAF_BIT) != 0u) {
+            uint first = (entry & ~ENTRY_LEAF_BIT) >> 4u;
+            uint count = entry & 15u;
+            uint i = 0u;
+            for (; i < count; ++i) {
+                if (!chargeLoop()) break;
+                float t;
+                vec2 bary;
+                if (intersectPrimitive(ray, first + i, hit.t, t, bary)) {
+                    hit.t = t;
+                    hit.instance = instance;
+                    hit.prim = first + i;
+                    hit.bary = bary;
+                    found = true;
+                    if (anyHit) return true;
+                }
+            }
+            if (i < count) markLoopCutOff();
         } else {
             int base = int(entry * BVH_NODE_TEXELS);
             uvec4 xy0 = texelFetch(bvhNodes, base);
@@ -137,31 +139,31 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
                         hitsBox(ray, vec3(fxy0.x, fxy0.z, fz.x), vec3(fxy0.y, fxy0.w, fz.y), hit.t, tNear0);
             bool hit1 = (link.w != 0u || link.y != NODE_NONE) &&
                         hitsBox(ray, vec3(fxy1.x, fxy1.z, fz.z), vec3(fxy1.y, fxy1.w, fz.w), hit.t, tNear1);
-            uint next0 = visitChild(ray, hit0, link.x, link.z, inBottom, instance, anyHit, hit, found);
-            if (found && anyHit) return true;
-            uint next1 = visitChild(ray, hit1, link.y, link.w, inBottom, instance, anyHit, hit, found);
-            if (found && anyHit) return true;
-            if (next0 != ENTRY_NONE && next1 != ENTRY_NONE) {
-                bool swapOrder = tNear1 < tNear0;
-                uint nearEntry = swapOrder ? next1 : next0;
-                uint farEntry = swapOrder ? next0 : next1;
-                if (sp >= TRAVERSAL_STACK_SIZE) {
+            uint next0 = childEntry(link.x, link.z, inBottom);
+            uint next1 = childEntry(link.y, link.w, inBottom);
+            bool nearFirst = !(hit0 && hit1 && tNear1 < tNear0);
+            if (hit0 && hit1) pushed = nearFirst ? next1 : next0;
+            descend = hit0 || hit1;
+            entry = (hit0 && nearFirst) ? next0 : next1;
+        }
+        stack[min(sp, TRAVERSAL_STACK_SIZE)] = pushed;
+        if (pushed != ENTRY_NONE) {
+            if (sp >= TRAVERSAL_STACK_SIZE) {
                 atomicOr(status.flags.x, STATUS_RAY_STACK_OVERFLOW);
                 finished = true;  // reported as the overflow it is
                 break;
             }
-                stack[sp++] = farEntry;
-                entry = nearEntry;
-                continue;
+            ++sp;
+        }
+        uint top = stack[sp > 0u ? sp - 1u : 0u];
+        if (!descend) {
+            if (sp == 0u) {
+                finished = true;
+                break;
             }
-            if (next0 != ENTRY_NONE) { entry = next0; continue; }
-            if (next1 != ENTRY_NONE) { entry = next1; continue; }
+            entry = top;
+            --sp;
         }
-        if (sp == 0u) {
-            finished = true;
-            break;
-        }
-        entry = stack[--sp];
     }
     if (!finished) markLoopCutOff();
     return found;

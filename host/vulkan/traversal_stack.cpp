@@ -39,12 +39,43 @@ std::uint32_t traversalStackNeed(const bvh::SceneBvh& bvh, bool instancing) {
     return innerDepth(bvh.nodes, bvh.topRoot) + 1 + deepestBottom;
 }
 
+void checkLeafEntries(const bvh::SceneBvh& bvh) {
+    // Bottom levels only: top-level leaves are pushed as instance entries, not as leaf entries.
+    std::vector<std::uint32_t> pending;
+    for (const gpu::Instance& instance : bvh.instances)
+        if (instance.info.x != gpu::NODE_NONE) pending.push_back(instance.info.x);
+    std::vector<bool> seen(bvh.nodes.size(), false);
+    while (!pending.empty()) {
+        const std::uint32_t index = pending.back();
+        pending.pop_back();
+        if (index >= bvh.nodes.size()) throw std::logic_error("BVH node link " + std::to_string(index) + " is outside the nodes");
+        if (seen[index]) continue;  // instances share bottom levels
+        seen[index] = true;
+        const gpu::BvhNode& node = bvh.nodes[index];
+        for (int child = 0; child < 2; ++child) {
+            const std::uint32_t link = node.link[child];
+            const std::uint32_t count = node.link[2 + child];
+            if (count == 0) {
+                if (link != gpu::NODE_NONE) pending.push_back(link);
+            } else if (count > gpu::LEAF_ENTRY_MAX_COUNT || link > gpu::LEAF_ENTRY_MAX_FIRST) {
+                throw DeviceLimitExceeded("BVH node " + std::to_string(index) + " has a leaf of " + std::to_string(count) +
+                                          " primitives starting at primitive " + std::to_string(link) +
+                                          "; the kernel's traversal stack packs at most " +
+                                          std::to_string(gpu::LEAF_ENTRY_MAX_COUNT) + " primitives starting below " +
+                                          std::to_string(gpu::LEAF_ENTRY_MAX_FIRST + 1) +
+                                          " (shaders/shared/device_host.h): build with smaller leaves");
+            }
+        }
+    }
+}
+
 void checkTraversalStack(const bvh::SceneBvh& bvh, bool instancing, std::uint32_t capacity) {
     const std::uint32_t need = traversalStackNeed(bvh, instancing);
     if (need > capacity)
         throw DeviceLimitExceeded("the scene's BVH needs a traversal stack of " + std::to_string(need) +
                                   " entries but the kernel's TRAVERSAL_STACK_SIZE is " + std::to_string(capacity) +
                                   " (shaders/shared/device_host.h); the BVH is unusually deep: check for degenerate geometry");
+    checkLeafEntries(bvh);
 }
 
 }  // namespace vkrt

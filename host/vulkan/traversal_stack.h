@@ -18,7 +18,13 @@ std::uint32_t innerDepth(const std::vector<gpu::BvhNode>& nodes, std::uint32_t r
 // deepest bottom level. Without instancing only instance 0's bottom level is traversed.
 std::uint32_t traversalStackNeed(const bvh::SceneBvh& bvh, bool instancing);
 
-// Throws DeviceLimitExceeded naming both numbers when traversalStackNeed > capacity.
+// Throws DeviceLimitExceeded naming the leaf when a bottom-level leaf cannot be packed into one
+// stack entry (more than LEAF_ENTRY_MAX_COUNT primitives, or a first primitive beyond
+// LEAF_ENTRY_MAX_FIRST; device_host.h).
+void checkLeafEntries(const bvh::SceneBvh& bvh);
+
+// Throws DeviceLimitExceeded naming both numbers when traversalStackNeed > capacity; then
+// checkLeafEntries.
 void checkTraversalStack(const bvh::SceneBvh& bvh, bool instancing, std::uint32_t capacity = gpu::TRAVERSAL_STACK_SIZE);
 
 }  // namespace vkrt

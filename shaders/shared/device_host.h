@@ -57,6 +57,13 @@ VKRT_CONST uint BINDING_HITS = 13;         // trace_rays.comp only: SSBO TraceHi
 // child by its link, never by its box.
 VKRT_CONST uint BVH_NODE_TEXELS = 4;
 VKRT_CONST uint NODE_NONE = 0xffffffffu;
+// traverse.glsl keeps a bottom-level leaf on its stack as one 32-bit entry: ENTRY_LEAF_BIT, the
+// first primitive in bits 4..29 and the count in bits 0..3 (inner nodes are plain indices below
+// 2^30). The host refuses a BVH with a leaf that does not fit (host/vulkan/traversal_stack.h);
+// the builder's leaves hold at most 8 primitives and a 128 MiB buffer at most 2.8M primitives.
+VKRT_CONST uint ENTRY_LEAF_BIT = 0x40000000u;
+VKRT_CONST uint LEAF_ENTRY_MAX_COUNT = 15u;
+VKRT_CONST uint LEAF_ENTRY_MAX_FIRST = 0x3ffffffu;
 struct BvhNode {
     uvec4 xy0;
     uvec4 xy1;

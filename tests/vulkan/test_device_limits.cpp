@@ -201,6 +201,31 @@ TEST(TraversalStack, InstancingAddsTheTopLevelAndTheInstanceMarker) {
     EXPECT_NO_THROW(checkTraversalStack(b, true, 14));
 }
 
+TEST(TraversalStack, LeavesMustFitOneStackEntry) {
+    bvh::SceneBvh b;
+    b.nodes = chain(0, 3);  // the last node's children are leaves of one primitive each
+    b.instances.resize(1);
+    b.instances[0].info.x = 0;
+    b.nodes[2].link = glm::uvec4(gpu::LEAF_ENTRY_MAX_FIRST, 0u, gpu::LEAF_ENTRY_MAX_COUNT, 1u);
+    EXPECT_NO_THROW(checkTraversalStack(b, false));
+    b.nodes[2].link.z = gpu::LEAF_ENTRY_MAX_COUNT + 1;
+    try {
+        checkTraversalStack(b, false);
+        FAIL() << "a leaf of " << gpu::LEAF_ENTRY_MAX_COUNT + 1 << " primitives was accepted";
+    } catch (const DeviceLimitExceeded& e) {
+        EXPECT_NE(std::string(e.what()).find("leaf of 16 primitives"), std::string::npos) << e.what();
+    }
+    b.nodes[2].link = glm::uvec4(gpu::LEAF_ENTRY_MAX_FIRST + 1, 0u, 1u, 1u);
+    EXPECT_THROW(checkTraversalStack(b, false), DeviceLimitExceeded);
+    // Top-level leaves are pushed as instance entries: their counts are not packed.
+    b.nodes[2].link = glm::uvec4(0u, 0u, 1u, 1u);
+    gpu::BvhNode top = b.nodes[2];
+    top.link = glm::uvec4(0u, gpu::NODE_NONE, gpu::LEAF_ENTRY_MAX_COUNT + 5, 0u);
+    b.nodes.push_back(top);
+    b.topRoot = 3;
+    EXPECT_NO_THROW(checkTraversalStack(b, true));
+}
+
 TEST(TraversalStack, CyclesAndBadLinksAreRefused) {
     std::vector<gpu::BvhNode> nodes = chain(0, 2);
     nodes[1].link = glm::uvec4(0u, 0u, 0u, 1u);  // back to the root

@@ -1,5 +1,6 @@
 // GpuRayTracer (trace_rays.comp) against the CPU traversal of the same BVH: closest hits and
 // shadow (any-hit) queries on a scene with triangles, spheres, boxes and transformed instances.
+#include <algorithm>
 #include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -14,7 +15,7 @@ namespace {
 
 using test::VulkanTest;
 
-bvh::SceneBvh randomScene() {
+bvh::SceneBvh randomScene(int maxLeafSize = 8) {
     std::mt19937 random(11);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     auto point = [&] { return glm::vec3(u(random), u(random), u(random)); };
@@ -31,7 +32,12 @@ bvh::SceneBvh randomScene() {
     for (int i = 0; i < 50; ++i) groups[1].push_back({gpu::PRIM_KIND_TRIANGLE, point(), point(), point()});
     const glm::mat4 a = glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(2.0f, 0.5f, -1.0f)), 0.7f, glm::vec3(0, 1, 1));
     const glm::mat4 b = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(-2.0f, -1.0f, 1.5f)), glm::vec3(0.5f, 2.0f, 1.0f));
-    return bvh::buildSceneBvh(groups, {{0, glm::mat4(1.0f), gpu::MATERIAL_NONE}, {1, a, gpu::MATERIAL_NONE}, {1, b, gpu::MATERIAL_NONE}});
+    bvh::BuildOptions build;
+    build.maxLeafSize = maxLeafSize;
+    // A leaf cost far below a node's makes the SAH keep leaves as large as allowed.
+    if (maxLeafSize > 8) build.intersectionCost = 0.05f;
+    return bvh::buildSceneBvh(groups, {{0, glm::mat4(1.0f), gpu::MATERIAL_NONE}, {1, a, gpu::MATERIAL_NONE}, {1, b, gpu::MATERIAL_NONE}},
+                              build);
 }
 
 std::vector<gpu::TraceRayInput> randomRays(std::size_t n, float tMax) {
@@ -51,8 +57,18 @@ std::vector<gpu::TraceRayInput> randomRays(std::size_t n, float tMax) {
 // into FMAs), so a ray grazing an edge or a box corner can go either way: at most 0.2% of the
 // rays may disagree on hit/miss or on which primitive is closest, and a shared hit's distance
 // must agree to 1e-5 relative (a few ULP of t, far below any primitive's size).
-TEST_F(VulkanTest, RayTracerMatchesTheCpuTraversal) {
-    const bvh::SceneBvh scene = randomScene();
+// Leaves of up to 8 primitives (the builder's default) and of up to 15, the most a traversal
+// stack entry can hold (device_host.h: LEAF_ENTRY_MAX_COUNT).
+class RayTracerLeaves : public VulkanTest, public ::testing::WithParamInterface<int> {};
+
+TEST_P(RayTracerLeaves, MatchesTheCpuTraversal) {
+    const bvh::SceneBvh scene = randomScene(GetParam());
+    std::uint32_t largestLeaf = 0;
+    for (const gpu::BvhNode& node : scene.nodes) largestLeaf = std::max({largestLeaf, node.link.z, node.link.w});
+    std::cout << "largest leaf: " << largestLeaf << " primitives\n";
+    // With the cheap intersection cost the build fills leaves to the limit, so the kernel's
+    // leaf entries really carry the largest count they can encode.
+    if (GetParam() > 8) EXPECT_EQ(largestLeaf, static_cast<std::uint32_t>(GetParam()));
     GpuRendererOptions options;
     options.validation = true;
     GpuRayTracer tracer(scene, options);
@@ -94,6 +110,8 @@ TEST_F(VulkanTest, RayTracerMatchesTheCpuTraversal) {
     EXPECT_GT(blocked, 500);
     EXPECT_LE(anyDisagreements, static_cast<int>(shadows.size()) / 500);
 }
+
+INSTANTIATE_TEST_SUITE_P(LeafSizes, RayTracerLeaves, ::testing::Values(8, static_cast<int>(gpu::LEAF_ENTRY_MAX_COUNT)));
 
 TEST_F(VulkanTest, RayTracerSplitsLargeRayListsIntoBatches) {
     const bvh::SceneBvh scene = randomScene();
