@@ -23,6 +23,8 @@
 #include <string>
 #include <vector>
 
+#include <ostream>
+
 #include <gtest/gtest.h>
 
 #include "analytic_scene.h"
@@ -39,6 +41,9 @@ struct Reference {
     const char* scene;  // in upstream/
     enum Kind { Plain, RecolouredLights, BlockMeans } kind = Plain;
 };
+
+// Names the case in ctest's list (gtest would print the struct's bytes).
+void PrintTo(const Reference& r, std::ostream* os) { *os << r.image << " from " << r.scene; }
 
 const Reference kReferences[] = {
     {"oneSphere", "oneSphere.xml"},
