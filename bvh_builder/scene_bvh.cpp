@@ -161,12 +161,22 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
     bvh.stats.topDepth = top.depth;
     bvh.stats.leafCount += top.leafCount;
 
-    // The CPU's 4-wide copy: about a third of the two-child nodes.
-    reserveHuge(bvh.cpu.nodes, bvh.nodes.size() / 2 + groups.size() + 1);
-    for (std::size_t g = 0; g < groups.size(); ++g)
-        bvh.cpu.groupRoots.push_back(collapseTree(bvh.nodes, bvh.groups[g].rootNode, groupBlocks[g], pool, bvh.cpu.nodes));
+    // The CPU's 4-wide copy: every tree counted first, then one allocation, then written.
+    std::vector<CollapsePlan> plans;
+    for (std::size_t g = 0; g < groups.size(); ++g) plans.push_back(planCollapse(bvh.nodes, bvh.groups[g].rootNode, groupBlocks[g], pool));
+    plans.push_back(planCollapse(bvh.nodes, bvh.topRoot, top.blockRoots, pool));
+    std::size_t wideTotal = 0;
+    for (const CollapsePlan& plan : plans) wideTotal += plan.total;
+    reserveHuge(bvh.cpu.nodes, wideTotal);
+    bvh.cpu.nodes.resize(wideTotal);
+    std::uint32_t wideFirst = 0;
+    for (std::size_t k = 0; k < plans.size(); ++k) {
+        const std::uint32_t root = writeCollapse(bvh.nodes, plans[k], pool, bvh.cpu.nodes.data(), wideFirst);
+        if (k < groups.size()) bvh.cpu.groupRoots.push_back(root);
+        else bvh.cpu.topRoot = root;
+        wideFirst += plans[k].total;
+    }
     for (const InstanceInput& in : instances) bvh.cpu.identity.push_back(in.objectToWorld == glm::mat4(1.0f) ? 1 : 0);
-    bvh.cpu.topRoot = collapseTree(bvh.nodes, bvh.topRoot, top.blockRoots, pool, bvh.cpu.nodes);
     bvh.stats.nodeCount = bvh.nodes.size();
     bvh.stats.bytes = bvh.nodes.size() * sizeof(gpu::BvhNode) + bvh.prims.size() * sizeof(gpu::Primitive) +
                       bvh.instances.size() * sizeof(gpu::Instance);

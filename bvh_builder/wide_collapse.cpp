@@ -123,42 +123,50 @@ private:
 
 }  // namespace
 
-std::uint32_t collapseTree(const std::vector<gpu::BvhNode>& nodes, std::uint32_t root,
-                           const std::vector<std::uint32_t>& blockRoots, ThreadPool& pool, std::vector<WideNode>& out) {
-    std::vector<std::uint32_t> sorted = blockRoots;
-    std::sort(sorted.begin(), sorted.end());
-    const bool rootIsBlock = std::binary_search(sorted.begin(), sorted.end(), root);
+CollapsePlan planCollapse(const std::vector<gpu::BvhNode>& nodes, std::uint32_t root,
+                          const std::vector<std::uint32_t>& blockRoots, ThreadPool& pool) {
+    CollapsePlan plan;
+    plan.root = root;
+    plan.blocks = blockRoots;
+    std::sort(plan.blocks.begin(), plan.blocks.end());
+    plan.rootIsBlock = std::binary_search(plan.blocks.begin(), plan.blocks.end(), root);
     const Collapser whole(nodes, nullptr);
-    const Collapser above(nodes, &sorted);
+    const Collapser above(nodes, &plan.blocks);
+    // The part above the blocks, then each block (in parallel); they are placed in that order.
+    plan.topCount = plan.rootIsBlock ? 0 : above.count(root);
+    plan.blockSizes.resize(plan.blocks.size());
+    pool.parallelFor(plan.blocks.size(), [&](std::size_t i) { plan.blockSizes[i] = whole.count(plan.blocks[i]); });
+    plan.total = plan.topCount;
+    for (std::uint32_t s : plan.blockSizes) plan.total += s;
+    return plan;
+}
 
-    // Count: the part above the blocks, then each block (in parallel); place them in that order.
-    const std::uint32_t topCount = rootIsBlock ? 0 : above.count(root);
-    std::vector<std::uint32_t> offsets(sorted.size());
-    pool.parallelFor(sorted.size(), [&](std::size_t i) { offsets[i] = whole.count(sorted[i]); });
-    const auto first = static_cast<std::uint32_t>(out.size());
-    std::uint32_t total = first + topCount;
-    for (std::uint32_t& o : offsets) {
-        const std::uint32_t size = o;
-        o = total;
-        total += size;
+std::uint32_t writeCollapse(const std::vector<gpu::BvhNode>& nodes, const CollapsePlan& plan, ThreadPool& pool,
+                            WideNode* out, std::uint32_t first) {
+    const Collapser whole(nodes, nullptr);
+    const Collapser above(nodes, &plan.blocks);
+    std::vector<std::uint32_t> offsets(plan.blocks.size());
+    std::uint32_t total = first + plan.topCount;
+    for (std::size_t i = 0; i < offsets.size(); ++i) {
+        offsets[i] = total;
+        total += plan.blockSizes[i];
     }
-    out.resize(total);
-
-    // Write: every part straight into its place.
-    if (!rootIsBlock) {
+    // Every part straight into its place.
+    if (!plan.rootIsBlock) {
         std::uint32_t next = 0;
-        above.write(root, out.data() + first, first, next);
-        for (std::uint32_t i = first; i < first + topCount; ++i)
+        above.write(plan.root, out + first, first, next);
+        for (std::uint32_t i = first; i < first + plan.topCount; ++i)
             for (int k = 0; k < 4; ++k)
                 if (out[i].count[k] == 0 && out[i].link[k] != gpu::NODE_NONE && (out[i].link[k] & kBlockLink))
                     out[i].link[k] = offsets[out[i].link[k] & ~kBlockLink];
     }
-    pool.parallelFor(sorted.size(), [&](std::size_t i) {
+    pool.parallelFor(plan.blocks.size(), [&](std::size_t i) {
         std::uint32_t next = 0;
-        whole.write(sorted[i], out.data() + offsets[i], offsets[i], next);
+        whole.write(plan.blocks[i], out + offsets[i], offsets[i], next);
     });
-    if (!rootIsBlock) return first;
-    return offsets[static_cast<std::size_t>(std::lower_bound(sorted.begin(), sorted.end(), root) - sorted.begin())];
+    if (!plan.rootIsBlock) return first;
+    const auto it = std::lower_bound(plan.blocks.begin(), plan.blocks.end(), plan.root);
+    return offsets[static_cast<std::size_t>(it - plan.blocks.begin())];
 }
 
 }  // namespace vkrt::bvh
