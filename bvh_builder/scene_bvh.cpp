@@ -18,11 +18,12 @@ namespace vkrt::bvh {
 
 namespace {
 
-// Groups at least this large are built one after another with the whole pool; smaller ones are
-// built side by side, one thread each.
+// Groups at least this large (or holding more than half of the scene's primitives) are built one
+// after another with the whole pool; smaller ones are built side by side, one thread each. Either
+// way a group's tree is the same: buildSah's result does not depend on the pool.
 constexpr std::size_t kLargeGroup = 32 * 1024;
 // References are made in chunks of this many primitives (bounds + validation in parallel).
-constexpr std::size_t kRefChunk = 16 * 1024;
+constexpr std::size_t kRefChunk = 4 * 1024;
 // No tree can be deeper than the CPU traversal's stack (traverse.cpp).
 constexpr int kMaxTreeDepth = 64;
 
@@ -106,7 +107,8 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
                    built[g]);
     };
     for (std::size_t g = 0; g < groups.size(); ++g) {
-        if (groups[g].size() >= kLargeGroup) build(g, pool);
+        // A group holding most of the scene would leave the other threads idle side by side.
+        if (groups[g].size() >= kLargeGroup || 2 * groups[g].size() > totalPrims) build(g, pool);
         else small.push_back(g);
     }
     pool.parallelFor(small.size(), [&](std::size_t k) {

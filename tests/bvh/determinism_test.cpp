@@ -39,5 +39,26 @@ TEST(Determinism, ThreadCountDoesNotChangeTheResult) {
     }
 }
 
+// A group below 32K primitives holding most of the scene is built with the whole pool (its top
+// phase splits ranges above 8K references across threads); small groups beside it are not.
+TEST(Determinism, MidSizedGroupHoldingMostOfTheSceneDoesNotDependOnThreads) {
+    std::mt19937 rng(5);
+    TestScene scene;
+    scene.groups.push_back(randomTriangles(rng, 20000, 50.0f, 0.5f));
+    scene.groups.push_back(randomSpheresAndBoxes(rng, 3000, 10.0f, 0.5f));
+    for (std::uint32_t g = 0; g < scene.groups.size(); ++g)
+        scene.instances.push_back({g, randomTransform(rng, 50.0f, g == 0), gpu::MATERIAL_NONE});
+    BuildOptions options;
+    options.threads = 1;
+    const SceneBvh reference = buildSceneBvh(scene.groups, scene.instances, options);
+    for (int threads : {2, 3}) {
+        options.threads = threads;
+        const SceneBvh bvh = buildSceneBvh(scene.groups, scene.instances, options);
+        EXPECT_TRUE(sameBytes(bvh.nodes, reference.nodes)) << threads << " threads";
+        EXPECT_TRUE(sameBytes(bvh.prims, reference.prims)) << threads << " threads";
+        EXPECT_TRUE(sameBytes(bvh.cpu.nodes, reference.cpu.nodes)) << threads << " threads (4-wide copy)";
+    }
+}
+
 }  // namespace
 }  // namespace vkrt::bvh::test
