@@ -24,6 +24,9 @@ namespace {
 constexpr std::size_t kLargeGroup = 32 * 1024;
 // References are made in chunks of this many primitives (bounds + validation in parallel).
 constexpr std::size_t kRefChunk = 4 * 1024;
+// References ahead whose input primitive is prefetched while the records are written in leaf
+// order (16 measured best of 0/8/16: subtree jobs 15 -> 13 ms on dragon, 2 threads).
+constexpr std::uint32_t kEncodePrefetch = 16;
 // No tree can be deeper than the CPU traversal's stack (traverse.cpp).
 constexpr int kMaxTreeDepth = 64;
 
@@ -63,6 +66,10 @@ void buildGroup(const std::vector<PrimitiveInput>& prims, std::size_t groupIndex
     out.tree = buildSah(std::span<PrimRef>(out.refs.get(), out.count), params, pool,
                         [&](std::uint32_t begin, std::uint32_t end) {
                             for (std::uint32_t i = begin; i < end; ++i) {
+                                // Leaf order scatters the reads of the input: fetch ahead.
+                                if (i + kEncodePrefetch < end)
+                                    _mm_prefetch(reinterpret_cast<const char*>(&prims[refs[i + kEncodePrefetch].id()]),
+                                                 _MM_HINT_T0);
                                 const std::uint32_t source = refs[i].id();
                                 records[i] = encode(prims[source]);
                                 sources[i] = source;
