@@ -28,8 +28,8 @@ TraceRay makeTraceRay(vec3 origin, vec3 dir) {
     r.invDir = safeInverse(dir);
     vec3 a = abs(dir);
     int kz = (a.x > a.y) ? ((a.x > a.z) ? 0 : 2) : ((a.y > a.z) ? 1 : 2);
-    int kx = (kz + 1) % 3;
-    int ky = (kx + 1) % 3;
+    int kx = kz == 2 ? 0 : kz + 1;  // (kz + 1) % 3 without an integer division per lane
+    int ky = kx == 2 ? 0 : kx + 1;
     // Keep the winding: swapping kx and ky when d[kz] < 0 preserves the sign of the edge tests.
     if (dir[kz] < 0.0) {
         int tmp = kx;
