@@ -1,6 +1,8 @@
 // Two-level BVH traversal: iterative, one fixed private stack (no recursion in GLSL).
 // Nodes hold both children's boxes (64 bytes, 4 texels), so each step decides both children
-// from one contiguous fetch; bottom-level leaves are intersected as soon as their box is hit.
+// from one contiguous fetch. Each loop iteration does one kind of step per lane (enter or leave
+// an instance, intersect one bottom-level leaf, or test one node's two children): a hit leaf is
+// visited next or pushed like a node, as a packed entry (device_host.h, ENTRY_LEAF_BIT).
 #ifndef VKRT_TRAVERSE_GLSL
 #define VKRT_TRAVERSE_GLSL
 
