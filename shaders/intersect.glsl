@@ -41,12 +41,14 @@ TraceRay makeTraceRay(vec3 origin, vec3 dir) {
     return r;
 }
 
-// Watertight ray/triangle. On a hit with 0 < t < tBest returns true, t and the barycentric
-// weights (b1, b2) of v1 and v2. Edge functions are `precise` so no FMA contraction breaks the
-// exact sign symmetry between triangles that share an edge (the watertightness argument).
+// v's components in the order k names them, by selects: indexing a vector with a per-lane index
+// (v[k]) is a per-lane scalar access on lavapipe.
 float pickAxis(vec3 v, int k) { return k == 0 ? v.x : (k == 1 ? v.y : v.z); }
 vec3 permuteAxes(vec3 v, ivec3 k) { return vec3(pickAxis(v, k.x), pickAxis(v, k.y), pickAxis(v, k.z)); }
 
+// Watertight ray/triangle. On a hit with 0 < t < tBest returns true, t and the barycentric
+// weights (b1, b2) of v1 and v2. Edge functions are `precise` so no FMA contraction breaks the
+// exact sign symmetry between triangles that share an edge (the watertightness argument).
 bool intersectTriangle(TraceRay ray, vec3 v0, vec3 v1, vec3 v2, float tBest, out float tHit, out vec2 bary) {
     tHit = 0.0;
     bary = vec2(0.0);
