@@ -89,6 +89,7 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
     bool inBottom = !HAS_INSTANCES;
     uint entry = HAS_INSTANCES ? frame.scene.w : instances[0].info.x;
     bool finished = false;
+    bool overflow = false;
 
     while (true) {
         if (!chargeLoop()) break;
@@ -151,8 +152,7 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
         stack[min(sp, TRAVERSAL_STACK_SIZE)] = pushed;
         if (pushed != ENTRY_NONE) {
             if (sp >= TRAVERSAL_STACK_SIZE) {
-                atomicOr(status.flags.x, STATUS_RAY_STACK_OVERFLOW);
-                finished = true;  // reported as the overflow it is
+                overflow = true;
                 break;
             }
             ++sp;
@@ -167,7 +167,8 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             --sp;
         }
     }
-    if (!finished) markLoopCutOff();
+    if (overflow) atomicOr(status.flags.x, STATUS_RAY_STACK_OVERFLOW);
+    else if (!finished) markLoopCutOff();
     return found;
 }
 

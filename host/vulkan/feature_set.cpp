@@ -32,6 +32,8 @@ std::set<int> usedShaders(const Scene& scene) {
 
 }  // namespace
 
+bool needsTopLevel(const bvh::SceneBvh& bvh) { return !(bvh.instances.size() == 1 && isIdentity(bvh.instances[0])); }
+
 std::array<std::uint32_t, gpu::SPEC_COUNT> FeatureSet::specializationValues() const {
     std::array<std::uint32_t, gpu::SPEC_COUNT> v{};
     v[gpu::SPEC_HAS_TRIANGLES] = triangles;
@@ -81,7 +83,7 @@ FeatureSet deriveFeatureSet(const Scene& scene, const SceneAccel& accel, const R
         f.spheres |= kind == gpu::PRIM_KIND_SPHERE;
         f.boxes |= kind == gpu::PRIM_KIND_BOX;
     }
-    f.instances = !(accel.bvh.instances.size() == 1 && isIdentity(accel.bvh.instances[0]));
+    f.instances = needsTopLevel(accel.bvh);
     f.areaLights = std::any_of(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.type == LightType::Area; });
 
     f.specular = f.reflection = f.gloss = f.dielectric = f.textures = f.coolToWarm = false;

@@ -37,6 +37,11 @@ struct FeatureSet {
     std::string describe() const;
 };
 
+// Whether traversal must walk the top level: anything but one identity instance. With one
+// identity instance the kernel starts at that instance's bottom-level root in world space,
+// which skips the per-ray instance transform (a per-lane SSBO read on lavapipe).
+bool needsTopLevel(const bvh::SceneBvh& bvh);
+
 // The features the scene's shapes, instances, shaders and lights actually use.
 FeatureSet deriveFeatureSet(const Scene& scene, const SceneAccel& accel, const RenderOptions& options);
 

@@ -33,7 +33,7 @@ FeatureSet traversalFeatures(const bvh::SceneBvh& bvh) {
         f.spheres |= kind == gpu::PRIM_KIND_SPHERE;
         f.boxes |= kind == gpu::PRIM_KIND_BOX;
     }
-    f.instances = true;  // always correct; the identity-instance shortcut is the render's business
+    f.instances = needsTopLevel(bvh);  // the render kernel's shortcut for one identity instance
     f.areaLights = f.specular = f.reflection = f.gloss = f.dielectric = f.textures = f.coolToWarm = false;
     f.maxDepth = 0;
     f.pathStackSize = 1;
@@ -106,7 +106,7 @@ std::uint32_t checkedBatch(const Context& context, const bvh::SceneBvh& bvh) {
     checkBufferFits(limits, "instances", BufferKind::Storage, paddedBytes(bvh.instances));
     checkTotalFits(limits, paddedBytes(bvh.nodes) + paddedBytes(bvh.prims) + paddedBytes(bvh.instances) +
                                std::uint64_t{batch} * (sizeof(gpu::TraceRayInput) + sizeof(gpu::TraceHitOutput)));
-    checkTraversalStack(bvh, true);
+    checkTraversalStack(bvh, needsTopLevel(bvh));
     return batch;
 }
 
