@@ -10,7 +10,9 @@
 #include "intersect.glsl"
 #include "traverse.glsl"
 
-layout(std430, set = 0, binding = BINDING_RAYS) readonly buffer RayBuffer { TraceRayInput rays[]; };
+// Rays through a texel buffer: on lavapipe a fetch is a vector gather, an SSBO load at a per-lane
+// address a scalar loop over the lanes (host/vulkan/README.md).
+layout(set = 0, binding = BINDING_RAYS) uniform usamplerBuffer rays;
 layout(std430, set = 0, binding = BINDING_HITS) writeonly buffer HitBuffer { TraceHitOutput hits[]; };
 layout(push_constant) uniform TracePush { TraceParams trace; };
 
@@ -19,9 +21,10 @@ layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 void main() {
     uint i = gl_GlobalInvocationID.x;
     if (i >= trace.rays.x) return;
-    TraceRayInput r = rays[i];
+    vec4 origin = uintBitsToFloat(texelFetch(rays, int(2u * i)));  // TraceRayInput: origin + tMax, direction
+    vec3 direction = uintBitsToFloat(texelFetch(rays, int(2u * i + 1u)).xyz);
     Hit hit;
-    bool found = traceScene(r.origin.xyz, r.direction.xyz, r.origin.w, trace.rays.y != 0u, hit);
+    bool found = traceScene(origin.xyz, direction, origin.w, trace.rays.y != 0u, hit);
     if (g_budgetExceeded) atomicOr(status.flags.x, STATUS_LOOP_BUDGET_EXCEEDED);
     else if (g_loopCutOff) atomicOr(status.flags.x, STATUS_LOOP_CUT_OFF);
     hits[i].hit = found ? uvec4(floatBitsToUint(hit.t), hit.prim, hit.instance, 0u) : uvec4(0xffffffffu, 0u, 0u, 0u);

@@ -66,7 +66,7 @@ KernelLayout traceLayout(const Context& context) {
     const std::array bindings = {
         computeBinding(gpu::BINDING_NODES, T::eUniformTexelBuffer), computeBinding(gpu::BINDING_PRIMS, T::eUniformTexelBuffer),
         computeBinding(gpu::BINDING_INSTANCES, T::eStorageBuffer),  computeBinding(gpu::BINDING_FRAME, T::eUniformBuffer),
-        computeBinding(gpu::BINDING_STATUS, T::eStorageBuffer),     computeBinding(gpu::BINDING_RAYS, T::eStorageBuffer),
+        computeBinding(gpu::BINDING_STATUS, T::eStorageBuffer),     computeBinding(gpu::BINDING_RAYS, T::eUniformTexelBuffer),
         computeBinding(gpu::BINDING_HITS, T::eStorageBuffer),
     };
     return KernelLayout(context, bindings, sizeof(gpu::TraceParams));

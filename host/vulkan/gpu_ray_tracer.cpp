@@ -67,7 +67,7 @@ struct GpuRayTracer::Impl {
     FeatureSet features;
     std::uint32_t batch;
     Buffer nodes, prims, instances, frame, status, rays, hits;
-    vk::raii::BufferView nodeView = nullptr, primView = nullptr;
+    vk::raii::BufferView nodeView = nullptr, primView = nullptr, rayView = nullptr;
     vk::raii::DescriptorPool pool = nullptr;
     vk::raii::DescriptorSet set = nullptr;
 };
@@ -91,10 +91,19 @@ KernelSource traceSource(const GpuRendererOptions& o) {
     return k;
 }
 
+// The ray texel buffer of one batch, sized off the lengths that change lavapipe's JIT key.
+std::uint64_t rayBytes(std::uint64_t batch) { return stableTexelBufferBytes(batch * sizeof(gpu::TraceRayInput)); }
+
+// Rays per submission: what the ray texel buffer, the hit buffer and one dispatch can hold, in
+// whole workgroups.
 std::uint32_t batchRays(const Context& context) {
-    const std::uint64_t byRange = context.limits().maxStorageBufferRange / sizeof(gpu::TraceRayInput);
+    const BufferLimits& limits = context.limits();
+    const std::uint64_t byHits = limits.maxStorageBufferRange / sizeof(gpu::TraceHitOutput);
+    const std::uint64_t byRays = std::uint64_t{limits.maxTexelBufferElements} * 16 / sizeof(gpu::TraceRayInput);
     const std::uint64_t byDispatch = static_cast<std::uint64_t>(std::min(context.info().maxWorkGroupCountX, 65535u)) * kLocalSize;
-    return static_cast<std::uint32_t>(std::max<std::uint64_t>(kLocalSize, std::min({byRange, byDispatch, std::uint64_t{kBatchRays}})));
+    std::uint64_t batch = std::min({byHits, byRays, byDispatch, std::uint64_t{kBatchRays}}) / kLocalSize * kLocalSize;
+    while (batch > kLocalSize && rayBytes(batch) / 16 > limits.maxTexelBufferElements) batch -= kLocalSize;
+    return static_cast<std::uint32_t>(std::max<std::uint64_t>(kLocalSize, batch));
 }
 
 // Checks every buffer before any is created (the limits are checked in Impl's initialiser).
@@ -104,6 +113,7 @@ std::uint32_t checkedBatch(const Context& context, const bvh::SceneBvh& bvh) {
     checkBufferFits(limits, "BVH nodes", BufferKind::UniformTexel, stableTexelBufferBytes(paddedBytes(bvh.nodes)));
     checkBufferFits(limits, "primitives", BufferKind::UniformTexel, stableTexelBufferBytes(paddedBytes(bvh.prims)));
     checkBufferFits(limits, "instances", BufferKind::Storage, paddedBytes(bvh.instances));
+    checkBufferFits(limits, "rays", BufferKind::UniformTexel, rayBytes(batch));
     checkTotalFits(limits, paddedBytes(bvh.nodes) + paddedBytes(bvh.prims) + paddedBytes(bvh.instances) +
                                std::uint64_t{batch} * (sizeof(gpu::TraceRayInput) + sizeof(gpu::TraceHitOutput)));
     checkTraversalStack(bvh, needsTopLevel(bvh));
@@ -122,7 +132,7 @@ GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& opt
       frame(context, "frame parameters", sizeof(gpu::FrameParams),
             vk::BufferUsageFlagBits::eUniformBuffer | vk::BufferUsageFlagBits::eTransferDst, MemoryUse::Device),
       status(context, "render status", sizeof(gpu::RenderStatus), kStorage, MemoryUse::Shared),
-      rays(context, "rays", std::uint64_t{batch} * sizeof(gpu::TraceRayInput), kStorage, MemoryUse::Device),
+      rays(context, "rays", rayBytes(batch), kTexels, MemoryUse::Device),
       hits(context, "hits", std::uint64_t{batch} * sizeof(gpu::TraceHitOutput), kStorage, MemoryUse::Device) {
     transfers.upload(nodes, bytesOf(bvh.nodes));
     transfers.upload(prims, bytesOf(bvh.prims));
@@ -133,19 +143,19 @@ GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& opt
     transfers.zero(status);
     nodeView = makeTexelView(context, nodes);
     primView = makeTexelView(context, prims);
+    rayView = makeTexelView(context, rays);
 
-    const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, 2),
-                              vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 4),
+    const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, 3),
+                              vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 3),
                               vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, 1)};
     pool = vk::raii::DescriptorPool(context.device(),
                                     vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, sizes));
     const vk::DescriptorSetLayout setLayout = layout.setLayout();
     set = std::move(vk::raii::DescriptorSets(context.device(), vk::DescriptorSetAllocateInfo(*pool, setLayout)).front());
 
-    const vk::BufferView views[] = {*nodeView, *primView};
+    const vk::BufferView views[] = {*nodeView, *primView, *rayView};
     const vk::DescriptorBufferInfo infos[] = {{instances.handle(), 0, VK_WHOLE_SIZE}, {frame.handle(), 0, VK_WHOLE_SIZE},
-                                              {status.handle(), 0, VK_WHOLE_SIZE},    {rays.handle(), 0, VK_WHOLE_SIZE},
-                                              {hits.handle(), 0, VK_WHOLE_SIZE}};
+                                              {status.handle(), 0, VK_WHOLE_SIZE},    {hits.handle(), 0, VK_WHOLE_SIZE}};
     using T = vk::DescriptorType;
     const std::array writes = {
         vk::WriteDescriptorSet(*set, gpu::BINDING_NODES, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &views[0]),
@@ -153,8 +163,8 @@ GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& opt
         vk::WriteDescriptorSet(*set, gpu::BINDING_INSTANCES, 0, 1, T::eStorageBuffer, nullptr, &infos[0]),
         vk::WriteDescriptorSet(*set, gpu::BINDING_FRAME, 0, 1, T::eUniformBuffer, nullptr, &infos[1]),
         vk::WriteDescriptorSet(*set, gpu::BINDING_STATUS, 0, 1, T::eStorageBuffer, nullptr, &infos[2]),
-        vk::WriteDescriptorSet(*set, gpu::BINDING_RAYS, 0, 1, T::eStorageBuffer, nullptr, &infos[3]),
-        vk::WriteDescriptorSet(*set, gpu::BINDING_HITS, 0, 1, T::eStorageBuffer, nullptr, &infos[4]),
+        vk::WriteDescriptorSet(*set, gpu::BINDING_RAYS, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &views[2]),
+        vk::WriteDescriptorSet(*set, gpu::BINDING_HITS, 0, 1, T::eStorageBuffer, nullptr, &infos[3]),
     };
     context.device().updateDescriptorSets(writes, {});
 }

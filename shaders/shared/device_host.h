@@ -39,7 +39,7 @@ VKRT_CONST uint BINDING_TEXELS = 8;        // SSBO uint[] (RGBA8 packed texels o
 VKRT_CONST uint BINDING_FRAME = 9;         // UBO FrameParams
 VKRT_CONST uint BINDING_ACCUM = 10;        // SSBO vec4[] per-pixel radiance sum (rgb), w unused
 VKRT_CONST uint BINDING_STATUS = 11;       // SSBO RenderStatus
-VKRT_CONST uint BINDING_RAYS = 12;         // trace_rays.comp only: SSBO TraceRayInput[]
+VKRT_CONST uint BINDING_RAYS = 12;         // trace_rays.comp only: usamplerBuffer RGBA32UI, TraceRayInput = 2 texels
 VKRT_CONST uint BINDING_HITS = 13;         // trace_rays.comp only: SSBO TraceHitOutput[]
 
 // ---------------------------------------------------------------------------------------------
