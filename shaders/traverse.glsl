@@ -124,10 +124,10 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             vec4 fxy1 = uintBitsToFloat(xy1);
             vec4 fz = uintBitsToFloat(z01);
             float tNear0, tNear1;
-            bool hit0 = (link.z != 0u || link.x != NODE_NONE) &&
-                        hitsBox(ray, vec3(fxy0.x, fxy0.z, fz.x), vec3(fxy0.y, fxy0.w, fz.y), hit.t, tNear0);
-            bool hit1 = (link.w != 0u || link.y != NODE_NONE) &&
-                        hitsBox(ray, vec3(fxy1.x, fxy1.z, fz.z), vec3(fxy1.y, fxy1.w, fz.w), hit.t, tNear1);
+            bool box0 = hitsBox(ray, vec3(fxy0.x, fxy0.z, fz.x), vec3(fxy0.y, fxy0.w, fz.y), hit.t, tNear0);
+            bool box1 = hitsBox(ray, vec3(fxy1.x, fxy1.z, fz.z), vec3(fxy1.y, fxy1.w, fz.w), hit.t, tNear1);
+            bool hit0 = box0 && (link.z != 0u || link.x != NODE_NONE);
+            bool hit1 = box1 && (link.w != 0u || link.y != NODE_NONE);
             uint next0 = childEntry(link.x, link.z, inBottom);
             uint next1 = childEntry(link.y, link.w, inBottom);
             bool nearFirst = !(hit0 && hit1 && tNear1 < tNear0);
