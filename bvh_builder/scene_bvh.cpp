@@ -77,6 +77,29 @@ void buildGroup(const std::vector<PrimitiveInput>& prims, std::size_t groupIndex
                         });
 }
 
+// The CPU's 4-wide copy (SceneBvh::cpu): every tree counted first, then one allocation, then
+// written. groupBlocks / topBlocks: the roots of the subtrees flattened in parallel.
+void buildWideCopy(const std::vector<std::vector<std::uint32_t>>& groupBlocks, const std::vector<std::uint32_t>& topBlocks,
+                   const std::vector<InstanceInput>& instances, ThreadPool& pool, SceneBvh& bvh) {
+    std::vector<CollapsePlan> plans;
+    for (std::size_t g = 0; g < groupBlocks.size(); ++g)
+        plans.push_back(planCollapse(bvh.nodes, bvh.groups[g].rootNode, groupBlocks[g], pool));
+    plans.push_back(planCollapse(bvh.nodes, bvh.topRoot, topBlocks, pool));
+    std::size_t wideTotal = 0;
+    for (const CollapsePlan& plan : plans) wideTotal += plan.total;
+    reserveHuge(bvh.cpu.nodes, wideTotal);
+    bvh.cpu.nodes.resize(wideTotal);
+    std::uint32_t wideFirst = 0;
+    for (std::size_t k = 0; k < plans.size(); ++k) {
+        const std::uint32_t root = writeCollapse(bvh.nodes, plans[k], pool, bvh.cpu.nodes.data(), wideFirst);
+        if (k < groupBlocks.size()) bvh.cpu.groupRoots.push_back(root);
+        else bvh.cpu.topRoot = root;
+        wideFirst += plans[k].total;
+    }
+    for (const InstanceInput& in : instances) bvh.cpu.identity.push_back(in.objectToWorld == glm::mat4(1.0f) ? 1 : 0);
+    bvh.cpu.built = true;
+}
+
 }  // namespace
 
 SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
@@ -170,22 +193,7 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
     bvh.stats.topDepth = top.depth;
     bvh.stats.leafCount += top.leafCount;
 
-    // The CPU's 4-wide copy: every tree counted first, then one allocation, then written.
-    std::vector<CollapsePlan> plans;
-    for (std::size_t g = 0; g < groups.size(); ++g) plans.push_back(planCollapse(bvh.nodes, bvh.groups[g].rootNode, groupBlocks[g], pool));
-    plans.push_back(planCollapse(bvh.nodes, bvh.topRoot, top.blockRoots, pool));
-    std::size_t wideTotal = 0;
-    for (const CollapsePlan& plan : plans) wideTotal += plan.total;
-    reserveHuge(bvh.cpu.nodes, wideTotal);
-    bvh.cpu.nodes.resize(wideTotal);
-    std::uint32_t wideFirst = 0;
-    for (std::size_t k = 0; k < plans.size(); ++k) {
-        const std::uint32_t root = writeCollapse(bvh.nodes, plans[k], pool, bvh.cpu.nodes.data(), wideFirst);
-        if (k < groups.size()) bvh.cpu.groupRoots.push_back(root);
-        else bvh.cpu.topRoot = root;
-        wideFirst += plans[k].total;
-    }
-    for (const InstanceInput& in : instances) bvh.cpu.identity.push_back(in.objectToWorld == glm::mat4(1.0f) ? 1 : 0);
+    if (options.cpuTraversal) buildWideCopy(groupBlocks, top.blockRoots, instances, pool, bvh);
     bvh.stats.nodeCount = bvh.nodes.size();
     bvh.stats.bytes = bvh.nodes.size() * sizeof(gpu::BvhNode) + bvh.prims.size() * sizeof(gpu::Primitive) +
                       bvh.instances.size() * sizeof(gpu::Instance);

@@ -8,6 +8,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 
 #include "bvh.h"
 #include "intersect_inline.h"
@@ -155,7 +156,13 @@ bool validRay(const Ray& ray) {
 
 template <bool AnyHit>
 bool trace(const SceneBvh& bvh, const Ray& ray, Hit* out) {
-    if (!validRay(ray) || bvh.cpu.nodes.empty()) return false;
+    if (bvh.cpu.nodes.empty()) {
+        // A default-constructed SceneBvh has no nodes at all and simply has no hits.
+        if (!bvh.cpu.built && !bvh.nodes.empty())
+            throw std::logic_error("bvh: CPU traversal of a BVH built with BuildOptions::cpuTraversal = false");
+        return false;
+    }
+    if (!validRay(ray)) return false;
     float tmax = ray.tmax;
     bool found = false;
     const NodeRay worldRay(ray.origin, ray.dir);

@@ -26,6 +26,9 @@ struct WideBvh {
     // Per instance: its transform is exactly the identity, so rays enter its group unchanged
     // (saves the ray transform, which a single-mesh scene would otherwise pay on every ray).
     std::vector<std::uint8_t> identity;
+    // Built at all (BuildOptions::cpuTraversal): a scene without instances has no nodes either way,
+    // and traversing a BVH built for the GPU only must fail loudly, not report no hits.
+    bool built = false;
 };
 
 }  // namespace vkrt::bvh

@@ -1,7 +1,9 @@
-// The build's output must not depend on the number of threads (bit-identical arrays).
+// The build's output must not depend on the number of threads (bit-identical arrays), nor the GPU
+// arrays on whether the CPU's 4-wide copy is built.
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <stdexcept>
 
 #include "scene_gen.h"
 
@@ -58,6 +60,37 @@ TEST(Determinism, MidSizedGroupHoldingMostOfTheSceneDoesNotDependOnThreads) {
         EXPECT_TRUE(sameBytes(bvh.prims, reference.prims)) << threads << " threads";
         EXPECT_TRUE(sameBytes(bvh.cpu.nodes, reference.cpu.nodes)) << threads << " threads (4-wide copy)";
     }
+}
+
+// BuildOptions::cpuTraversal = false skips only the 4-wide copy: what the GPU path uploads is the
+// same, and CPU traversal of such a BVH fails loudly instead of reporting no hits.
+TEST(Determinism, SkippingTheCpuCopyLeavesTheGpuArraysUnchanged) {
+    std::mt19937 rng(8);
+    TestScene scene;
+    scene.groups.push_back(randomTriangles(rng, 40000, 50.0f, 0.5f));
+    scene.groups.push_back(randomSpheresAndBoxes(rng, 2000, 10.0f, 0.5f));
+    for (std::uint32_t g = 0; g < scene.groups.size(); ++g)
+        scene.instances.push_back({g, randomTransform(rng, 50.0f, g == 0), gpu::MATERIAL_NONE});
+    BuildOptions options;
+    options.threads = 2;
+    const SceneBvh full = buildSceneBvh(scene.groups, scene.instances, options);
+    options.cpuTraversal = false;
+    const SceneBvh gpuOnly = buildSceneBvh(scene.groups, scene.instances, options);
+    EXPECT_TRUE(full.cpu.built);
+    EXPECT_FALSE(gpuOnly.cpu.built);
+    EXPECT_TRUE(gpuOnly.cpu.nodes.empty());
+    EXPECT_TRUE(sameBytes(gpuOnly.nodes, full.nodes));
+    EXPECT_TRUE(sameBytes(gpuOnly.prims, full.prims));
+    EXPECT_TRUE(sameBytes(gpuOnly.primSource, full.primSource));
+    EXPECT_TRUE(sameBytes(gpuOnly.instances, full.instances));
+    EXPECT_EQ(gpuOnly.topRoot, full.topRoot);
+    EXPECT_EQ(gpuOnly.stats.sahCost, full.stats.sahCost);
+    EXPECT_EQ(gpuOnly.stats.bytes, full.stats.bytes);
+    const Ray ray{{0.0f, 0.0f, 200.0f}, {0.0f, 0.0f, -1.0f}};
+    Hit hit;
+    EXPECT_THROW(intersectClosest(gpuOnly, ray, hit), std::logic_error);
+    EXPECT_THROW(intersectAny(gpuOnly, ray), std::logic_error);
+    EXPECT_NO_THROW(intersectClosest(full, ray, hit));
 }
 
 }  // namespace
