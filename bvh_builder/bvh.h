@@ -53,6 +53,7 @@ struct GroupRange {
 
 struct BuildStats {
     double buildSeconds = 0.0;
+    double cpuCopySeconds = 0.0;  // the part of buildSeconds spent on the CPU's 4-wide copy (0 without it)
     double sahCost = 0.0;         // SAH cost of the bottom levels, summed over groups
     std::size_t nodeCount = 0;
     std::size_t leafCount = 0;

@@ -193,7 +193,11 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
     bvh.stats.topDepth = top.depth;
     bvh.stats.leafCount += top.leafCount;
 
-    if (options.cpuTraversal) buildWideCopy(groupBlocks, top.blockRoots, instances, pool, bvh);
+    if (options.cpuTraversal) {
+        const auto copyStart = std::chrono::steady_clock::now();
+        buildWideCopy(groupBlocks, top.blockRoots, instances, pool, bvh);
+        bvh.stats.cpuCopySeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - copyStart).count();
+    }
     bvh.stats.nodeCount = bvh.nodes.size();
     bvh.stats.bytes = bvh.nodes.size() * sizeof(gpu::BvhNode) + bvh.prims.size() * sizeof(gpu::Primitive) +
                       bvh.instances.size() * sizeof(gpu::Instance);

@@ -86,6 +86,7 @@ TEST(Determinism, SkippingTheCpuCopyLeavesTheGpuArraysUnchanged) {
     EXPECT_EQ(gpuOnly.topRoot, full.topRoot);
     EXPECT_EQ(gpuOnly.stats.sahCost, full.stats.sahCost);
     EXPECT_EQ(gpuOnly.stats.bytes, full.stats.bytes);
+    EXPECT_EQ(gpuOnly.stats.cpuCopySeconds, 0.0);
     const Ray ray{{0.0f, 0.0f, 200.0f}, {0.0f, 0.0f, -1.0f}};
     Hit hit;
     EXPECT_THROW(intersectClosest(gpuOnly, ray, hit), std::logic_error);
