@@ -54,7 +54,7 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
     }
 
     int base = int(hit.prim * PRIM_TEXELS);
-    uvec4 a = texelFetch(primitives, base);
+    uvec4 a = imageLoad(primitives, base);
     uint kind = a.w & PRIM_KIND_MASK;
     uvec4 info = primInfos[hit.prim].data;
     vec3 p;
@@ -63,8 +63,8 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
     float objectMagnitude;  // largest |coordinate| of the primitive's data
     if (kind == PRIM_KIND_TRIANGLE) {
         vec3 v0 = texelFloats(a);
-        vec3 v1 = texelFloats(texelFetch(primitives, base + 1));
-        vec3 v2 = texelFloats(texelFetch(primitives, base + 2));
+        vec3 v1 = texelFloats(imageLoad(primitives, base + 1));
+        vec3 v2 = texelFloats(imageLoad(primitives, base + 2));
         objectMagnitude = max(maxAbs(v0), max(maxAbs(v1), maxAbs(v2)));
         float b0 = 1.0 - hit.bary.x - hit.bary.y;
         // Barycentric reconstruction: accurate to a few ULPs of the vertices, unlike o + t*d.
@@ -84,7 +84,7 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
         }
     } else if (kind == PRIM_KIND_SPHERE) {
         vec3 center = texelFloats(a);
-        float radius = uintBitsToFloat(texelFetch(primitives, base + 1).x);
+        float radius = uintBitsToFloat(imageLoad(primitives, base + 1).x);
         objectMagnitude = maxAbs(center) + radius;
         vec3 q = o + hit.t * d;
         vec3 n = normalizeOr(q - center, vec3(0.0, 1.0, 0.0));
@@ -94,7 +94,7 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
         if (HAS_TEXTURES) s.uv = vec2(0.5 + atan(n.x, n.z) / (2.0 * PI), 0.5 + asin(clamp(n.y, -1.0, 1.0)) / PI);
     } else {
         vec3 lo = texelFloats(a);
-        vec3 hi = texelFloats(texelFetch(primitives, base + 1));
+        vec3 hi = texelFloats(imageLoad(primitives, base + 1));
         objectMagnitude = max(maxAbs(lo), maxAbs(hi));
         // Which face: redo the slab test and take the axis that decided the entry (or exit).
         vec3 invD = safeInverse(d);

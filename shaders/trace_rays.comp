@@ -10,9 +10,9 @@
 #include "intersect.glsl"
 #include "traverse.glsl"
 
-// Rays through a texel buffer: on lavapipe a fetch is a vector gather, an SSBO load at a per-lane
-// address a scalar loop over the lanes (host/vulkan/README.md).
-layout(set = 0, binding = BINDING_RAYS) uniform usamplerBuffer rays;
+// Rays through a texel buffer, like the BVH (bindings.glsl): on lavapipe an SSBO load at a
+// per-lane address is a scalar loop over the lanes (host/vulkan/README.md).
+layout(set = 0, binding = BINDING_RAYS, rgba32ui) uniform readonly uimageBuffer rays;
 layout(std430, set = 0, binding = BINDING_HITS) writeonly buffer HitBuffer { TraceHitOutput hits[]; };
 layout(push_constant) uniform TracePush { TraceParams trace; };
 
@@ -21,8 +21,8 @@ layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 void main() {
     uint i = gl_GlobalInvocationID.x;
     if (i >= trace.rays.x) return;
-    vec4 origin = uintBitsToFloat(texelFetch(rays, int(2u * i)));  // TraceRayInput: origin + tMax, direction
-    vec3 direction = uintBitsToFloat(texelFetch(rays, int(2u * i + 1u)).xyz);
+    vec4 origin = uintBitsToFloat(imageLoad(rays, int(2u * i)));  // TraceRayInput: origin + tMax, direction
+    vec3 direction = uintBitsToFloat(imageLoad(rays, int(2u * i + 1u)).xyz);
     Hit hit;
     bool found = traceScene(origin.xyz, direction, origin.w, trace.rays.y != 0u, hit);
     if (g_budgetExceeded) atomicOr(status.flags.x, STATUS_LOOP_BUDGET_EXCEEDED);

@@ -39,19 +39,19 @@ bool intersectPrimitive(TraceRay ray, uint prim, float tBest, out float tHit, ou
     tHit = 0.0;
     bary = vec2(0.0);
     int base = int(prim * PRIM_TEXELS);
-    uvec4 a = texelFetch(primitives, base);
+    uvec4 a = imageLoad(primitives, base);
     uint kind = a.w & PRIM_KIND_MASK;
     if (HAS_TRIANGLES && kind == PRIM_KIND_TRIANGLE) {
-        vec3 v1 = texelFloats(texelFetch(primitives, base + 1));
-        vec3 v2 = texelFloats(texelFetch(primitives, base + 2));
+        vec3 v1 = texelFloats(imageLoad(primitives, base + 1));
+        vec3 v2 = texelFloats(imageLoad(primitives, base + 2));
         return intersectTriangle(ray, texelFloats(a), v1, v2, tBest, tHit, bary);
     }
     if (HAS_SPHERES && kind == PRIM_KIND_SPHERE) {
-        float radius = uintBitsToFloat(texelFetch(primitives, base + 1).x);
+        float radius = uintBitsToFloat(imageLoad(primitives, base + 1).x);
         return intersectSphere(ray, texelFloats(a), radius, tBest, tHit);
     }
     if (HAS_BOXES && kind == PRIM_KIND_BOX) {
-        vec3 hi = texelFloats(texelFetch(primitives, base + 1));
+        vec3 hi = texelFloats(imageLoad(primitives, base + 1));
         return intersectBox(ray, texelFloats(a), hi, tBest, tHit);
     }
     return false;
@@ -116,10 +116,10 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             descend = true;  // a popped leaf: intersected below
         } else {
             int base = int(entry * BVH_NODE_TEXELS);
-            uvec4 xy0 = texelFetch(bvhNodes, base);
-            uvec4 xy1 = texelFetch(bvhNodes, base + 1);
-            uvec4 z01 = texelFetch(bvhNodes, base + 2);
-            uvec4 link = texelFetch(bvhNodes, base + 3);
+            uvec4 xy0 = imageLoad(bvhNodes, base);
+            uvec4 xy1 = imageLoad(bvhNodes, base + 1);
+            uvec4 z01 = imageLoad(bvhNodes, base + 2);
+            uvec4 link = imageLoad(bvhNodes, base + 3);
             vec4 fxy0 = uintBitsToFloat(xy0);
             vec4 fxy1 = uintBitsToFloat(xy1);
             vec4 fz = uintBitsToFloat(z01);

@@ -40,7 +40,7 @@ private:
     std::byte* mapped_ = nullptr;
 };
 
-// A typed view of a buffer for `usamplerBuffer` (RGBA32UI texels) reads.
+// A typed view of a buffer for `uimageBuffer` (RGBA32UI texels) imageLoad reads.
 vk::raii::BufferView makeTexelView(const Context& context, const Buffer& buffer);
 
 // The size to give a texel buffer of `bytes` (a multiple of 16): a few zero texels more, so

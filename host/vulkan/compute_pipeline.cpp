@@ -51,7 +51,7 @@ KernelLayout::KernelLayout(const Context& context, std::span<const vk::Descripto
 KernelLayout renderLayout(const Context& context) {
     using T = vk::DescriptorType;
     const std::array bindings = {
-        computeBinding(gpu::BINDING_NODES, T::eUniformTexelBuffer),  computeBinding(gpu::BINDING_PRIMS, T::eUniformTexelBuffer),
+        computeBinding(gpu::BINDING_NODES, T::eStorageTexelBuffer),  computeBinding(gpu::BINDING_PRIMS, T::eStorageTexelBuffer),
         computeBinding(gpu::BINDING_PRIM_INFO, T::eStorageBuffer),   computeBinding(gpu::BINDING_VERTEX_ATTRIBS, T::eStorageBuffer),
         computeBinding(gpu::BINDING_INSTANCES, T::eStorageBuffer),   computeBinding(gpu::BINDING_SHADERS, T::eStorageBuffer),
         computeBinding(gpu::BINDING_LIGHTS, T::eStorageBuffer),      computeBinding(gpu::BINDING_TEXTURES, T::eStorageBuffer),
@@ -64,9 +64,9 @@ KernelLayout renderLayout(const Context& context) {
 KernelLayout traceLayout(const Context& context) {
     using T = vk::DescriptorType;
     const std::array bindings = {
-        computeBinding(gpu::BINDING_NODES, T::eUniformTexelBuffer), computeBinding(gpu::BINDING_PRIMS, T::eUniformTexelBuffer),
+        computeBinding(gpu::BINDING_NODES, T::eStorageTexelBuffer), computeBinding(gpu::BINDING_PRIMS, T::eStorageTexelBuffer),
         computeBinding(gpu::BINDING_INSTANCES, T::eStorageBuffer),  computeBinding(gpu::BINDING_FRAME, T::eUniformBuffer),
-        computeBinding(gpu::BINDING_STATUS, T::eStorageBuffer),     computeBinding(gpu::BINDING_RAYS, T::eUniformTexelBuffer),
+        computeBinding(gpu::BINDING_STATUS, T::eStorageBuffer),     computeBinding(gpu::BINDING_RAYS, T::eStorageTexelBuffer),
         computeBinding(gpu::BINDING_HITS, T::eStorageBuffer),
     };
     return KernelLayout(context, bindings, sizeof(gpu::TraceParams));

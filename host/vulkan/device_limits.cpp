@@ -65,7 +65,7 @@ void checkBufferFits(const BufferLimits& limits, std::string_view buffer, Buffer
         if (bytes > limits.maxStorageBufferRange)
             refuse(limits, buffer, "maxStorageBufferRange", formatBytes(bytes), formatBytes(limits.maxStorageBufferRange));
         break;
-    case BufferKind::UniformTexel: {
+    case BufferKind::StorageTexel: {
         const std::uint64_t texels = (bytes + texelBytes - 1) / texelBytes;
         if (texels > limits.maxTexelBufferElements)
             refuse(limits, buffer, "maxTexelBufferElements", std::to_string(texels) + " texels",

@@ -14,7 +14,7 @@ namespace vkrt {
 
 enum class BufferKind {
     Storage,       // SSBO: maxStorageBufferRange
-    UniformTexel,  // uniform texel buffer: maxTexelBufferElements (texels, not bytes)
+    StorageTexel,  // read-only storage texel buffer (imageLoad): maxTexelBufferElements (texels, not bytes)
     Uniform,       // UBO: maxUniformBufferRange
     Plain          // not bound to a shader (staging, readback): allocation size only
 };
@@ -39,7 +39,7 @@ BufferLimits capLimits(BufferLimits limits, std::uint64_t maxBytes, std::string 
 std::optional<std::uint64_t> maxBufferBytesFromEnvironment();
 
 // Throws DeviceLimitExceeded naming the limit, the buffer and both sizes.
-// texelBytes: the size of one texel of a UniformTexel buffer (16 for RGBA32UI).
+// texelBytes: the size of one texel of a StorageTexel buffer (16 for RGBA32UI).
 void checkBufferFits(const BufferLimits& limits, std::string_view buffer, BufferKind kind, std::uint64_t bytes,
                      std::uint64_t texelBytes = 16);
 

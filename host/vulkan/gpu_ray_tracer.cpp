@@ -47,7 +47,7 @@ std::span<const std::byte> bytesOf(const std::vector<T>& items) {
 
 constexpr vk::BufferUsageFlags kStorage =
     vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferDst | vk::BufferUsageFlagBits::eTransferSrc;
-constexpr vk::BufferUsageFlags kTexels = vk::BufferUsageFlagBits::eUniformTexelBuffer | vk::BufferUsageFlagBits::eTransferDst;
+constexpr vk::BufferUsageFlags kTexels = vk::BufferUsageFlagBits::eStorageTexelBuffer | vk::BufferUsageFlagBits::eTransferDst;
 
 template <class T>
 std::uint64_t paddedBytes(const std::vector<T>& items) {
@@ -110,10 +110,10 @@ std::uint32_t batchRays(const Context& context) {
 std::uint32_t checkedBatch(const Context& context, const bvh::SceneBvh& bvh) {
     const std::uint32_t batch = batchRays(context);
     const BufferLimits& limits = context.limits();
-    checkBufferFits(limits, "BVH nodes", BufferKind::UniformTexel, stableTexelBufferBytes(paddedBytes(bvh.nodes)));
-    checkBufferFits(limits, "primitives", BufferKind::UniformTexel, stableTexelBufferBytes(paddedBytes(bvh.prims)));
+    checkBufferFits(limits, "BVH nodes", BufferKind::StorageTexel, stableTexelBufferBytes(paddedBytes(bvh.nodes)));
+    checkBufferFits(limits, "primitives", BufferKind::StorageTexel, stableTexelBufferBytes(paddedBytes(bvh.prims)));
     checkBufferFits(limits, "instances", BufferKind::Storage, paddedBytes(bvh.instances));
-    checkBufferFits(limits, "rays", BufferKind::UniformTexel, rayBytes(batch));
+    checkBufferFits(limits, "rays", BufferKind::StorageTexel, rayBytes(batch));
     checkTotalFits(limits, paddedBytes(bvh.nodes) + paddedBytes(bvh.prims) + paddedBytes(bvh.instances) +
                                std::uint64_t{batch} * (sizeof(gpu::TraceRayInput) + sizeof(gpu::TraceHitOutput)));
     checkTraversalStack(bvh, needsTopLevel(bvh));
@@ -145,7 +145,7 @@ GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& opt
     primView = makeTexelView(context, prims);
     rayView = makeTexelView(context, rays);
 
-    const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, 3),
+    const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eStorageTexelBuffer, 3),
                               vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 3),
                               vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, 1)};
     pool = vk::raii::DescriptorPool(context.device(),
@@ -158,12 +158,12 @@ GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& opt
                                               {status.handle(), 0, VK_WHOLE_SIZE},    {hits.handle(), 0, VK_WHOLE_SIZE}};
     using T = vk::DescriptorType;
     const std::array writes = {
-        vk::WriteDescriptorSet(*set, gpu::BINDING_NODES, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &views[0]),
-        vk::WriteDescriptorSet(*set, gpu::BINDING_PRIMS, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &views[1]),
+        vk::WriteDescriptorSet(*set, gpu::BINDING_NODES, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &views[0]),
+        vk::WriteDescriptorSet(*set, gpu::BINDING_PRIMS, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &views[1]),
         vk::WriteDescriptorSet(*set, gpu::BINDING_INSTANCES, 0, 1, T::eStorageBuffer, nullptr, &infos[0]),
         vk::WriteDescriptorSet(*set, gpu::BINDING_FRAME, 0, 1, T::eUniformBuffer, nullptr, &infos[1]),
         vk::WriteDescriptorSet(*set, gpu::BINDING_STATUS, 0, 1, T::eStorageBuffer, nullptr, &infos[2]),
-        vk::WriteDescriptorSet(*set, gpu::BINDING_RAYS, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &views[2]),
+        vk::WriteDescriptorSet(*set, gpu::BINDING_RAYS, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &views[2]),
         vk::WriteDescriptorSet(*set, gpu::BINDING_HITS, 0, 1, T::eStorageBuffer, nullptr, &infos[3]),
     };
     context.device().updateDescriptorSets(writes, {});

@@ -26,7 +26,7 @@ vk::BufferUsageFlags usageOf(BufferKind kind) {
     const vk::BufferUsageFlags transfers = vk::BufferUsageFlagBits::eTransferDst | vk::BufferUsageFlagBits::eTransferSrc;
     switch (kind) {
     case BufferKind::Storage: return transfers | vk::BufferUsageFlagBits::eStorageBuffer;
-    case BufferKind::UniformTexel: return transfers | vk::BufferUsageFlagBits::eUniformTexelBuffer;
+    case BufferKind::StorageTexel: return transfers | vk::BufferUsageFlagBits::eStorageTexelBuffer;
     case BufferKind::Uniform: return transfers | vk::BufferUsageFlagBits::eUniformBuffer;
     case BufferKind::Plain: return transfers;
     }
@@ -37,8 +37,8 @@ vk::BufferUsageFlags usageOf(BufferKind kind) {
 
 std::vector<BufferPlan> planSceneBuffers(const SceneTables& tables, const bvh::SceneBvh& bvh, std::uint64_t pixels) {
     std::vector<BufferPlan> plan(gpu::BINDING_STATUS + 1);
-    plan[gpu::BINDING_NODES] = {"BVH nodes", BufferKind::UniformTexel, stableTexelBufferBytes(bytesOf(bvh.nodes))};
-    plan[gpu::BINDING_PRIMS] = {"primitives", BufferKind::UniformTexel, stableTexelBufferBytes(bytesOf(bvh.prims))};
+    plan[gpu::BINDING_NODES] = {"BVH nodes", BufferKind::StorageTexel, stableTexelBufferBytes(bytesOf(bvh.nodes))};
+    plan[gpu::BINDING_PRIMS] = {"primitives", BufferKind::StorageTexel, stableTexelBufferBytes(bytesOf(bvh.prims))};
     plan[gpu::BINDING_PRIM_INFO] = {"primitive info", BufferKind::Storage, bytesOf(tables.primInfos)};
     plan[gpu::BINDING_VERTEX_ATTRIBS] = {"vertex attributes", BufferKind::Storage, bytesOf(tables.vertexAttribs)};
     plan[gpu::BINDING_INSTANCES] = {"instances", BufferKind::Storage, bytesOf(bvh.instances)};
@@ -93,7 +93,7 @@ GpuScene::GpuScene(const Context& context, Transfers& transfers, const KernelLay
     views_.push_back(makeTexelView(context, buffers_[gpu::BINDING_NODES]));
     views_.push_back(makeTexelView(context, buffers_[gpu::BINDING_PRIMS]));
 
-    const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, 2),
+    const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eStorageTexelBuffer, 2),
                               vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 9),
                               vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, 1)};
     pool_ = vk::raii::DescriptorPool(context.device(),
@@ -106,8 +106,8 @@ GpuScene::GpuScene(const Context& context, Transfers& transfers, const KernelLay
     const vk::BufferView texelViews[] = {*views_[0], *views_[1]};
     for (std::uint32_t binding = 0; binding < plan.size(); ++binding) {
         vk::WriteDescriptorSet write(*set_, binding, 0, 1, vk::DescriptorType::eStorageBuffer);
-        if (plan[binding].kind == BufferKind::UniformTexel) {
-            write.descriptorType = vk::DescriptorType::eUniformTexelBuffer;
+        if (plan[binding].kind == BufferKind::StorageTexel) {
+            write.descriptorType = vk::DescriptorType::eStorageTexelBuffer;
             write.pTexelBufferView = &texelViews[binding == gpu::BINDING_NODES ? 0 : 1];
         } else {
             if (plan[binding].kind == BufferKind::Uniform) write.descriptorType = vk::DescriptorType::eUniformBuffer;

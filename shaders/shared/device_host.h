@@ -2,8 +2,10 @@
 // Included by C++ (host/, bvh_builder/) and by GLSL (shaders/*.comp). Layout rules:
 //  - SSBO structs follow std430: vec4/uvec4 members only, so C++ and GLSL agree without padding
 //    surprises; the static_asserts below pin every size.
-//  - BVH nodes and primitives are read through RGBA32UI uniform texel buffers (usamplerBuffer,
-//    texelFetch): on Mesa 22.3 lavapipe this was x1.45 faster than SSBO loads (../shared/LAVAPIPE.md).
+//  - BVH nodes and primitives are read through RGBA32UI read-only storage texel buffers
+//    (uimageBuffer, imageLoad): on Mesa 22.3 lavapipe texelFetch was x1.45 faster than SSBO loads
+//    (../shared/LAVAPIPE.md), and imageLoad, which its JIT inlines where texelFetch is a call per
+//    fetch, a further ~10% (host/vulkan/README.md).
 //    Integer texels are returned bit-exact, so float fields are stored as their bit patterns and
 //    decoded with uintBitsToFloat; no denormal or NaN canonicalisation can touch the integers.
 #ifndef VKRT_DEVICE_HOST_H
@@ -27,8 +29,8 @@ using ivec4 = glm::ivec4;
 
 // ---------------------------------------------------------------------------------------------
 // Descriptor set 0 bindings.
-VKRT_CONST uint BINDING_NODES = 0;         // usamplerBuffer RGBA32UI, BVH_NODE_TEXELS texels per node
-VKRT_CONST uint BINDING_PRIMS = 1;         // usamplerBuffer RGBA32UI, PRIM_TEXELS texels per primitive
+VKRT_CONST uint BINDING_NODES = 0;         // readonly uimageBuffer RGBA32UI, BVH_NODE_TEXELS texels per node
+VKRT_CONST uint BINDING_PRIMS = 1;         // readonly uimageBuffer RGBA32UI, PRIM_TEXELS texels per primitive
 VKRT_CONST uint BINDING_PRIM_INFO = 2;     // SSBO PrimInfo[], parallel to the primitive array
 VKRT_CONST uint BINDING_VERTEX_ATTRIBS = 3;// SSBO VertexAttrib[] (mesh normals and uvs)
 VKRT_CONST uint BINDING_INSTANCES = 4;     // SSBO Instance[]
@@ -39,7 +41,7 @@ VKRT_CONST uint BINDING_TEXELS = 8;        // SSBO uint[] (RGBA8 packed texels o
 VKRT_CONST uint BINDING_FRAME = 9;         // UBO FrameParams
 VKRT_CONST uint BINDING_ACCUM = 10;        // SSBO vec4[] per-pixel radiance sum (rgb), w unused
 VKRT_CONST uint BINDING_STATUS = 11;       // SSBO RenderStatus
-VKRT_CONST uint BINDING_RAYS = 12;         // trace_rays.comp only: usamplerBuffer RGBA32UI, TraceRayInput = 2 texels
+VKRT_CONST uint BINDING_RAYS = 12;         // trace_rays.comp only: readonly uimageBuffer RGBA32UI, TraceRayInput = 2 texels
 VKRT_CONST uint BINDING_HITS = 13;         // trace_rays.comp only: SSBO TraceHitOutput[]
 
 // ---------------------------------------------------------------------------------------------

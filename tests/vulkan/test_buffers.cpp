@@ -1,5 +1,5 @@
 // Buffers: upload and readback through a mapping and through staging copies, zero fill, memory
-// type choice, and RGBA32UI texel buffers read by texelFetch returning every bit unchanged.
+// type choice, and RGBA32UI texel buffers read by imageLoad returning every bit unchanged.
 #include <cstring>
 #include <random>
 
@@ -77,11 +77,11 @@ TEST(MemoryType, RequiredFlagsAreMandatoryPreferredOnesWin) {
     EXPECT_THROW(chooseMemoryType(memory, 0b001, hostCoherent, {}, "b"), std::runtime_error);
 }
 
-// texel_copy.comp: out[i] = texelFetch(texels, i) for every texel of an RGBA32UI buffer.
+// texel_copy.comp: out[i] = imageLoad(texels, i) for every texel of an RGBA32UI buffer.
 void texelRoundTrip(const Context& context) {
     const vk::raii::Device& device = context.device();
     const vk::DescriptorSetLayoutBinding bindings[] = {
-        {0, vk::DescriptorType::eUniformTexelBuffer, 1, vk::ShaderStageFlagBits::eCompute},
+        {0, vk::DescriptorType::eStorageTexelBuffer, 1, vk::ShaderStageFlagBits::eCompute},
         {1, vk::DescriptorType::eStorageBuffer, 1, vk::ShaderStageFlagBits::eCompute}};
     vk::raii::DescriptorSetLayout setLayout(device, vk::DescriptorSetLayoutCreateInfo({}, bindings));
     const vk::DescriptorSetLayout setLayouts[] = {*setLayout};
@@ -100,19 +100,19 @@ void texelRoundTrip(const Context& context) {
     CommandRunner runner(context);
     Transfers transfers(context, runner);
     Buffer input(context, "texels", words.size() * 4,
-                 vk::BufferUsageFlagBits::eUniformTexelBuffer | vk::BufferUsageFlagBits::eTransferDst, MemoryUse::Device);
+                 vk::BufferUsageFlagBits::eStorageTexelBuffer | vk::BufferUsageFlagBits::eTransferDst, MemoryUse::Device);
     Buffer output(context, "copied", words.size() * 4, kStorage, MemoryUse::Device);
     transfers.upload(input, std::as_bytes(std::span(words)));
     transfers.zero(output);
     vk::raii::BufferView view = makeTexelView(context, input);
 
-    const vk::DescriptorPoolSize sizes[] = {{vk::DescriptorType::eUniformTexelBuffer, 1}, {vk::DescriptorType::eStorageBuffer, 1}};
+    const vk::DescriptorPoolSize sizes[] = {{vk::DescriptorType::eStorageTexelBuffer, 1}, {vk::DescriptorType::eStorageBuffer, 1}};
     vk::raii::DescriptorPool pool(device, vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, sizes));
     vk::raii::DescriptorSet set = std::move(vk::raii::DescriptorSets(device, vk::DescriptorSetAllocateInfo(*pool, setLayouts)).front());
     const vk::BufferView views[] = {*view};
     const vk::DescriptorBufferInfo outInfo(output.handle(), 0, VK_WHOLE_SIZE);
     const vk::WriteDescriptorSet writes[] = {
-        vk::WriteDescriptorSet(*set, 0, 0, vk::DescriptorType::eUniformTexelBuffer, {}, {}, views),
+        vk::WriteDescriptorSet(*set, 0, 0, vk::DescriptorType::eStorageTexelBuffer, {}, {}, views),
         vk::WriteDescriptorSet(*set, 1, 0, vk::DescriptorType::eStorageBuffer, {}, outInfo)};
     device.updateDescriptorSets(writes, {});
 

@@ -46,8 +46,8 @@ TEST(DeviceLimits, StorageBufferRangeBothSides) {
 }
 
 TEST(DeviceLimits, TexelBufferElementsBothSides) {
-    EXPECT_NO_THROW(checkBufferFits(someLimits(), "b", BufferKind::UniformTexel, 50 * 16));
-    const std::string message = refusal(someLimits(), BufferKind::UniformTexel, 50 * 16 + 1);  // 51 texels
+    EXPECT_NO_THROW(checkBufferFits(someLimits(), "b", BufferKind::StorageTexel, 50 * 16));
+    const std::string message = refusal(someLimits(), BufferKind::StorageTexel, 50 * 16 + 1);  // 51 texels
     EXPECT_NE(message.find("maxTexelBufferElements"), std::string::npos) << message;
     EXPECT_NE(message.find("51 texels"), std::string::npos) << message;
     EXPECT_NE(message.find("50 texels"), std::string::npos) << message;
@@ -135,7 +135,7 @@ TEST(SceneBuffers, PlanPadsEmptyTablesToOneElement) {
     EXPECT_EQ(plan[gpu::BINDING_SHADERS].bytes, sizeof(gpu::Material));
     EXPECT_EQ(plan[gpu::BINDING_TEXELS].bytes, 4u);
     EXPECT_EQ(plan[gpu::BINDING_NODES].bytes, stableTexelBufferBytes(2 * sizeof(gpu::BvhNode)));
-    EXPECT_EQ(plan[gpu::BINDING_NODES].kind, BufferKind::UniformTexel);
+    EXPECT_EQ(plan[gpu::BINDING_NODES].kind, BufferKind::StorageTexel);
     EXPECT_EQ(plan[gpu::BINDING_ACCUM].bytes, 10 * 16u);
     EXPECT_EQ(plan[gpu::BINDING_FRAME].kind, BufferKind::Uniform);
 }

@@ -18,8 +18,8 @@ layout(constant_id = SPEC_HAS_COOL_TO_WARM) const bool HAS_COOL_TO_WARM = true;
 layout(constant_id = SPEC_MAX_DEPTH) const uint MAX_DEPTH = 99u;
 layout(constant_id = SPEC_PATH_STACK_SIZE) const uint PATH_STACK_SIZE = 99u;
 
-layout(set = 0, binding = BINDING_NODES) uniform usamplerBuffer bvhNodes;
-layout(set = 0, binding = BINDING_PRIMS) uniform usamplerBuffer primitives;
+layout(set = 0, binding = BINDING_NODES, rgba32ui) uniform readonly uimageBuffer bvhNodes;
+layout(set = 0, binding = BINDING_PRIMS, rgba32ui) uniform readonly uimageBuffer primitives;
 layout(std430, set = 0, binding = BINDING_SHADERS) readonly buffer MaterialBuffer { Material materials[]; };
 layout(std430, set = 0, binding = BINDING_LIGHTS) readonly buffer LightBuffer { Light lights[]; };
 layout(std140, set = 0, binding = BINDING_FRAME) uniform FrameBuffer { FrameParams frame; };
