@@ -13,7 +13,7 @@
 // Rays through a texel buffer, like the BVH (bindings.glsl): on lavapipe an SSBO load at a
 // per-lane address is a scalar loop over the lanes (host/vulkan/README.md).
 layout(set = 0, binding = BINDING_RAYS, rgba32ui) uniform readonly uimageBuffer rays;
-layout(std430, set = 0, binding = BINDING_HITS) writeonly buffer HitBuffer { TraceHitOutput hits[]; };
+layout(set = 0, binding = BINDING_HITS, rgba32ui) uniform writeonly uimageBuffer hits;
 layout(push_constant) uniform TracePush { TraceParams trace; };
 
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
@@ -27,5 +27,5 @@ void main() {
     bool found = traceScene(origin.xyz, direction, origin.w, trace.rays.y != 0u, hit);
     if (g_budgetExceeded) atomicOr(status.flags.x, STATUS_LOOP_BUDGET_EXCEEDED);
     else if (g_loopCutOff) atomicOr(status.flags.x, STATUS_LOOP_CUT_OFF);
-    hits[i].hit = found ? uvec4(floatBitsToUint(hit.t), hit.prim, hit.instance, 0u) : uvec4(0xffffffffu, 0u, 0u, 0u);
+    imageStore(hits, int(i), found ? uvec4(floatBitsToUint(hit.t), hit.prim, hit.instance, 0u) : uvec4(0xffffffffu, 0u, 0u, 0u));
 }

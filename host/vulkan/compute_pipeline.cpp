@@ -67,7 +67,7 @@ KernelLayout traceLayout(const Context& context) {
         computeBinding(gpu::BINDING_NODES, T::eStorageTexelBuffer), computeBinding(gpu::BINDING_PRIMS, T::eStorageTexelBuffer),
         computeBinding(gpu::BINDING_INSTANCES, T::eStorageBuffer),  computeBinding(gpu::BINDING_FRAME, T::eUniformBuffer),
         computeBinding(gpu::BINDING_STATUS, T::eStorageBuffer),     computeBinding(gpu::BINDING_RAYS, T::eStorageTexelBuffer),
-        computeBinding(gpu::BINDING_HITS, T::eStorageBuffer),
+        computeBinding(gpu::BINDING_HITS, T::eStorageTexelBuffer),
     };
     return KernelLayout(context, bindings, sizeof(gpu::TraceParams));
 }

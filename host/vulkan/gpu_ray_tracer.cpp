@@ -67,7 +67,7 @@ struct GpuRayTracer::Impl {
     FeatureSet features;
     std::uint32_t batch;
     Buffer nodes, prims, instances, frame, status, rays, hits;
-    vk::raii::BufferView nodeView = nullptr, primView = nullptr, rayView = nullptr;
+    vk::raii::BufferView nodeView = nullptr, primView = nullptr, rayView = nullptr, hitView = nullptr;
     vk::raii::DescriptorPool pool = nullptr;
     vk::raii::DescriptorSet set = nullptr;
 };
@@ -93,15 +93,15 @@ KernelSource traceSource(const GpuRendererOptions& o) {
 
 // The ray texel buffer of one batch, sized off the lengths that change lavapipe's JIT key.
 std::uint64_t rayBytes(std::uint64_t batch) { return stableTexelBufferBytes(batch * sizeof(gpu::TraceRayInput)); }
+std::uint64_t hitBytes(std::uint64_t batch) { return stableTexelBufferBytes(batch * sizeof(gpu::TraceHitOutput)); }
 
-// Rays per submission: what the ray texel buffer, the hit buffer and one dispatch can hold, in
-// whole workgroups.
+// Rays per submission: what the ray and hit texel buffers and one dispatch can hold, in whole
+// workgroups.
 std::uint32_t batchRays(const Context& context) {
     const BufferLimits& limits = context.limits();
-    const std::uint64_t byHits = limits.maxStorageBufferRange / sizeof(gpu::TraceHitOutput);
     const std::uint64_t byRays = std::uint64_t{limits.maxTexelBufferElements} * 16 / sizeof(gpu::TraceRayInput);
     const std::uint64_t byDispatch = static_cast<std::uint64_t>(std::min(context.info().maxWorkGroupCountX, 65535u)) * kLocalSize;
-    std::uint64_t batch = std::min({byHits, byRays, byDispatch, std::uint64_t{kBatchRays}}) / kLocalSize * kLocalSize;
+    std::uint64_t batch = std::min({byRays, byDispatch, std::uint64_t{kBatchRays}}) / kLocalSize * kLocalSize;
     while (batch > kLocalSize && rayBytes(batch) / 16 > limits.maxTexelBufferElements) batch -= kLocalSize;
     return static_cast<std::uint32_t>(std::max<std::uint64_t>(kLocalSize, batch));
 }
@@ -114,6 +114,7 @@ std::uint32_t checkedBatch(const Context& context, const bvh::SceneBvh& bvh) {
     checkBufferFits(limits, "primitives", BufferKind::StorageTexel, stableTexelBufferBytes(paddedBytes(bvh.prims)));
     checkBufferFits(limits, "instances", BufferKind::Storage, paddedBytes(bvh.instances));
     checkBufferFits(limits, "rays", BufferKind::StorageTexel, rayBytes(batch));
+    checkBufferFits(limits, "hits", BufferKind::StorageTexel, hitBytes(batch));
     checkTotalFits(limits, paddedBytes(bvh.nodes) + paddedBytes(bvh.prims) + paddedBytes(bvh.instances) +
                                std::uint64_t{batch} * (sizeof(gpu::TraceRayInput) + sizeof(gpu::TraceHitOutput)));
     checkTraversalStack(bvh, needsTopLevel(bvh));
@@ -133,7 +134,7 @@ GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& opt
             vk::BufferUsageFlagBits::eUniformBuffer | vk::BufferUsageFlagBits::eTransferDst, MemoryUse::Device),
       status(context, "render status", sizeof(gpu::RenderStatus), kStorage, MemoryUse::Shared),
       rays(context, "rays", rayBytes(batch), kTexels, MemoryUse::Device),
-      hits(context, "hits", std::uint64_t{batch} * sizeof(gpu::TraceHitOutput), kStorage, MemoryUse::Device) {
+      hits(context, "hits", hitBytes(batch), kTexels | vk::BufferUsageFlagBits::eTransferSrc, MemoryUse::Device) {
     transfers.upload(nodes, bytesOf(bvh.nodes));
     transfers.upload(prims, bytesOf(bvh.prims));
     transfers.upload(instances, bytesOf(bvh.instances));
@@ -144,18 +145,19 @@ GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& opt
     nodeView = makeTexelView(context, nodes);
     primView = makeTexelView(context, prims);
     rayView = makeTexelView(context, rays);
+    hitView = makeTexelView(context, hits);
 
-    const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eStorageTexelBuffer, 3),
-                              vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 3),
+    const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eStorageTexelBuffer, 4),
+                              vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 2),
                               vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, 1)};
     pool = vk::raii::DescriptorPool(context.device(),
                                     vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, sizes));
     const vk::DescriptorSetLayout setLayout = layout.setLayout();
     set = std::move(vk::raii::DescriptorSets(context.device(), vk::DescriptorSetAllocateInfo(*pool, setLayout)).front());
 
-    const vk::BufferView views[] = {*nodeView, *primView, *rayView};
+    const vk::BufferView views[] = {*nodeView, *primView, *rayView, *hitView};
     const vk::DescriptorBufferInfo infos[] = {{instances.handle(), 0, VK_WHOLE_SIZE}, {frame.handle(), 0, VK_WHOLE_SIZE},
-                                              {status.handle(), 0, VK_WHOLE_SIZE},    {hits.handle(), 0, VK_WHOLE_SIZE}};
+                                              {status.handle(), 0, VK_WHOLE_SIZE}};
     using T = vk::DescriptorType;
     const std::array writes = {
         vk::WriteDescriptorSet(*set, gpu::BINDING_NODES, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &views[0]),
@@ -164,7 +166,7 @@ GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& opt
         vk::WriteDescriptorSet(*set, gpu::BINDING_FRAME, 0, 1, T::eUniformBuffer, nullptr, &infos[1]),
         vk::WriteDescriptorSet(*set, gpu::BINDING_STATUS, 0, 1, T::eStorageBuffer, nullptr, &infos[2]),
         vk::WriteDescriptorSet(*set, gpu::BINDING_RAYS, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &views[2]),
-        vk::WriteDescriptorSet(*set, gpu::BINDING_HITS, 0, 1, T::eStorageBuffer, nullptr, &infos[3]),
+        vk::WriteDescriptorSet(*set, gpu::BINDING_HITS, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &views[3]),
     };
     context.device().updateDescriptorSets(writes, {});
 }

@@ -42,7 +42,7 @@ VKRT_CONST uint BINDING_FRAME = 9;         // UBO FrameParams
 VKRT_CONST uint BINDING_ACCUM = 10;        // SSBO vec4[] per-pixel radiance sum (rgb), w unused
 VKRT_CONST uint BINDING_STATUS = 11;       // SSBO RenderStatus
 VKRT_CONST uint BINDING_RAYS = 12;         // trace_rays.comp only: readonly uimageBuffer RGBA32UI, TraceRayInput = 2 texels
-VKRT_CONST uint BINDING_HITS = 13;         // trace_rays.comp only: SSBO TraceHitOutput[]
+VKRT_CONST uint BINDING_HITS = 13;         // trace_rays.comp only: writeonly uimageBuffer RGBA32UI, TraceHitOutput = 1 texel
 
 // ---------------------------------------------------------------------------------------------
 // BVH node: 64 bytes = 4 RGBA32UI texels, both children's boxes side by side (Aila & Laine 2009),
