@@ -9,15 +9,20 @@
 // off by more than 2/255; 72% at 6,000) although no lane reached the per-lane LOOP_BUDGET, because
 // the group's counter also pays for other lanes' passes and for every loop's exit pass.
 #include <cstdint>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "app.h"
 #include "both_paths.h"
 #include "device_list.h"
 #include "gpu_environment.h"
+#include "image.h"
 #include "scene_accel.h"
 #include "scene_building.h"
+#include "test_paths.h"
 #include "vulkan_errors.h"
 
 namespace vkrt::stability {
@@ -49,6 +54,28 @@ Scene manyLights(int lights) {
         scene.shapes.push_back(sphere(c, rng.next(0.1f, 0.5f), white));
     }
     return scene;
+}
+
+// The same scene as a scene file, for the command line.
+std::string sceneFileOf(const Scene& scene) {
+    std::ostringstream x;
+    auto v = [](const glm::vec3& p) { return std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z); };
+    x << "<scene>\n<camera name=\"main\" type=\"perspective\"><position>0 3 8</position><lookatPoint>0 0 0</lookatPoint>"
+         "<focalLength>1.0</focalLength><imagePlaneWidth>0.5</imagePlaneWidth></camera>\n"
+         "<shader name=\"white\" type=\"Lambertian\"><diffuse>0.8 0.8 0.8</diffuse></shader>\n";
+    for (const Light& light : scene.lights)
+        x << "<light type=\"point\"><position>" << v(light.position) << "</position><intensity>" << v(light.intensity)
+          << "</intensity></light>\n";
+    for (const Shape& shape : scene.shapes) {
+        if (shape.type == ShapeType::Box)
+            x << "<shape type=\"box\"><shader ref=\"white\"/><minPt>" << v(shape.minPt) << "</minPt><maxPt>" << v(shape.maxPt)
+              << "</maxPt></shape>\n";
+        else
+            x << "<shape type=\"sphere\"><shader ref=\"white\"/><center>" << v(shape.center) << "</center><radius>"
+              << std::to_string(shape.radius) << "</radius></shape>\n";
+    }
+    x << "</scene>\n";
+    return x.str();
 }
 
 // Whether the device is lavapipe from a Mesa before 25, whose loop limiter test_loop_limiter.cpp
@@ -91,6 +118,30 @@ TEST(LoopLimit, ALoopCutOffIsAnErrorNeverAWrongImage) {
         EXPECT_NE(message.find("cut off"), std::string::npos) << message;
         EXPECT_EQ(message.find(std::to_string(gpu::LOOP_BUDGET)), std::string::npos) << message;
         EXPECT_NE(message.find("at pixel ("), std::string::npos) << message;
+    }
+}
+
+// `vkrt scene.xml` with --device auto (the default): a kernel error makes it render on the CPU
+// reference, whose traversal needs the BVH's CPU copy that a GPU render skips building.
+TEST(LoopLimit, TheCommandLineFallsBackToTheCpuOnALoopCutOff) {
+    const std::string dir = test::artifactDir();
+    const std::string scenePath = dir + "/loop_limit_3000_lights.xml";
+    std::ofstream(scenePath) << sceneFileOf(manyLights(3000));
+    auto run = [&](const std::string& out, const char* device) {
+        const char* argv[] = {"vkrt", scenePath.c_str(), "-w", "32", "-h", "32", "-r", "1", "--device", device,
+                              "--validate", "-o", out.c_str()};
+        return runVkrt(static_cast<int>(std::size(argv)), argv);
+    };
+    ASSERT_EQ(run(dir + "/loop_limit_cpu.exr", "cpu"), 0);
+    ASSERT_EQ(run(dir + "/loop_limit_auto.exr", "auto"), 0);
+    const Image cpu = readImage(dir + "/loop_limit_cpu.exr");
+    const Image automatic = readImage(dir + "/loop_limit_auto.exr");
+    if (hasMesaLoopLimiter(sharedGpu().deviceName())) {
+        // The fallback ran the CPU reference itself: the same image to the bit.
+        EXPECT_EQ(cpu.pixels, automatic.pixels);
+    } else {
+        const Distance d = distance(cpu, automatic);
+        EXPECT_TRUE(agrees(d)) << d.describe();
     }
 }
 
