@@ -23,15 +23,24 @@ const uint ENTRY_NONE = 0xfffffffeu;
 
 vec3 texelFloats(uvec4 t) { return uintBitsToFloat(t.xyz); }
 
+// min and max as selects: GLSL's min/max must return the other operand for a NaN, which lavapipe
+// spells as three instructions (min, unordered compare, blend); the slab distances are never NaN
+// (box bounds finite, invDir never 0: safeInverse), and a select of a compare is one vminps/vmaxps.
+// +6% rays/s on lavapipe (alternating runs).
+float fmin(float a, float b) { return a < b ? a : b; }
+float fmax(float a, float b) { return a > b ? a : b; }
+vec3 vmin(vec3 a, vec3 b) { return vec3(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z)); }
+vec3 vmax(vec3 a, vec3 b) { return vec3(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z)); }
+
 // Slab test of one child box, conservative by 1 + 2*gamma(3) on the exit distance (Ize 2013,
 // "Robust BVH Ray Traversal") so rounding can never cull a box the ray truly enters.
 bool hitsBox(TraceRay ray, vec3 lo, vec3 hi, float tBest, out float tNear) {
     vec3 t0 = (lo - ray.origin) * ray.invDir;
     vec3 t1 = (hi - ray.origin) * ray.invDir;
-    vec3 tMin = min(t0, t1);
-    vec3 tMax = max(t0, t1);
-    tNear = max(max(max(tMin.x, tMin.y), tMin.z), 0.0);
-    float tFar = min(min(min(tMax.x, tMax.y), tMax.z), tBest) * 1.00000036;
+    vec3 tMin = vmin(t0, t1);
+    vec3 tMax = vmax(t0, t1);
+    tNear = fmax(fmax(fmax(tMin.x, tMin.y), tMin.z), 0.0);
+    float tFar = fmin(fmin(fmin(tMax.x, tMax.y), tMax.z), tBest) * 1.00000036;
     return tNear <= tFar;
 }
 
