@@ -20,15 +20,56 @@ layout(constant_id = SPEC_PATH_STACK_SIZE) const uint PATH_STACK_SIZE = 8u;
 
 layout(set = 0, binding = BINDING_NODES, rgba32ui) uniform readonly uimageBuffer bvhNodes;
 layout(set = 0, binding = BINDING_PRIMS, rgba32ui) uniform readonly uimageBuffer primitives;
-layout(std430, set = 0, binding = BINDING_PRIM_INFO) readonly buffer PrimInfoBuffer { PrimInfo primInfos[]; };
-layout(std430, set = 0, binding = BINDING_VERTEX_ATTRIBS) readonly buffer VertexAttribBuffer { VertexAttrib vertexAttribs[]; };
-layout(std430, set = 0, binding = BINDING_INSTANCES) readonly buffer InstanceBuffer { Instance instances[]; };
-layout(std430, set = 0, binding = BINDING_SHADERS) readonly buffer MaterialBuffer { Material materials[]; };
-layout(std430, set = 0, binding = BINDING_LIGHTS) readonly buffer LightBuffer { Light lights[]; };
-layout(std430, set = 0, binding = BINDING_TEXTURES) readonly buffer TextureInfoBuffer { TextureInfo textureInfos[]; };
+// The scene's tables as texel buffers, each struct its members in order (device_host.h): on
+// lavapipe an image load at per-lane indices is an inlined vector gather, while an SSBO load is a
+// loop over the lanes with a bounds check and a branch per lane and per word.
+layout(set = 0, binding = BINDING_PRIM_INFO, rgba32ui) uniform readonly uimageBuffer primInfoTexels;
+layout(set = 0, binding = BINDING_VERTEX_ATTRIBS, rgba32ui) uniform readonly uimageBuffer vertexAttribTexels;
+layout(set = 0, binding = BINDING_INSTANCES, rgba32ui) uniform readonly uimageBuffer instanceTexels;
+layout(set = 0, binding = BINDING_SHADERS, rgba32ui) uniform readonly uimageBuffer materialTexels;
+layout(set = 0, binding = BINDING_LIGHTS, rgba32ui) uniform readonly uimageBuffer lightTexels;
+layout(set = 0, binding = BINDING_TEXTURES, rgba32ui) uniform readonly uimageBuffer textureInfoTexels;
 layout(std430, set = 0, binding = BINDING_TEXELS) readonly buffer TexelBuffer { uint texels[]; };
 layout(std140, set = 0, binding = BINDING_FRAME) uniform FrameBuffer { FrameParams frame; };
 layout(std430, set = 0, binding = BINDING_ACCUM) buffer AccumBuffer { vec4 accum[]; };
 layout(std430, set = 0, binding = BINDING_STATUS) coherent buffer StatusBuffer { RenderStatus status; };
+
+uvec4 loadPrimInfo(uint i) { return imageLoad(primInfoTexels, int(i)); }
+
+VertexAttrib loadVertexAttrib(uint i) {
+    int t = int(i * VERTEX_ATTRIB_TEXELS);
+    VertexAttrib a;
+    a.normalU = uintBitsToFloat(imageLoad(vertexAttribTexels, t));
+    a.vPad = uintBitsToFloat(imageLoad(vertexAttribTexels, t + 1));
+    return a;
+}
+
+// Row `row` (0-8) of an instance's three 3x4 matrices, and its info texel.
+vec4 instanceRow(uint i, uint row) { return uintBitsToFloat(imageLoad(instanceTexels, int(i * INSTANCE_TEXELS + row))); }
+uvec4 instanceInfo(uint i) { return imageLoad(instanceTexels, int(i * INSTANCE_TEXELS + INSTANCE_INFO_TEXEL)); }
+
+Material loadMaterial(uint i) {
+    int t = int(i * MATERIAL_TEXELS);
+    Material m;
+    m.diffuse = uintBitsToFloat(imageLoad(materialTexels, t));
+    m.specular = uintBitsToFloat(imageLoad(materialTexels, t + 1));
+    m.attenuation = uintBitsToFloat(imageLoad(materialTexels, t + 2));
+    m.params = uintBitsToFloat(imageLoad(materialTexels, t + 3));
+    m.ids = imageLoad(materialTexels, t + 4);
+    return m;
+}
+
+Light loadLight(uint i) {
+    int t = int(i * LIGHT_TEXELS);
+    Light l;
+    l.position = uintBitsToFloat(imageLoad(lightTexels, t));
+    l.intensity = uintBitsToFloat(imageLoad(lightTexels, t + 1));
+    l.edgeU = uintBitsToFloat(imageLoad(lightTexels, t + 2));
+    l.edgeV = uintBitsToFloat(imageLoad(lightTexels, t + 3));
+    l.info = imageLoad(lightTexels, t + 4);
+    return l;
+}
+
+uvec4 loadTextureInfo(uint i) { return imageLoad(textureInfoTexels, int(i)); }
 
 #endif

@@ -126,7 +126,7 @@ vec3 cameraSampleRadiance(vec3 origin, vec3 dir, SampleKey key) {
             radiance += ray.weight * background;
         } else {
             Surface s = surfaceAt(ray.origin, ray.dir, hit);
-            Material m = materials[s.material];
+            Material m = loadMaterial(s.material);
             uint type = m.ids.x;
             if (HAS_DIELECTRIC && type == SHADER_DIELECTRIC) {
                 emitDielectric(q, ray, s, m, hit.t);

@@ -52,7 +52,7 @@ vec3 directLighting(Surface s, vec3 N, vec3 V, uint type, vec3 kd, vec3 ks, floa
     uint l = 0u;
     for (; l < lightCount; ++l) {
         if (!chargeLoop()) break;
-        Light light = lights[l];
+        Light light = loadLight(l);
         // Point and area lights share one sample loop (a point light: one sample at its position)
         // so the shadow-ray traversal is inlined once here, not twice: a smaller kernel, measured
         // ~8% faster on threeEggs_SoftShadows on lavapipe.

@@ -47,16 +47,15 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
     vec3 o = origin;
     vec3 d = dir;
     if (HAS_INSTANCES) {
-        o = rowTransformPoint(instances[hit.instance].worldToObject[0], instances[hit.instance].worldToObject[1],
-                              instances[hit.instance].worldToObject[2], origin);
-        d = rowTransformVector(instances[hit.instance].worldToObject[0], instances[hit.instance].worldToObject[1],
-                               instances[hit.instance].worldToObject[2], dir);
+        vec4 r0 = instanceRow(hit.instance, 0u), r1 = instanceRow(hit.instance, 1u), r2 = instanceRow(hit.instance, 2u);
+        o = rowTransformPoint(r0, r1, r2, origin);
+        d = rowTransformVector(r0, r1, r2, dir);
     }
 
     int base = int(hit.prim * PRIM_TEXELS);
     uvec4 a = imageLoad(primitives, base);
     uint kind = a.w & PRIM_KIND_MASK;
-    uvec4 info = primInfos[hit.prim].data;
+    uvec4 info = loadPrimInfo(hit.prim);
     vec3 p;
     vec3 ng;
     vec3 ns;
@@ -73,9 +72,9 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
         ns = ng;
         s.uv = hit.bary;
         if (info.y != ATTRIB_NONE) {
-            VertexAttrib a0 = vertexAttribs[info.y];
-            VertexAttrib a1 = vertexAttribs[info.z];
-            VertexAttrib a2 = vertexAttribs[info.w];
+            VertexAttrib a0 = loadVertexAttrib(info.y);
+            VertexAttrib a1 = loadVertexAttrib(info.z);
+            VertexAttrib a2 = loadVertexAttrib(info.w);
             vec3 n = b0 * a0.normalU.xyz + hit.bary.x * a1.normalU.xyz + hit.bary.y * a2.normalU.xyz;
             ns = dot(n, n) > 0.0 ? n : ng;
             if (HAS_TEXTURES)
@@ -128,12 +127,14 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
 
     vec3 fallback = normalizeOr(-dir, vec3(0.0, 1.0, 0.0));
     if (HAS_INSTANCES) {
-        Instance inst = instances[hit.instance];
-        p = rowTransformPoint(inst.objectToWorld[0], inst.objectToWorld[1], inst.objectToWorld[2], p);
-        objectMagnitude = transformedMagnitude(inst.objectToWorld[0], inst.objectToWorld[1], inst.objectToWorld[2], objectMagnitude);
-        ng = rowTransformVector(inst.normalToWorld[0], inst.normalToWorld[1], inst.normalToWorld[2], ng);
-        ns = rowTransformVector(inst.normalToWorld[0], inst.normalToWorld[1], inst.normalToWorld[2], ns);
-        s.material = inst.info.y != MATERIAL_NONE ? inst.info.y : info.x;
+        vec4 w0 = instanceRow(hit.instance, 3u), w1 = instanceRow(hit.instance, 4u), w2 = instanceRow(hit.instance, 5u);
+        vec4 n0 = instanceRow(hit.instance, 6u), n1 = instanceRow(hit.instance, 7u), n2 = instanceRow(hit.instance, 8u);
+        uint override = instanceInfo(hit.instance).y;
+        p = rowTransformPoint(w0, w1, w2, p);
+        objectMagnitude = transformedMagnitude(w0, w1, w2, objectMagnitude);
+        ng = rowTransformVector(n0, n1, n2, ng);
+        ns = rowTransformVector(n0, n1, n2, ns);
+        s.material = override != MATERIAL_NONE ? override : info.x;
     } else {
         s.material = info.x;
     }

@@ -14,7 +14,7 @@ int wrapIndex(int i, int n) {
 }
 
 vec3 sampleTexture(uint texture, vec2 uv) {
-    uvec4 info = textureInfos[texture].info;
+    uvec4 info = loadTextureInfo(texture);
     int w = int(info.y);
     int h = int(info.z);
     // Keep the coordinates small before scaling so huge uv cannot overflow the int conversion.

@@ -10,7 +10,7 @@
 
 struct Hit {
     float t;
-    uint instance;  // index into instances[]
+    uint instance;  // index into the instance table
     uint prim;      // index into the primitive array
     vec2 bary;      // triangle: barycentric weights of v1 and v2
 };
@@ -68,9 +68,9 @@ bool intersectPrimitive(TraceRay ray, uint prim, float tBest, out float tHit, ou
 
 // The world ray in an instance's object space (direction not renormalised: t is unchanged).
 TraceRay rayIntoInstance(vec3 origin, vec3 dir, uint instance) {
-    vec4 r0 = instances[instance].worldToObject[0];
-    vec4 r1 = instances[instance].worldToObject[1];
-    vec4 r2 = instances[instance].worldToObject[2];
+    vec4 r0 = instanceRow(instance, 0u);  // worldToObject
+    vec4 r1 = instanceRow(instance, 1u);
+    vec4 r2 = instanceRow(instance, 2u);
     vec3 o = vec3(dot(r0.xyz, origin) + r0.w, dot(r1.xyz, origin) + r1.w, dot(r2.xyz, origin) + r2.w);
     vec3 d = vec3(dot(r0.xyz, dir), dot(r1.xyz, dir), dot(r2.xyz, dir));
     return makeTraceRay(o, d);
@@ -98,7 +98,7 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
     uint sp = 0u;
     uint instance = 0u;
     bool inBottom = !HAS_INSTANCES;
-    uint entry = HAS_INSTANCES ? frame.scene.w : instances[0].info.x;
+    uint entry = HAS_INSTANCES ? frame.scene.w : instanceInfo(0u).x;
     bool finished = false;
     bool overflow = false;
 
@@ -119,7 +119,7 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             ray = rayIntoInstance(origin, dir, instance);
             inBottom = true;
             pushed = ENTRY_LEAVE_INSTANCE;
-            entry = instances[instance].info.x;
+            entry = instanceInfo(instance).x;
             descend = true;
         } else if ((entry & ENTRY_LEAF_BIT) != 0u) {
             descend = true;  // a popped leaf: intersected below

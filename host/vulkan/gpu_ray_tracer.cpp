@@ -67,7 +67,7 @@ struct GpuRayTracer::Impl {
     FeatureSet features;
     std::uint32_t batch;
     Buffer nodes, prims, instances, frame, status, rays, hits;
-    vk::raii::BufferView nodeView = nullptr, primView = nullptr, rayView = nullptr, hitView = nullptr;
+    vk::raii::BufferView nodeView = nullptr, primView = nullptr, instanceView = nullptr, rayView = nullptr, hitView = nullptr;
     vk::raii::DescriptorPool pool = nullptr;
     vk::raii::DescriptorSet set = nullptr;
 };
@@ -112,7 +112,7 @@ std::uint32_t checkedBatch(const Context& context, const bvh::SceneBvh& bvh) {
     const BufferLimits& limits = context.limits();
     checkBufferFits(limits, "BVH nodes", BufferKind::StorageTexel, stableTexelBufferBytes(paddedBytes(bvh.nodes)));
     checkBufferFits(limits, "primitives", BufferKind::StorageTexel, stableTexelBufferBytes(paddedBytes(bvh.prims)));
-    checkBufferFits(limits, "instances", BufferKind::Storage, paddedBytes(bvh.instances));
+    checkBufferFits(limits, "instances", BufferKind::StorageTexel, stableTexelBufferBytes(paddedBytes(bvh.instances)));
     checkBufferFits(limits, "rays", BufferKind::StorageTexel, rayBytes(batch));
     checkBufferFits(limits, "hits", BufferKind::StorageTexel, hitBytes(batch));
     checkTotalFits(limits, paddedBytes(bvh.nodes) + paddedBytes(bvh.prims) + paddedBytes(bvh.instances) +
@@ -129,7 +129,7 @@ GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& opt
       batch(checkedBatch(context, bvh)),
       nodes(context, "BVH nodes", stableTexelBufferBytes(paddedBytes(bvh.nodes)), kTexels, MemoryUse::Device),
       prims(context, "primitives", stableTexelBufferBytes(paddedBytes(bvh.prims)), kTexels, MemoryUse::Device),
-      instances(context, "instances", paddedBytes(bvh.instances), kStorage, MemoryUse::Device),
+      instances(context, "instances", stableTexelBufferBytes(paddedBytes(bvh.instances)), kTexels, MemoryUse::Device),
       frame(context, "frame parameters", sizeof(gpu::FrameParams),
             vk::BufferUsageFlagBits::eUniformBuffer | vk::BufferUsageFlagBits::eTransferDst, MemoryUse::Device),
       status(context, "render status", sizeof(gpu::RenderStatus), kStorage, MemoryUse::Shared),
@@ -144,27 +144,27 @@ GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& opt
     transfers.zero(status);
     nodeView = makeTexelView(context, nodes);
     primView = makeTexelView(context, prims);
+    instanceView = makeTexelView(context, instances);
     rayView = makeTexelView(context, rays);
     hitView = makeTexelView(context, hits);
 
-    const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eStorageTexelBuffer, 4),
-                              vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 2),
+    const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eStorageTexelBuffer, 5),
+                              vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 1),
                               vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, 1)};
     pool = vk::raii::DescriptorPool(context.device(),
                                     vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, sizes));
     const vk::DescriptorSetLayout setLayout = layout.setLayout();
     set = std::move(vk::raii::DescriptorSets(context.device(), vk::DescriptorSetAllocateInfo(*pool, setLayout)).front());
 
-    const vk::BufferView views[] = {*nodeView, *primView, *rayView, *hitView};
-    const vk::DescriptorBufferInfo infos[] = {{instances.handle(), 0, VK_WHOLE_SIZE}, {frame.handle(), 0, VK_WHOLE_SIZE},
-                                              {status.handle(), 0, VK_WHOLE_SIZE}};
+    const vk::BufferView views[] = {*nodeView, *primView, *rayView, *hitView, *instanceView};
+    const vk::DescriptorBufferInfo infos[] = {{frame.handle(), 0, VK_WHOLE_SIZE}, {status.handle(), 0, VK_WHOLE_SIZE}};
     using T = vk::DescriptorType;
     const std::array writes = {
         vk::WriteDescriptorSet(*set, gpu::BINDING_NODES, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &views[0]),
         vk::WriteDescriptorSet(*set, gpu::BINDING_PRIMS, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &views[1]),
-        vk::WriteDescriptorSet(*set, gpu::BINDING_INSTANCES, 0, 1, T::eStorageBuffer, nullptr, &infos[0]),
-        vk::WriteDescriptorSet(*set, gpu::BINDING_FRAME, 0, 1, T::eUniformBuffer, nullptr, &infos[1]),
-        vk::WriteDescriptorSet(*set, gpu::BINDING_STATUS, 0, 1, T::eStorageBuffer, nullptr, &infos[2]),
+        vk::WriteDescriptorSet(*set, gpu::BINDING_INSTANCES, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &views[4]),
+        vk::WriteDescriptorSet(*set, gpu::BINDING_FRAME, 0, 1, T::eUniformBuffer, nullptr, &infos[0]),
+        vk::WriteDescriptorSet(*set, gpu::BINDING_STATUS, 0, 1, T::eStorageBuffer, nullptr, &infos[1]),
         vk::WriteDescriptorSet(*set, gpu::BINDING_RAYS, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &views[2]),
         vk::WriteDescriptorSet(*set, gpu::BINDING_HITS, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &views[3]),
     };

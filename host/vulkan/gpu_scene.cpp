@@ -39,12 +39,14 @@ std::vector<BufferPlan> planSceneBuffers(const SceneTables& tables, const bvh::S
     std::vector<BufferPlan> plan(gpu::BINDING_STATUS + 1);
     plan[gpu::BINDING_NODES] = {"BVH nodes", BufferKind::StorageTexel, stableTexelBufferBytes(bytesOf(bvh.nodes))};
     plan[gpu::BINDING_PRIMS] = {"primitives", BufferKind::StorageTexel, stableTexelBufferBytes(bytesOf(bvh.prims))};
-    plan[gpu::BINDING_PRIM_INFO] = {"primitive info", BufferKind::Storage, bytesOf(tables.primInfos)};
-    plan[gpu::BINDING_VERTEX_ATTRIBS] = {"vertex attributes", BufferKind::Storage, bytesOf(tables.vertexAttribs)};
-    plan[gpu::BINDING_INSTANCES] = {"instances", BufferKind::Storage, bytesOf(bvh.instances)};
-    plan[gpu::BINDING_SHADERS] = {"materials", BufferKind::Storage, bytesOf(tables.materials)};
-    plan[gpu::BINDING_LIGHTS] = {"lights", BufferKind::Storage, bytesOf(tables.lights)};
-    plan[gpu::BINDING_TEXTURES] = {"texture info", BufferKind::Storage, bytesOf(tables.textures)};
+    // Texel buffers are sized past the lengths that change lavapipe's JIT key (buffer.h).
+    auto texels = [](std::uint64_t bytes) { return stableTexelBufferBytes(bytes); };
+    plan[gpu::BINDING_PRIM_INFO] = {"primitive info", BufferKind::StorageTexel, texels(bytesOf(tables.primInfos))};
+    plan[gpu::BINDING_VERTEX_ATTRIBS] = {"vertex attributes", BufferKind::StorageTexel, texels(bytesOf(tables.vertexAttribs))};
+    plan[gpu::BINDING_INSTANCES] = {"instances", BufferKind::StorageTexel, texels(bytesOf(bvh.instances))};
+    plan[gpu::BINDING_SHADERS] = {"materials", BufferKind::StorageTexel, texels(bytesOf(tables.materials))};
+    plan[gpu::BINDING_LIGHTS] = {"lights", BufferKind::StorageTexel, texels(bytesOf(tables.lights))};
+    plan[gpu::BINDING_TEXTURES] = {"texture info", BufferKind::StorageTexel, texels(bytesOf(tables.textures))};
     plan[gpu::BINDING_TEXELS] = {"texels", BufferKind::Storage, bytesOf(tables.texels)};
     plan[gpu::BINDING_FRAME] = {"frame parameters", BufferKind::Uniform, sizeof(gpu::FrameParams)};
     plan[gpu::BINDING_ACCUM] = {"accumulation (one vec4 per pixel)", BufferKind::Storage, std::max<std::uint64_t>(1, pixels) * sizeof(glm::vec4)};
@@ -90,11 +92,20 @@ GpuScene::GpuScene(const Context& context, Transfers& transfers, const KernelLay
     transfers.zero(buffers_[gpu::BINDING_ACCUM]);
     transfers.zero(buffers_[gpu::BINDING_STATUS]);
 
-    views_.push_back(makeTexelView(context, buffers_[gpu::BINDING_NODES]));
-    views_.push_back(makeTexelView(context, buffers_[gpu::BINDING_PRIMS]));
+    std::uint32_t texelBindings = 0, storageBindings = 0;
+    views_.reserve(plan.size());
+    for (std::size_t binding = 0; binding < plan.size(); ++binding) {
+        views_.emplace_back(nullptr);
+        if (plan[binding].kind == BufferKind::StorageTexel) {
+            views_[binding] = makeTexelView(context, buffers_[binding]);
+            ++texelBindings;
+        } else if (plan[binding].kind == BufferKind::Storage) {
+            ++storageBindings;
+        }
+    }
 
-    const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eStorageTexelBuffer, 2),
-                              vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 9),
+    const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eStorageTexelBuffer, texelBindings),
+                              vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, storageBindings),
                               vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, 1)};
     pool_ = vk::raii::DescriptorPool(context.device(),
                                      vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, sizes));
@@ -103,12 +114,13 @@ GpuScene::GpuScene(const Context& context, Transfers& transfers, const KernelLay
 
     std::vector<vk::DescriptorBufferInfo> infos(plan.size());
     std::vector<vk::WriteDescriptorSet> writes;
-    const vk::BufferView texelViews[] = {*views_[0], *views_[1]};
+    std::vector<vk::BufferView> texelViews(plan.size());
     for (std::uint32_t binding = 0; binding < plan.size(); ++binding) {
         vk::WriteDescriptorSet write(*set_, binding, 0, 1, vk::DescriptorType::eStorageBuffer);
         if (plan[binding].kind == BufferKind::StorageTexel) {
+            texelViews[binding] = *views_[binding];
             write.descriptorType = vk::DescriptorType::eStorageTexelBuffer;
-            write.pTexelBufferView = &texelViews[binding == gpu::BINDING_NODES ? 0 : 1];
+            write.pTexelBufferView = &texelViews[binding];
         } else {
             if (plan[binding].kind == BufferKind::Uniform) write.descriptorType = vk::DescriptorType::eUniformBuffer;
             infos[binding] = vk::DescriptorBufferInfo(buffers_[binding].handle(), 0, VK_WHOLE_SIZE);

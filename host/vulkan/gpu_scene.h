@@ -47,7 +47,7 @@ public:
 
 private:
     std::vector<Buffer> buffers_;  // indexed by binding
-    std::vector<vk::raii::BufferView> views_;  // nodes, primitives
+    std::vector<vk::raii::BufferView> views_;  // indexed by binding: the texel buffers' views, else null
     vk::raii::DescriptorPool pool_ = nullptr;
     vk::raii::DescriptorSet set_ = nullptr;
     std::uint64_t bytes_ = 0;

@@ -31,12 +31,14 @@ using ivec4 = glm::ivec4;
 // Descriptor set 0 bindings.
 VKRT_CONST uint BINDING_NODES = 0;         // readonly uimageBuffer RGBA32UI, BVH_NODE_TEXELS texels per node
 VKRT_CONST uint BINDING_PRIMS = 1;         // readonly uimageBuffer RGBA32UI, PRIM_TEXELS texels per primitive
-VKRT_CONST uint BINDING_PRIM_INFO = 2;     // SSBO PrimInfo[], parallel to the primitive array
-VKRT_CONST uint BINDING_VERTEX_ATTRIBS = 3;// SSBO VertexAttrib[] (mesh normals and uvs)
-VKRT_CONST uint BINDING_INSTANCES = 4;     // SSBO Instance[]
-VKRT_CONST uint BINDING_SHADERS = 5;       // SSBO Material[]
-VKRT_CONST uint BINDING_LIGHTS = 6;        // SSBO Light[]
-VKRT_CONST uint BINDING_TEXTURES = 7;      // SSBO TextureInfo[]
+// The read-only tables below are RGBA32UI texel buffers too (uimageBuffer): each struct is its
+// vec4/uvec4 members in order, one texel each (the *_TEXELS counts, pinned by static_asserts).
+VKRT_CONST uint BINDING_PRIM_INFO = 2;     // PrimInfo[], parallel to the primitive array
+VKRT_CONST uint BINDING_VERTEX_ATTRIBS = 3;// VertexAttrib[] (mesh normals and uvs)
+VKRT_CONST uint BINDING_INSTANCES = 4;     // Instance[]
+VKRT_CONST uint BINDING_SHADERS = 5;       // Material[]
+VKRT_CONST uint BINDING_LIGHTS = 6;        // Light[]
+VKRT_CONST uint BINDING_TEXTURES = 7;      // TextureInfo[]
 VKRT_CONST uint BINDING_TEXELS = 8;        // SSBO uint[] (RGBA8 packed texels of all textures)
 VKRT_CONST uint BINDING_FRAME = 9;         // UBO FrameParams
 VKRT_CONST uint BINDING_ACCUM = 10;        // SSBO vec4[] per-pixel radiance sum (rgb), w unused
@@ -98,12 +100,14 @@ VKRT_CONST uint ATTRIB_NONE = 0xffffffffu;
 struct PrimInfo {
     uvec4 data;
 };
+VKRT_CONST uint PRIM_INFO_TEXELS = 1;
 
 // Mesh vertex attributes: normal.xyz + u, then v. 32 bytes.
 struct VertexAttrib {
     vec4 normalU;
     vec4 vPad;
 };
+VKRT_CONST uint VERTEX_ATTRIB_TEXELS = 2;
 
 // ---------------------------------------------------------------------------------------------
 // Instance: one bottom-level BVH placed by an affine transform. 160 bytes.
@@ -117,6 +121,8 @@ struct Instance {
     uvec4 info;             // x: root node of the bottom-level BVH, y: material override or
                             // MATERIAL_NONE, z: geometry group, w: unused
 };
+VKRT_CONST uint INSTANCE_TEXELS = 10;     // worldToObject rows at texels 0-2, objectToWorld 3-5, normalToWorld 6-8
+VKRT_CONST uint INSTANCE_INFO_TEXEL = 9;
 
 // ---------------------------------------------------------------------------------------------
 // Material (the format's <shader>). 80 bytes.
@@ -135,6 +141,7 @@ struct Material {
     vec4 params;       // x = mirrorCoef, y = roughness, z, w unused
     uvec4 ids;         // x = SHADER_* type, y = diffuse texture, z = specular texture, w unused
 };
+VKRT_CONST uint MATERIAL_TEXELS = 5;
 
 // ---------------------------------------------------------------------------------------------
 // Light. 80 bytes. A point light has zero edges; an area light is the rectangle
@@ -148,12 +155,14 @@ struct Light {
     vec4 edgeV;      // xyz: length * bitangent
     uvec4 info;      // x: LIGHT_* type, y: area-light ordinal (sampling dimension), z, w unused
 };
+VKRT_CONST uint LIGHT_TEXELS = 5;
 
 // Texture: texels[offset .. offset + width*height), row 0 = top row of the image, RGBA8 packed
 // little-endian (r in the low byte), values used linearly (no sRGB decode, like the course).
 struct TextureInfo {
     uvec4 info;  // x: offset, y: width, z: height, w: unused
 };
+VKRT_CONST uint TEXTURE_INFO_TEXELS = 1;
 
 // ---------------------------------------------------------------------------------------------
 // Per-render constants (UBO, std140-compatible because every member is a 16-byte vector).
@@ -238,13 +247,14 @@ VKRT_CONST uint LOOP_BUDGET = 60000u;
 #ifdef __cplusplus
 static_assert(sizeof(BvhNode) == 64);
 static_assert(sizeof(Primitive) == 48);
-static_assert(sizeof(PrimInfo) == 16);
-static_assert(sizeof(VertexAttrib) == 32);
-static_assert(sizeof(Instance) == 160);
+static_assert(sizeof(PrimInfo) == 16 * PRIM_INFO_TEXELS);
+static_assert(sizeof(VertexAttrib) == 16 * VERTEX_ATTRIB_TEXELS);
+static_assert(sizeof(Instance) == 16 * INSTANCE_TEXELS);
+static_assert(offsetof(Instance, info) == 16 * INSTANCE_INFO_TEXEL);
 static_assert(offsetof(Instance, info) == 144);
-static_assert(sizeof(Material) == 80);
-static_assert(sizeof(Light) == 80);
-static_assert(sizeof(TextureInfo) == 16);
+static_assert(sizeof(Material) == 16 * MATERIAL_TEXELS);
+static_assert(sizeof(Light) == 16 * LIGHT_TEXELS);
+static_assert(sizeof(TextureInfo) == 16 * TEXTURE_INFO_TEXELS);
 static_assert(sizeof(FrameParams) == 176);
 static_assert(sizeof(RenderStatus) == 16);
 static_assert(sizeof(PassParams) == 32);

@@ -132,7 +132,9 @@ TEST(SceneBuffers, PlanPadsEmptyTablesToOneElement) {
     SceneTables tables;  // all empty
     const std::vector<BufferPlan> plan = planSceneBuffers(tables, tiny.accel.bvh, 10);
     ASSERT_EQ(plan.size(), gpu::BINDING_STATUS + 1u);
-    EXPECT_EQ(plan[gpu::BINDING_SHADERS].bytes, sizeof(gpu::Material));
+    // One zeroed element, then the texel-buffer padding that keeps lavapipe's JIT key stable.
+    EXPECT_EQ(plan[gpu::BINDING_SHADERS].bytes, stableTexelBufferBytes(sizeof(gpu::Material)));
+    EXPECT_EQ(plan[gpu::BINDING_SHADERS].kind, BufferKind::StorageTexel);
     EXPECT_EQ(plan[gpu::BINDING_TEXELS].bytes, 4u);
     EXPECT_EQ(plan[gpu::BINDING_NODES].bytes, stableTexelBufferBytes(2 * sizeof(gpu::BvhNode)));
     EXPECT_EQ(plan[gpu::BINDING_NODES].kind, BufferKind::StorageTexel);

@@ -20,8 +20,8 @@ layout(constant_id = SPEC_PATH_STACK_SIZE) const uint PATH_STACK_SIZE = 99u;
 
 layout(set = 0, binding = BINDING_NODES, rgba32ui) uniform readonly uimageBuffer bvhNodes;
 layout(set = 0, binding = BINDING_PRIMS, rgba32ui) uniform readonly uimageBuffer primitives;
-layout(std430, set = 0, binding = BINDING_SHADERS) readonly buffer MaterialBuffer { Material materials[]; };
-layout(std430, set = 0, binding = BINDING_LIGHTS) readonly buffer LightBuffer { Light lights[]; };
+layout(set = 0, binding = BINDING_SHADERS, rgba32ui) uniform readonly uimageBuffer materialTexels;
+layout(set = 0, binding = BINDING_LIGHTS, rgba32ui) uniform readonly uimageBuffer lightTexels;
 layout(std140, set = 0, binding = BINDING_FRAME) uniform FrameBuffer { FrameParams frame; };
 layout(std430, set = 0, binding = BINDING_ACCUM) buffer AccumBuffer { vec4 accum[]; };
 layout(std430, set = 0, binding = BINDING_STATUS) coherent buffer StatusBuffer { RenderStatus status; };
