@@ -29,7 +29,7 @@ layout(set = 0, binding = BINDING_INSTANCES, rgba32ui) uniform readonly uimageBu
 layout(set = 0, binding = BINDING_SHADERS, rgba32ui) uniform readonly uimageBuffer materialTexels;
 layout(set = 0, binding = BINDING_LIGHTS, rgba32ui) uniform readonly uimageBuffer lightTexels;
 layout(set = 0, binding = BINDING_TEXTURES, rgba32ui) uniform readonly uimageBuffer textureInfoTexels;
-layout(std430, set = 0, binding = BINDING_TEXELS) readonly buffer TexelBuffer { uint texels[]; };
+layout(set = 0, binding = BINDING_TEXELS, r32ui) uniform readonly uimageBuffer textureTexels;
 layout(std140, set = 0, binding = BINDING_FRAME) uniform FrameBuffer { FrameParams frame; };
 layout(std430, set = 0, binding = BINDING_ACCUM) buffer AccumBuffer { vec4 accum[]; };
 layout(std430, set = 0, binding = BINDING_STATUS) coherent buffer StatusBuffer { RenderStatus status; };

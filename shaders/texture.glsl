@@ -4,7 +4,7 @@
 #define VKRT_TEXTURE_GLSL
 
 vec3 texelColor(uint offset, int width, int x, int y) {
-    uint packed = texels[offset + uint(y * width + x)];
+    uint packed = imageLoad(textureTexels, int(offset + uint(y * width + x))).x;
     return vec3(float(packed & 0xffu), float((packed >> 8u) & 0xffu), float((packed >> 16u) & 0xffu)) * (1.0 / 255.0);
 }
 

@@ -66,8 +66,9 @@ Buffer::Buffer(const Context& context, std::string name, vk::DeviceSize size, vk
     if (choice.map) mapped_ = static_cast<std::byte*>(memory_.mapMemory(0, VK_WHOLE_SIZE));
 }
 
-vk::raii::BufferView makeTexelView(const Context& context, const Buffer& buffer) {
-    vk::BufferViewCreateInfo info({}, buffer.handle(), vk::Format::eR32G32B32A32Uint, 0, VK_WHOLE_SIZE);
+vk::raii::BufferView makeTexelView(const Context& context, const Buffer& buffer, std::uint64_t texelBytes) {
+    const vk::Format format = texelBytes == 4 ? vk::Format::eR32Uint : vk::Format::eR32G32B32A32Uint;
+    vk::BufferViewCreateInfo info({}, buffer.handle(), format, 0, VK_WHOLE_SIZE);
     return vk::raii::BufferView(context.device(), info);
 }
 

@@ -40,8 +40,9 @@ private:
     std::byte* mapped_ = nullptr;
 };
 
-// A typed view of a buffer for `uimageBuffer` (RGBA32UI texels) imageLoad reads.
-vk::raii::BufferView makeTexelView(const Context& context, const Buffer& buffer);
+// A typed view of a buffer for `uimageBuffer` imageLoad reads: RGBA32UI texels (16 bytes), or
+// R32UI (4 bytes, the packed RGBA8 texture texels).
+vk::raii::BufferView makeTexelView(const Context& context, const Buffer& buffer, std::uint64_t texelBytes = 16);
 
 // The size to give a texel buffer of `bytes` (a multiple of 16): a few zero texels more, so
 // that lavapipe compiles a kernel once per process instead of once per scene. llvmpipe (Mesa

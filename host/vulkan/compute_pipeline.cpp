@@ -55,7 +55,7 @@ KernelLayout renderLayout(const Context& context) {
         computeBinding(gpu::BINDING_PRIM_INFO, T::eStorageTexelBuffer), computeBinding(gpu::BINDING_VERTEX_ATTRIBS, T::eStorageTexelBuffer),
         computeBinding(gpu::BINDING_INSTANCES, T::eStorageTexelBuffer), computeBinding(gpu::BINDING_SHADERS, T::eStorageTexelBuffer),
         computeBinding(gpu::BINDING_LIGHTS, T::eStorageTexelBuffer),    computeBinding(gpu::BINDING_TEXTURES, T::eStorageTexelBuffer),
-        computeBinding(gpu::BINDING_TEXELS, T::eStorageBuffer),      computeBinding(gpu::BINDING_FRAME, T::eUniformBuffer),
+        computeBinding(gpu::BINDING_TEXELS, T::eStorageTexelBuffer),      computeBinding(gpu::BINDING_FRAME, T::eUniformBuffer),
         computeBinding(gpu::BINDING_ACCUM, T::eStorageBuffer),       computeBinding(gpu::BINDING_STATUS, T::eStorageBuffer),
     };
     return KernelLayout(context, bindings, sizeof(gpu::PassParams));

@@ -47,7 +47,7 @@ std::vector<BufferPlan> planSceneBuffers(const SceneTables& tables, const bvh::S
     plan[gpu::BINDING_SHADERS] = {"materials", BufferKind::StorageTexel, texels(bytesOf(tables.materials))};
     plan[gpu::BINDING_LIGHTS] = {"lights", BufferKind::StorageTexel, texels(bytesOf(tables.lights))};
     plan[gpu::BINDING_TEXTURES] = {"texture info", BufferKind::StorageTexel, texels(bytesOf(tables.textures))};
-    plan[gpu::BINDING_TEXELS] = {"texels", BufferKind::Storage, bytesOf(tables.texels)};
+    plan[gpu::BINDING_TEXELS] = {"texels", BufferKind::StorageTexel, texels(bytesOf(tables.texels)), 4};
     plan[gpu::BINDING_FRAME] = {"frame parameters", BufferKind::Uniform, sizeof(gpu::FrameParams)};
     plan[gpu::BINDING_ACCUM] = {"accumulation (one vec4 per pixel)", BufferKind::Storage, std::max<std::uint64_t>(1, pixels) * sizeof(glm::vec4)};
     plan[gpu::BINDING_STATUS] = {"render status", BufferKind::Storage, sizeof(gpu::RenderStatus)};
@@ -57,7 +57,7 @@ std::vector<BufferPlan> planSceneBuffers(const SceneTables& tables, const bvh::S
 void checkSceneBuffers(const BufferLimits& limits, const std::vector<BufferPlan>& plan) {
     std::uint64_t total = 0;
     for (const BufferPlan& p : plan) {
-        checkBufferFits(limits, p.name, p.kind, p.bytes);
+        checkBufferFits(limits, p.name, p.kind, p.bytes, p.texelBytes);
         total += p.bytes;
     }
     checkTotalFits(limits, total);
@@ -97,7 +97,7 @@ GpuScene::GpuScene(const Context& context, Transfers& transfers, const KernelLay
     for (std::size_t binding = 0; binding < plan.size(); ++binding) {
         views_.emplace_back(nullptr);
         if (plan[binding].kind == BufferKind::StorageTexel) {
-            views_[binding] = makeTexelView(context, buffers_[binding]);
+            views_[binding] = makeTexelView(context, buffers_[binding], plan[binding].texelBytes);
             ++texelBindings;
         } else if (plan[binding].kind == BufferKind::Storage) {
             ++storageBindings;

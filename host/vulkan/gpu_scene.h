@@ -25,6 +25,7 @@ struct BufferPlan {
     std::string name;
     BufferKind kind;
     std::uint64_t bytes;
+    std::uint64_t texelBytes = 16;  // StorageTexel only: RGBA32UI (16) or R32UI (4)
 };
 
 // The buffers a render needs, in binding order; empty tables get one zeroed element because

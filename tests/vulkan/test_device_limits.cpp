@@ -135,7 +135,8 @@ TEST(SceneBuffers, PlanPadsEmptyTablesToOneElement) {
     // One zeroed element, then the texel-buffer padding that keeps lavapipe's JIT key stable.
     EXPECT_EQ(plan[gpu::BINDING_SHADERS].bytes, stableTexelBufferBytes(sizeof(gpu::Material)));
     EXPECT_EQ(plan[gpu::BINDING_SHADERS].kind, BufferKind::StorageTexel);
-    EXPECT_EQ(plan[gpu::BINDING_TEXELS].bytes, 4u);
+    EXPECT_EQ(plan[gpu::BINDING_TEXELS].bytes, stableTexelBufferBytes(4));
+    EXPECT_EQ(plan[gpu::BINDING_TEXELS].texelBytes, 4u);
     EXPECT_EQ(plan[gpu::BINDING_NODES].bytes, stableTexelBufferBytes(2 * sizeof(gpu::BvhNode)));
     EXPECT_EQ(plan[gpu::BINDING_NODES].kind, BufferKind::StorageTexel);
     EXPECT_EQ(plan[gpu::BINDING_ACCUM].bytes, 10 * 16u);
