@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "node_layout.h"
+#include "prefault.h"
 
 namespace vkrt::bvh {
 
@@ -92,6 +93,7 @@ FlattenResult flatten(const BuildTree& tree, const LeafLink& leafLink, const Sah
             blocks.push_back({tree.subtreeRoots[i], tree.subtreeInnerNodes[i]});
             total += tree.subtreeInnerNodes[i];
         }
+    prefaultCapacity(out, out.size() + total, pool);
     out.resize(out.size() + total);
     std::vector<std::pair<std::uint32_t, int>> blockIndex;  // (build root, block), sorted
     for (std::size_t i = 0; i < blocks.size(); ++i) blockIndex.push_back({blocks[i].buildRoot, static_cast<int>(i)});

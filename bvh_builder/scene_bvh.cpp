@@ -9,6 +9,7 @@
 
 #include "bvh.h"
 #include "flatten.h"
+#include "prefault.h"
 #include "primitives.h"
 #include "sah_builder.h"
 #include "top_level.h"
@@ -123,6 +124,8 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
     SceneBvh bvh;
     reserveHuge(bvh.prims, totalPrims);
     reserveHuge(bvh.primSource, totalPrims);
+    prefaultCapacity(bvh.prims, totalPrims, pool);
+    prefaultCapacity(bvh.primSource, totalPrims, pool);
     bvh.prims.resize(totalPrims);
     bvh.primSource.resize(totalPrims);
     std::vector<std::uint32_t> firstPrims(groups.size());
