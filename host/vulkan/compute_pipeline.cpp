@@ -51,12 +51,18 @@ KernelLayout::KernelLayout(const Context& context, std::span<const vk::Descripto
 KernelLayout renderLayout(const Context& context) {
     using T = vk::DescriptorType;
     const std::array bindings = {
-        computeBinding(gpu::BINDING_NODES, T::eStorageTexelBuffer),  computeBinding(gpu::BINDING_PRIMS, T::eStorageTexelBuffer),
-        computeBinding(gpu::BINDING_PRIM_INFO, T::eStorageTexelBuffer), computeBinding(gpu::BINDING_VERTEX_ATTRIBS, T::eStorageTexelBuffer),
-        computeBinding(gpu::BINDING_INSTANCES, T::eStorageTexelBuffer), computeBinding(gpu::BINDING_SHADERS, T::eStorageTexelBuffer),
-        computeBinding(gpu::BINDING_LIGHTS, T::eStorageTexelBuffer),    computeBinding(gpu::BINDING_TEXTURES, T::eStorageTexelBuffer),
-        computeBinding(gpu::BINDING_TEXELS, T::eStorageTexelBuffer),      computeBinding(gpu::BINDING_FRAME, T::eUniformBuffer),
-        computeBinding(gpu::BINDING_ACCUM, T::eStorageBuffer),       computeBinding(gpu::BINDING_STATUS, T::eStorageBuffer),
+        computeBinding(gpu::BINDING_NODES, T::eStorageTexelBuffer),
+        computeBinding(gpu::BINDING_PRIMS, T::eStorageTexelBuffer),
+        computeBinding(gpu::BINDING_PRIM_INFO, T::eStorageTexelBuffer),
+        computeBinding(gpu::BINDING_VERTEX_ATTRIBS, T::eStorageTexelBuffer),
+        computeBinding(gpu::BINDING_INSTANCES, T::eStorageTexelBuffer),
+        computeBinding(gpu::BINDING_SHADERS, T::eStorageTexelBuffer),
+        computeBinding(gpu::BINDING_LIGHTS, T::eStorageTexelBuffer),
+        computeBinding(gpu::BINDING_TEXTURES, T::eStorageTexelBuffer),
+        computeBinding(gpu::BINDING_TEXELS, T::eStorageTexelBuffer),
+        computeBinding(gpu::BINDING_FRAME, T::eUniformBuffer),
+        computeBinding(gpu::BINDING_ACCUM, T::eStorageBuffer),
+        computeBinding(gpu::BINDING_STATUS, T::eStorageBuffer),
     };
     return KernelLayout(context, bindings, sizeof(gpu::PassParams));
 }
@@ -64,9 +70,12 @@ KernelLayout renderLayout(const Context& context) {
 KernelLayout traceLayout(const Context& context) {
     using T = vk::DescriptorType;
     const std::array bindings = {
-        computeBinding(gpu::BINDING_NODES, T::eStorageTexelBuffer), computeBinding(gpu::BINDING_PRIMS, T::eStorageTexelBuffer),
-        computeBinding(gpu::BINDING_INSTANCES, T::eStorageTexelBuffer), computeBinding(gpu::BINDING_FRAME, T::eUniformBuffer),
-        computeBinding(gpu::BINDING_STATUS, T::eStorageBuffer),     computeBinding(gpu::BINDING_RAYS, T::eStorageTexelBuffer),
+        computeBinding(gpu::BINDING_NODES, T::eStorageTexelBuffer),
+        computeBinding(gpu::BINDING_PRIMS, T::eStorageTexelBuffer),
+        computeBinding(gpu::BINDING_INSTANCES, T::eStorageTexelBuffer),
+        computeBinding(gpu::BINDING_FRAME, T::eUniformBuffer),
+        computeBinding(gpu::BINDING_STATUS, T::eStorageBuffer),
+        computeBinding(gpu::BINDING_RAYS, T::eStorageTexelBuffer),
         computeBinding(gpu::BINDING_HITS, T::eStorageTexelBuffer),
     };
     return KernelLayout(context, bindings, sizeof(gpu::TraceParams));

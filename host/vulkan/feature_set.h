@@ -39,7 +39,7 @@ struct FeatureSet {
 
 // Whether traversal must walk the top level: anything but one identity instance. With one
 // identity instance the kernel starts at that instance's bottom-level root in world space,
-// which skips the per-ray instance transform (a per-lane SSBO read on lavapipe).
+// which skips the per-ray instance transform and the top-level nodes.
 bool needsTopLevel(const bvh::SceneBvh& bvh);
 
 // The features the scene's shapes, instances, shaders and lights actually use.

@@ -115,8 +115,8 @@ std::uint32_t checkedBatch(const Context& context, const bvh::SceneBvh& bvh) {
     checkBufferFits(limits, "instances", BufferKind::StorageTexel, stableTexelBufferBytes(paddedBytes(bvh.instances)));
     checkBufferFits(limits, "rays", BufferKind::StorageTexel, rayBytes(batch));
     checkBufferFits(limits, "hits", BufferKind::StorageTexel, hitBytes(batch));
-    checkTotalFits(limits, paddedBytes(bvh.nodes) + paddedBytes(bvh.prims) + paddedBytes(bvh.instances) +
-                               std::uint64_t{batch} * (sizeof(gpu::TraceRayInput) + sizeof(gpu::TraceHitOutput)));
+    checkTotalFits(limits, stableTexelBufferBytes(paddedBytes(bvh.nodes)) + stableTexelBufferBytes(paddedBytes(bvh.prims)) +
+                               stableTexelBufferBytes(paddedBytes(bvh.instances)) + rayBytes(batch) + hitBytes(batch));
     checkTraversalStack(bvh, needsTopLevel(bvh));
     return batch;
 }
@@ -156,17 +156,17 @@ GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& opt
     const vk::DescriptorSetLayout setLayout = layout.setLayout();
     set = std::move(vk::raii::DescriptorSets(context.device(), vk::DescriptorSetAllocateInfo(*pool, setLayout)).front());
 
-    const vk::BufferView views[] = {*nodeView, *primView, *rayView, *hitView, *instanceView};
+    const vk::BufferView views[] = {*nodeView, *primView, *instanceView, *rayView, *hitView};
     const vk::DescriptorBufferInfo infos[] = {{frame.handle(), 0, VK_WHOLE_SIZE}, {status.handle(), 0, VK_WHOLE_SIZE}};
     using T = vk::DescriptorType;
     const std::array writes = {
         vk::WriteDescriptorSet(*set, gpu::BINDING_NODES, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &views[0]),
         vk::WriteDescriptorSet(*set, gpu::BINDING_PRIMS, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &views[1]),
-        vk::WriteDescriptorSet(*set, gpu::BINDING_INSTANCES, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &views[4]),
+        vk::WriteDescriptorSet(*set, gpu::BINDING_INSTANCES, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &views[2]),
         vk::WriteDescriptorSet(*set, gpu::BINDING_FRAME, 0, 1, T::eUniformBuffer, nullptr, &infos[0]),
         vk::WriteDescriptorSet(*set, gpu::BINDING_STATUS, 0, 1, T::eStorageBuffer, nullptr, &infos[1]),
-        vk::WriteDescriptorSet(*set, gpu::BINDING_RAYS, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &views[2]),
-        vk::WriteDescriptorSet(*set, gpu::BINDING_HITS, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &views[3]),
+        vk::WriteDescriptorSet(*set, gpu::BINDING_RAYS, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &views[3]),
+        vk::WriteDescriptorSet(*set, gpu::BINDING_HITS, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &views[4]),
     };
     context.device().updateDescriptorSets(writes, {});
 }
