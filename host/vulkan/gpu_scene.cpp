@@ -37,10 +37,11 @@ vk::BufferUsageFlags usageOf(BufferKind kind) {
 
 std::vector<BufferPlan> planSceneBuffers(const SceneTables& tables, const bvh::SceneBvh& bvh, std::uint64_t pixels) {
     std::vector<BufferPlan> plan(gpu::BINDING_STATUS + 1);
-    plan[gpu::BINDING_NODES] = {"BVH nodes", BufferKind::StorageTexel, stableTexelBufferBytes(bytesOf(bvh.nodes))};
-    plan[gpu::BINDING_PRIMS] = {"primitives", BufferKind::StorageTexel, stableTexelBufferBytes(bytesOf(bvh.prims))};
-    // Texel buffers are sized past the lengths that change lavapipe's JIT key (buffer.h).
+    // Every table the kernel reads is a texel buffer, sized past the lengths that change lavapipe's
+    // JIT key (stableTexelBufferBytes, buffer.h).
     auto texels = [](std::uint64_t bytes) { return stableTexelBufferBytes(bytes); };
+    plan[gpu::BINDING_NODES] = {"BVH nodes", BufferKind::StorageTexel, texels(bytesOf(bvh.nodes))};
+    plan[gpu::BINDING_PRIMS] = {"primitives", BufferKind::StorageTexel, texels(bytesOf(bvh.prims))};
     plan[gpu::BINDING_PRIM_INFO] = {"primitive info", BufferKind::StorageTexel, texels(bytesOf(tables.primInfos))};
     plan[gpu::BINDING_VERTEX_ATTRIBS] = {"vertex attributes", BufferKind::StorageTexel, texels(bytesOf(tables.vertexAttribs))};
     plan[gpu::BINDING_INSTANCES] = {"instances", BufferKind::StorageTexel, texels(bytesOf(bvh.instances))};
