@@ -41,15 +41,21 @@ TEST(Determinism, ThreadCountDoesNotChangeTheResult) {
     }
 }
 
+// A triangle soup and a group of spheres and boxes, each placed by a random instance.
+TestScene meshBesideShapes(unsigned seed, std::size_t triangles, std::size_t shapes) {
+    std::mt19937 rng(seed);
+    TestScene scene;
+    scene.groups.push_back(randomTriangles(rng, triangles, 50.0f, 0.5f));
+    scene.groups.push_back(randomSpheresAndBoxes(rng, shapes, 10.0f, 0.5f));
+    for (std::uint32_t g = 0; g < scene.groups.size(); ++g)
+        scene.instances.push_back({g, randomTransform(rng, 50.0f, g == 0), gpu::MATERIAL_NONE});
+    return scene;
+}
+
 // A group below 32K primitives holding most of the scene is built with the whole pool (its top
 // phase splits ranges above 8K references across threads); small groups beside it are not.
 TEST(Determinism, MidSizedGroupHoldingMostOfTheSceneDoesNotDependOnThreads) {
-    std::mt19937 rng(5);
-    TestScene scene;
-    scene.groups.push_back(randomTriangles(rng, 20000, 50.0f, 0.5f));
-    scene.groups.push_back(randomSpheresAndBoxes(rng, 3000, 10.0f, 0.5f));
-    for (std::uint32_t g = 0; g < scene.groups.size(); ++g)
-        scene.instances.push_back({g, randomTransform(rng, 50.0f, g == 0), gpu::MATERIAL_NONE});
+    const TestScene scene = meshBesideShapes(5, 20000, 3000);
     BuildOptions options;
     options.threads = 1;
     const SceneBvh reference = buildSceneBvh(scene.groups, scene.instances, options);
@@ -65,12 +71,7 @@ TEST(Determinism, MidSizedGroupHoldingMostOfTheSceneDoesNotDependOnThreads) {
 // BuildOptions::cpuTraversal = false skips only the 4-wide copy: what the GPU path uploads is the
 // same, and CPU traversal of such a BVH fails loudly instead of reporting no hits.
 TEST(Determinism, SkippingTheCpuCopyLeavesTheGpuArraysUnchanged) {
-    std::mt19937 rng(8);
-    TestScene scene;
-    scene.groups.push_back(randomTriangles(rng, 40000, 50.0f, 0.5f));
-    scene.groups.push_back(randomSpheresAndBoxes(rng, 2000, 10.0f, 0.5f));
-    for (std::uint32_t g = 0; g < scene.groups.size(); ++g)
-        scene.instances.push_back({g, randomTransform(rng, 50.0f, g == 0), gpu::MATERIAL_NONE});
+    const TestScene scene = meshBesideShapes(8, 40000, 2000);
     BuildOptions options;
     options.threads = 2;
     const SceneBvh full = buildSceneBvh(scene.groups, scene.instances, options);
