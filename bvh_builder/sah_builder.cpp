@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -328,11 +329,20 @@ void Builder::partitionByBin(const Range& r, const BinMapper::Axis& map, int pla
     if (branchFree) {
         PrimRef* base = refs_.data() + r.begin;
         std::uint32_t l = 0;  // [0, l) go left, [l, i) go right
-        for (std::uint32_t i = 0; i < r.size(); ++i) {
-            const PrimRef x = base[i];
-            base[i] = base[l];
-            base[l] = x;
-            l += static_cast<std::uint32_t>(map(x) < plane);
+        const std::uint32_t n = r.size();
+        for (std::uint32_t i = 0; i < n; ++i) {
+            // Whole 32-byte moves (memcpy), the side read from the array: with x as a value the
+            // compiler spilled it to the stack to read its axis lane, and stored it into base[l]
+            // as two 16-byte halves that the next iteration's 32-byte load of base[l] (the same
+            // slot when x went right) could not be forwarded from: a stall per reference.
+            // Dragon, 2 threads, 25 builds per run, 4 alternating pairs: median build 4-5% faster.
+            const auto goesLeft = static_cast<std::uint32_t>(map(base[i]) < plane);
+            alignas(32) unsigned char x[sizeof(PrimRef)], front[sizeof(PrimRef)];
+            std::memcpy(x, base + i, sizeof x);
+            std::memcpy(front, base + l, sizeof front);
+            std::memcpy(base + i, front, sizeof front);
+            std::memcpy(base + l, x, sizeof x);
+            l += goesLeft;
         }
         childRanges(r, r.begin + l, left, right);
         return;
