@@ -1,9 +1,10 @@
 // Two-level BVH traversal: iterative, one fixed private stack (no recursion in GLSL).
 // Nodes hold both children's boxes (64 bytes, 4 texels), so each step decides both children
-// from one contiguous fetch. The loop alternates two inner loops ("while-while", Aila & Laine 2009):
-// walk (one step per pass: enter or leave an instance, or test one node's two children) until the
-// lane holds a bottom-level leaf, then intersect that leaf's primitives. A far leaf is pushed like
-// a node, as a packed entry (device_host.h, ENTRY_LEAF_BIT).
+// from one contiguous fetch. Each pass of the main loop walks inner nodes (an inner loop, one node's
+// two children per pass) until the lane holds something else, then handles it: intersects a
+// bottom-level leaf's primitives (a second inner loop: "while-while", Aila & Laine 2009), enters
+// an instance or leaves one. A far leaf is pushed like a node, as a packed entry (device_host.h,
+// ENTRY_LEAF_BIT).
 // Why two loops: lavapipe (Mesa 22.3) runs every statement of a loop body for all 8 lanes, masked,
 // whatever the branch conditions, and a loop body runs at least once (host/vulkan/README.md). A
 // leaf loop inside the walk's pass cost one full primitive test per pass even when no lane had a
@@ -11,6 +12,7 @@
 // runs, GPU/CPU rays/s): primary 0.61-0.74 -> 0.75-0.86, shadow 0.59-0.69 -> 0.74-1.00, diffuse
 // 0.48-0.66 -> 0.68-0.85 on sphere:64, dragon and sphere:512. Letting a lane that holds a leaf
 // walk on while the others look for theirs (speculative, subgroupAll to end the walk) was slower.
+// Instance steps moved out of the walk for the same reason: 400x400x16 pt_objects 4.2 -> 3.3 s.
 #ifndef VKRT_TRAVERSE_GLSL
 #define VKRT_TRAVERSE_GLSL
 
@@ -82,8 +84,8 @@ TraceRay rayIntoInstance(vec3 origin, vec3 dir, uint instance) {
     return makeTraceRay(o, d);
 }
 
-// A bottom-level leaf (instance entries and the leave marker also have bit 30 set).
-bool isLeafEntry(uint e) { return (e & (ENTRY_INSTANCE_BIT | ENTRY_LEAF_BIT)) == ENTRY_LEAF_BIT; }
+// An inner node's index (leaf entries, instance entries and the leave marker have bit 30 or 31 set).
+bool isNodeEntry(uint e) { return (e & (ENTRY_INSTANCE_BIT | ENTRY_LEAF_BIT)) == 0u; }
 
 // The stack entry for child K of a node: an inner node, a bottom-level leaf, or an instance.
 uint childEntry(uint link, uint count, bool inBottom) {
@@ -113,47 +115,34 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
 
     while (true) {
         if (!chargeLoop()) break;
-        // 1. Walk the tree until this lane holds a leaf (or has nothing left).
-        while (!finished && !isLeafEntry(entry)) {
+        // 1. Walk the tree until this lane holds a leaf, an instance to enter or leave, or has
+        // nothing left.
+        while (!finished && isNodeEntry(entry)) {
             if (!chargeLoop()) break;
             // The stack is touched only after the branches, by every lane: a push writes the free
             // slot stack[sp] whether or not it is needed, and the pop reads the top whether or not
             // it is needed. A private array indexed per lane costs a scalar access per lane; inside
             // a divergent branch each of those also tests the lane's mask and branches on it, which
             // mispredicts (measured: ~30% of the time).
-            uint pushed = ENTRY_NONE;
-            bool descend = false;
-            if (HAS_INSTANCES && entry == ENTRY_LEAVE_INSTANCE) {
-                ray = worldRay;
-                inBottom = false;
-            } else if (HAS_INSTANCES && (entry & ENTRY_INSTANCE_BIT) != 0u) {
-                instance = entry & ~ENTRY_INSTANCE_BIT;
-                ray = rayIntoInstance(origin, dir, instance);
-                inBottom = true;
-                pushed = ENTRY_LEAVE_INSTANCE;
-                entry = instanceInfo(instance).x;
-                descend = true;
-            } else {
-                int base = int(entry * BVH_NODE_TEXELS);
-                uvec4 xy0 = imageLoad(bvhNodes, base);
-                uvec4 xy1 = imageLoad(bvhNodes, base + 1);
-                uvec4 z01 = imageLoad(bvhNodes, base + 2);
-                uvec4 link = imageLoad(bvhNodes, base + 3);
-                vec4 fxy0 = uintBitsToFloat(xy0);
-                vec4 fxy1 = uintBitsToFloat(xy1);
-                vec4 fz = uintBitsToFloat(z01);
-                float tNear0, tNear1;
-                bool box0 = hitsBox(ray, vec3(fxy0.x, fxy0.z, fz.x), vec3(fxy0.y, fxy0.w, fz.y), hit.t, tNear0);
-                bool box1 = hitsBox(ray, vec3(fxy1.x, fxy1.z, fz.z), vec3(fxy1.y, fxy1.w, fz.w), hit.t, tNear1);
-                bool hit0 = box0 && (link.z != 0u || link.x != NODE_NONE);
-                bool hit1 = box1 && (link.w != 0u || link.y != NODE_NONE);
-                uint next0 = childEntry(link.x, link.z, inBottom);
-                uint next1 = childEntry(link.y, link.w, inBottom);
-                bool nearFirst = !(hit0 && hit1 && tNear1 < tNear0);
-                if (hit0 && hit1) pushed = nearFirst ? next1 : next0;
-                descend = hit0 || hit1;
-                entry = (hit0 && nearFirst) ? next0 : next1;
-            }
+            int base = int(entry * BVH_NODE_TEXELS);
+            uvec4 xy0 = imageLoad(bvhNodes, base);
+            uvec4 xy1 = imageLoad(bvhNodes, base + 1);
+            uvec4 z01 = imageLoad(bvhNodes, base + 2);
+            uvec4 link = imageLoad(bvhNodes, base + 3);
+            vec4 fxy0 = uintBitsToFloat(xy0);
+            vec4 fxy1 = uintBitsToFloat(xy1);
+            vec4 fz = uintBitsToFloat(z01);
+            float tNear0, tNear1;
+            bool box0 = hitsBox(ray, vec3(fxy0.x, fxy0.z, fz.x), vec3(fxy0.y, fxy0.w, fz.y), hit.t, tNear0);
+            bool box1 = hitsBox(ray, vec3(fxy1.x, fxy1.z, fz.z), vec3(fxy1.y, fxy1.w, fz.w), hit.t, tNear1);
+            bool hit0 = box0 && (link.z != 0u || link.x != NODE_NONE);
+            bool hit1 = box1 && (link.w != 0u || link.y != NODE_NONE);
+            uint next0 = childEntry(link.x, link.z, inBottom);
+            uint next1 = childEntry(link.y, link.w, inBottom);
+            bool nearFirst = !(hit0 && hit1 && tNear1 < tNear0);
+            uint pushed = (hit0 && hit1) ? (nearFirst ? next1 : next0) : ENTRY_NONE;
+            bool descend = hit0 || hit1;
+            entry = (hit0 && nearFirst) ? next0 : next1;
             stack[min(sp, TRAVERSAL_STACK_SIZE)] = pushed;
             if (pushed != ENTRY_NONE) {
                 if (sp >= TRAVERSAL_STACK_SIZE) {
@@ -169,25 +158,43 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
                 if (sp > 0u) --sp;
             }
         }
-        if (finished || !isLeafEntry(entry)) break;  // done, or cut off (checked below)
-        // 2. Intersect the leaf's primitives.
-        uint first = (entry & ~ENTRY_LEAF_BIT) >> 4u;
-        uint count = entry & 15u;
-        uint i = 0u;
-        for (; i < count; ++i) {
-            if (!chargeLoop()) break;
-            float t;
-            vec2 bary;
-            if (intersectPrimitive(ray, first + i, hit.t, t, bary)) {
-                hit.t = t;
-                hit.instance = instance;
-                hit.prim = first + i;
-                hit.bary = bary;
-                found = true;
-                if (anyHit) return true;
+        if (finished || overflow || isNodeEntry(entry)) break;  // done, or cut off (checked below)
+        // 2. Enter an instance (its root is walked next), leave one, or intersect a leaf. Instance
+        // steps are here rather than in the walk so that the walk's passes do not pay for them.
+        if (HAS_INSTANCES && entry == ENTRY_LEAVE_INSTANCE) {
+            ray = worldRay;
+            inBottom = false;
+        } else if (HAS_INSTANCES && (entry & ENTRY_INSTANCE_BIT) != 0u) {
+            instance = entry & ~ENTRY_INSTANCE_BIT;
+            ray = rayIntoInstance(origin, dir, instance);
+            inBottom = true;
+            entry = instanceInfo(instance).x;
+            if (sp >= TRAVERSAL_STACK_SIZE) {
+                overflow = true;
+                break;
             }
+            stack[sp] = ENTRY_LEAVE_INSTANCE;  // returns to the top level once the bottom is done
+            ++sp;
+            continue;
+        } else {
+            uint first = (entry & ~ENTRY_LEAF_BIT) >> 4u;
+            uint count = entry & 15u;
+            uint i = 0u;
+            for (; i < count; ++i) {
+                if (!chargeLoop()) break;
+                float t;
+                vec2 bary;
+                if (intersectPrimitive(ray, first + i, hit.t, t, bary)) {
+                    hit.t = t;
+                    hit.instance = instance;
+                    hit.prim = first + i;
+                    hit.bary = bary;
+                    found = true;
+                    if (anyHit) return true;
+                }
+            }
+            if (i < count) markLoopCutOff();
         }
-        if (i < count) markLoopCutOff();
         // 3. The next entry.
         if (sp == 0u) {
             finished = true;
