@@ -46,6 +46,7 @@ struct Args {
     // GPU and CPU traversal share algorithms, not arithmetic (the device may fuse multiply-adds),
     // so grazing rays may go either way; tests/vulkan/test_ray_tracer.cpp allows 0.2%.
     double maxMismatchFraction = 0.002;
+    bvh::BuildOptions build;  // --ctrav, --cisect, --max-leaf: the SAH constants, measured for the GPU kernel
 };
 
 Args parseArgs(const std::vector<std::string>& args) {
@@ -61,12 +62,16 @@ Args parseArgs(const std::vector<std::string>& args) {
         else if (args[i] == "--threads" && value) a.threads = positiveInt(args[++i], "--threads");
         else if (args[i] == "--max-mismatch-fraction" && value)
             a.maxMismatchFraction = nonNegativeNumber(args[++i], "--max-mismatch-fraction");
+        else if (args[i] == "--ctrav" && value) a.build.traversalCost = nonNegativeNumber(args[++i], "--ctrav");
+        else if (args[i] == "--cisect" && value) a.build.intersectionCost = nonNegativeNumber(args[++i], "--cisect");
+        else if (args[i] == "--max-leaf" && value) a.build.maxLeafSize = positiveInt(args[++i], "--max-leaf");
         else if (args[i].rfind("--", 0) == 0) throw std::runtime_error("unknown option " + args[i]);
         else positional.push_back(args[i]);
     }
     if (positional.empty() || positional.size() > 4)
         throw std::runtime_error("usage: vkrt-bench gpu rays MESH.obj|sphere:N [W H SPP] [--rounds R] [--threads T] "
-                                 "[--peer PATH | --build-peer | --no-peer] [--max-mismatch-fraction F] [--shader-dir DIR]");
+                                 "[--peer PATH | --build-peer | --no-peer] [--max-mismatch-fraction F] [--shader-dir DIR] "
+                                 "[--ctrav C] [--cisect C] [--max-leaf N]");
     a.source = positional[0];
     if (positional.size() > 1) a.width = positiveInt(positional[1], "W");
     if (positional.size() > 2) a.height = positiveInt(positional[2], "H");
@@ -182,7 +187,7 @@ int runGpuRaysBench(const std::vector<std::string>& argv) {
         std::fprintf(stderr, "no Embree peer (--peer PATH, $VKRT_EMBREE_PEER, --build-peer or %s): GPU and CPU only\n",
                      kDefaultPeer);
 
-    bvh::BuildOptions build;
+    bvh::BuildOptions build = a.build;
     build.threads = a.threads;
     const bvh::SceneBvh scene = bvh::buildSceneBvh({toPrimitives(mesh)}, {{0, glm::mat4(1.0f), gpu::MATERIAL_NONE}}, build);
     const std::vector<RaySet> sets = makeRays(scene, cam, a);
