@@ -496,8 +496,8 @@ bool Builder::split(const Range& r, bool branchFree, Range& left, Range& right) 
 
 // The same bytes as BuildNode{box.lo, box.hi, a, b}, assembled in two SSE registers: built as a
 // value, the node went through the stack as 4- and 8-byte stores read back by one 32-byte load,
-// which cannot be store-forwarded (a stall twice per node: buildSubtree 7.4% -> 1.7% of a dragon build's samples; builds 4.5%
-// faster, median of 10 alternating pairs, 9 of 10 faster).
+// which cannot be store-forwarded (a stall twice per node). buildSubtree 7.4% -> 1.7% of a dragon
+// build's samples; builds 4.5% faster (median of 10 alternating pairs, 9 of 10 faster).
 static_assert(offsetof(BuildNode, lo) == 0 && offsetof(BuildNode, hi) == 12 && offsetof(BuildNode, a) == 24 &&
               offsetof(BuildNode, b) == 28);
 inline void storeNode(BuildNode* dst, const Box4& box, std::uint32_t a, std::uint32_t b) {

@@ -2,6 +2,7 @@
 // into one node array, with stats.
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <span>
 #include <stdexcept>
@@ -46,14 +47,22 @@ void validateOptions(const BuildOptions& o) {
 
 // Builds the PrimRefs of one group (validating every primitive) and its SAH tree, and writes the
 // group's primitive records in leaf order into records[first...] / sources[first...] as each
-// subtree completes.
+// subtree completes. `alongside`, if given, runs on one thread of the pool while the others start
+// on the references (see buildSceneBvh); records are written only after it has returned.
 void buildGroup(const std::vector<PrimitiveInput>& prims, std::size_t groupIndex, const SahParams& params,
-                ThreadPool& pool, gpu::Primitive* records, std::uint32_t* sources, GroupBuild& out) {
+                ThreadPool& pool, gpu::Primitive* records, std::uint32_t* sources,
+                const std::function<void()>& alongside, GroupBuild& out) {
     out.count = prims.size();
     out.refs = HugeArray<PrimRef>(out.count);
     const std::size_t chunks = (prims.size() + kRefChunk - 1) / kRefChunk;
+    const std::size_t first = alongside ? 1 : 0;
     std::vector<Aabb> partial(chunks);
-    pool.parallelFor(chunks, [&](std::size_t c) {
+    pool.parallelFor(first + chunks, [&](std::size_t item) {
+        if (item < first) {
+            alongside();
+            return;
+        }
+        const std::size_t c = item - first;
         const std::size_t end = std::min(prims.size(), (c + 1) * kRefChunk);
         for (std::size_t i = c * kRefChunk; i < end; ++i) {
             validate(prims[i], groupIndex, i);
@@ -126,8 +135,16 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
     reserveHuge(bvh.primSource, totalPrims);
     prefaultCapacity(bvh.prims, totalPrims, pool);
     prefaultCapacity(bvh.primSource, totalPrims, pool);
-    bvh.prims.resize(totalPrims);
-    bvh.primSource.resize(totalPrims);
+    // The resizes value-initialise (a memset on one thread while the others waited). They run
+    // alongside the first pool-wide group's reference pass instead, on whichever thread claims
+    // them first. Builds, 2 threads, alternating pairs: dragon x0.974 (10 pairs, 6 faster),
+    // sphere:256 x0.967 (8 pairs, 6 faster).
+    bool resized = false;
+    auto resize = [&] {
+        bvh.prims.resize(totalPrims);
+        bvh.primSource.resize(totalPrims);
+        resized = true;
+    };
     std::vector<std::uint32_t> firstPrims(groups.size());
     for (std::size_t g = 1; g < groups.size(); ++g)
         firstPrims[g] = firstPrims[g - 1] + static_cast<std::uint32_t>(groups[g - 1].size());
@@ -135,18 +152,24 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
     // Bottom levels: large groups use the whole pool, small ones run side by side.
     std::vector<GroupBuild> built(groups.size());
     std::vector<std::size_t> small;
-    auto build = [&](std::size_t g, ThreadPool& p) {
+    auto build = [&](std::size_t g, ThreadPool& p, const std::function<void()>& alongside) {
+        // The capacity is reserved: data() is the same before and after the resize.
         buildGroup(groups[g], g, params, p, bvh.prims.data() + firstPrims[g], bvh.primSource.data() + firstPrims[g],
-                   built[g]);
+                   alongside, built[g]);
     };
     for (std::size_t g = 0; g < groups.size(); ++g) {
         // A group holding most of the scene would leave the other threads idle side by side.
-        if (groups[g].size() >= kLargeGroup || 2 * groups[g].size() > totalPrims) build(g, pool);
-        else small.push_back(g);
+        if (groups[g].size() >= kLargeGroup || 2 * groups[g].size() > totalPrims) {
+            if (resized) build(g, pool, {});
+            else build(g, pool, resize);
+        } else {
+            small.push_back(g);
+        }
     }
+    if (!resized) resize();
     pool.parallelFor(small.size(), [&](std::size_t k) {
         ThreadPool local(1);
-        build(small[k], local);
+        build(small[k], local, {});
     });
 
     // Flatten in group order, so the layout does not depend on which thread built what.
