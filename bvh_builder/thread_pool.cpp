@@ -1,9 +1,35 @@
 #include "thread_pool.h"
 
 #include <algorithm>
+#include <chrono>
 #include <utility>
 
+#include <immintrin.h>
+
 namespace vkrt::bvh {
+
+namespace {
+
+// How long an idle thread spins before it blocks. Measured on this VM: a parallelFor of two 200 us
+// items took 247 us with sleeping workers (the worker started ~50 us late, every call), 204 us with
+// spinning ones; a build's gaps between parallelFors are mostly microseconds, the longest (one
+// thread partitioning the root range at 100K references) ~0.5 ms. Dragon builds, 2 threads:
+// x0.972, 10 of 10 alternating pairs faster.
+constexpr std::chrono::microseconds kSpin{1000};
+
+}  // namespace
+
+template <class Ready>
+bool ThreadPool::spinFor(const Ready& ready) {
+    const auto until = std::chrono::steady_clock::now() + kSpin;
+    for (;;) {
+        for (int i = 0; i < 64; ++i) {
+            if (ready()) return true;
+            _mm_pause();
+        }
+        if (std::chrono::steady_clock::now() >= until) return ready();
+    }
+}
 
 ThreadPool::ThreadPool(int threads) {
     if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -14,6 +40,7 @@ ThreadPool::~ThreadPool() {
     {
         std::lock_guard lock(mutex_);
         stopping_ = true;
+        stoppingSeen_.store(true, std::memory_order_release);
     }
     wake_.notify_all();
     for (std::thread& t : workers_) t.join();
@@ -35,13 +62,18 @@ void ThreadPool::drain() {
         }
         lock.lock();
         if (error && !error_) error_ = error;
-        if (++finished_ == jobCount_) done_.notify_all();
+        finishedSeen_.store(++finished_, std::memory_order_release);
+        if (finished_ == jobCount_) done_.notify_all();
     }
 }
 
 void ThreadPool::workerLoop() {
     std::size_t seen = 0;
     for (;;) {
+        spinFor([&] {
+            return stoppingSeen_.load(std::memory_order_acquire) ||
+                   generationSeen_.load(std::memory_order_acquire) != seen;
+        });
         {
             std::unique_lock lock(mutex_);
             wake_.wait(lock, [&] { return stopping_ || (job_ && generation_ != seen); });
@@ -73,10 +105,12 @@ void ThreadPool::parallelFor(std::size_t count, const std::function<void(std::si
         next_ = 0;
         finished_ = 0;
         error_ = nullptr;
-        ++generation_;
+        finishedSeen_.store(0, std::memory_order_relaxed);
+        generationSeen_.store(++generation_, std::memory_order_release);
     }
     wake_.notify_all();
     drain();
+    spinFor([&] { return finishedSeen_.load(std::memory_order_acquire) == count; });
     std::unique_lock lock(mutex_);
     done_.wait(lock, [&] { return finished_ == jobCount_; });
     job_ = nullptr;

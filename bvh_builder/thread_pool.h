@@ -2,8 +2,11 @@
 // calling thread taking part. Items are claimed one at a time through an atomic counter, so a few
 // large items (subtrees) and many small ones (groups) both balance across threads.
 // Nothing the pool does may change a build's result: callers give every item its own output.
+// Idle threads spin for a while before they sleep (see kSpin in thread_pool.cpp): a build calls
+// parallelFor ~20 times in a row, and waking a sleeping thread took ~50 us on this VM each time.
 #pragma once
 
+#include <atomic>
 #include <condition_variable>
 #include <exception>
 #include <cstddef>
@@ -32,6 +35,9 @@ public:
 private:
     void workerLoop();
     void drain();
+    // Spins until ready() or kSpin has passed; returns ready().
+    template <class Ready>
+    static bool spinFor(const Ready& ready);
 
     std::vector<std::thread> workers_;
     std::mutex mutex_;
@@ -44,6 +50,11 @@ private:
     std::size_t generation_ = 0; // bumped per parallelFor so workers join each job once
     bool stopping_ = false;
     std::exception_ptr error_;   // first exception of the current job (under mutex_)
+    // Mirrors of generation_, finished_ and stopping_ that spinning threads read without the mutex
+    // (written under it).
+    std::atomic<std::size_t> generationSeen_{0};
+    std::atomic<std::size_t> finishedSeen_{0};
+    std::atomic<bool> stoppingSeen_{false};
 };
 
 }  // namespace vkrt::bvh
