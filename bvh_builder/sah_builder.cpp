@@ -298,11 +298,15 @@ private:
     bool splitSmall(const Range& r, Range& left, Range& right);
     // For ranges above kSweepSize: what to do given the range's bins, and doing it.
     Decision decideLarge(const Range& r, const Bins& bins, const BinMapper& mapper) const;
-    void apply(const Range& r, const Decision& d, const BinMapper& mapper, bool branchFree, Range& left, Range& right);
-    void partitionByBin(const Range& r, const BinMapper::Axis& map, int plane, bool branchFree, Range& left,
-                        Range& right);
+    // bins: the range's bins if at hand (subtree jobs), for the children's boxes.
+    void apply(const Range& r, const Decision& d, const BinMapper& mapper, bool branchFree, Range& left, Range& right,
+               const Bins* bins = nullptr);
+    void partitionByBin(const Range& r, const BinMapper::Axis& map, int plane, bool branchFree, const Bins* bins,
+                        Range& left, Range& right);
     void splitMedian(const Range& r, Range& left, Range& right);
     void childRanges(const Range& r, std::uint32_t mid, Range& left, Range& right);
+    void childRangesFromBins(const Range& r, std::uint32_t mid, const Bins& bins, int axis, int plane, int binCount,
+                             Range& left, Range& right);
     bool keepsDepthBound(const Range& r, std::uint32_t leftSize) const;
     // Builds the subtree of r into nodes[next...]; returns its root.
     std::uint32_t buildSubtree(const Range& r, BuildNode* nodes, std::uint32_t& next);
@@ -321,12 +325,28 @@ void Builder::childRanges(const Range& r, std::uint32_t mid, Range& left, Range&
     right = {mid, r.end, rb.bounds, rb.centroids, r.level + 1};
 }
 
+// The same children as childRanges after a binned partition, their boxes taken from the bins: the
+// bins of the split axis below the plane hold exactly the left child's references (binning and
+// partitioning map a reference to the same bin), and min/max are exact, so the boxes are
+// identical. Only the centroid bounds need a pass over the references. Dragon builds, alternating
+// pairs: x0.985 with 2 threads, x0.984 single-thread CPU time (10 pairs each, 6 faster).
+void Builder::childRangesFromBins(const Range& r, std::uint32_t mid, const Bins& bins, int axis, int plane,
+                                  int binCount, Range& left, Range& right) {
+    Box4 lb, rb, lc, rc;
+    for (int b = 0; b < plane; ++b) lb.grow(bins.lo[axis][b], bins.hi[axis][b]);
+    for (int b = plane; b < binCount; ++b) rb.grow(bins.lo[axis][b], bins.hi[axis][b]);
+    for (std::uint32_t i = r.begin; i < mid; ++i) lc.growPoint(refs_[i].centroid2());
+    for (std::uint32_t i = mid; i < r.end; ++i) rc.growPoint(refs_[i].centroid2());
+    left = {r.begin, mid, lb, lc, r.level + 1};
+    right = {mid, r.end, rb, rc, r.level + 1};
+}
+
 // Two partitions, chosen by who calls (never by the thread count): subtree jobs use a branch-free
 // Lomuto partition (whether a reference goes left is a coin flip for the branch predictor, so
 // every reference is swapped and the boundary advanced by the comparison's 0 or 1); the top phase
 // uses Hoare's, which moves fewer references through memory for the large ranges it handles.
-void Builder::partitionByBin(const Range& r, const BinMapper::Axis& map, int plane, bool branchFree, Range& left,
-                             Range& right) {
+void Builder::partitionByBin(const Range& r, const BinMapper::Axis& map, int plane, bool branchFree, const Bins* bins,
+                             Range& left, Range& right) {
     if (branchFree) {
         PrimRef* base = refs_.data() + r.begin;
         std::uint32_t l = 0;  // [0, l) go left, [l, i) go right
@@ -345,7 +365,8 @@ void Builder::partitionByBin(const Range& r, const BinMapper::Axis& map, int pla
             std::memcpy(base + l, x, sizeof x);
             l += goesLeft;
         }
-        childRanges(r, r.begin + l, left, right);
+        if (bins) childRangesFromBins(r, r.begin + l, *bins, map.axis, plane, p_.bins, left, right);
+        else childRanges(r, r.begin + l, left, right);
         return;
     }
     Bounds2 l, rb;
@@ -469,12 +490,12 @@ Decision Builder::decideLarge(const Range& r, const Bins& bins, const BinMapper&
 }
 
 void Builder::apply(const Range& r, const Decision& d, const BinMapper& mapper, bool branchFree, Range& left,
-                    Range& right) {
+                    Range& right, const Bins* bins) {
     if (d.kind == Decision::Median) {
         splitMedian(r, left, right);
         return;
     }
-    partitionByBin(r, mapper.axis(d.axis), d.plane, branchFree, left, right);
+    partitionByBin(r, mapper.axis(d.axis), d.plane, branchFree, bins, left, right);
     if (left.size() == 0 || right.size() == 0 || !keepsDepthBound(r, left.size())) splitMedian(r, left, right);
 }
 
@@ -490,7 +511,7 @@ bool Builder::split(const Range& r, bool branchFree, Range& left, Range& right) 
     if (mapper.anyUsable()) binRefs(refs_.data() + r.begin, n, mapper, bins);
     const Decision d = decideLarge(r, bins, mapper);
     if (d.kind == Decision::Leaf) return false;
-    apply(r, d, mapper, branchFree, left, right);
+    apply(r, d, mapper, branchFree, left, right, &bins);
     return true;
 }
 
