@@ -4,6 +4,7 @@
 #include <chrono>
 #include <functional>
 #include <memory>
+#include <new>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -64,12 +65,17 @@ void buildGroup(const std::vector<PrimitiveInput>& prims, std::size_t groupIndex
         }
         const std::size_t c = item - first;
         const std::size_t end = std::min(prims.size(), (c + 1) * kRefChunk);
+        // A local box: partial[c] in memory was reloaded on every primitive right after its stores
+        // (the compiler cannot tell it from out.refs), a store-forwarding chain. Reference pass
+        // 4.2% -> 1.5% of a dragon build's samples; builds x0.971 (10 alternating pairs, 9 faster).
+        Aabb box;
         for (std::size_t i = c * kRefChunk; i < end; ++i) {
             validate(prims[i], groupIndex, i);
             const Aabb b = boundsOf(prims[i]);
-            partial[c].grow(b);
+            box.grow(b);
             out.refs[i] = PrimRef::make(b, static_cast<std::uint32_t>(i));
         }
+        partial[c] = box;
     });
     for (const Aabb& b : partial) out.bounds.grow(b);
     const PrimRef* refs = out.refs.get();
@@ -81,7 +87,12 @@ void buildGroup(const std::vector<PrimitiveInput>& prims, std::size_t groupIndex
                                     _mm_prefetch(reinterpret_cast<const char*>(&prims[refs[i + kEncodePrefetch].id()]),
                                                  _MM_HINT_T0);
                                 const std::uint32_t source = refs[i].id();
-                                records[i] = encode(prims[source]);
+                                // Constructed in place (guaranteed elision), so encode writes the
+                                // record itself: `records[i] = encode(...)` went through a stack
+                                // temporary written in pieces and read back 32 bytes at a time,
+                                // which cannot be store-forwarded. Samples of the record writing
+                                // 5.2% -> 4.1% of a dragon build (what is left: reading the input).
+                                ::new (static_cast<void*>(records + i)) gpu::Primitive(encode(prims[source]));
                                 sources[i] = source;
                             }
                         });
