@@ -11,8 +11,8 @@ namespace vkrt::bvh {
 namespace {
 
 struct Slot {
-    const float* box;  // the two-child node's floats; this child's lanes are selected by k
-    int k;
+    std::uint32_t node;  // the two-child node holding this child
+    int k;               // which of its two children
     float area;  // half surface area, computed once
     std::uint32_t link, count;
     bool inner() const { return count == 0 && link != gpu::NODE_NONE; }
@@ -21,9 +21,10 @@ struct Slot {
 // Links in the part above the blocks that point at a block's root, patched once blocks are placed.
 constexpr std::uint32_t kBlockLink = 0x80000000u;
 
-// The greedy collapse of one two-child tree (or the part of it above the blocks). Run twice: once
-// counting the 4-wide nodes (so every part's place in the output is known), once writing them
-// straight into their place, so no part needs a temporary array.
+// The greedy collapse of one two-child tree (or the part of it above the blocks), planned once:
+// the 4-wide nodes are recorded in output order, so the number of them is known before the one
+// allocation, and writing them is a pass over the records. (Counting and writing used to descend
+// the tree twice, computing every node's slots twice.)
 class Collapser {
 public:
     // blockRoots: sorted two-child nodes rooting separately collapsed blocks (never opened here;
@@ -31,47 +32,31 @@ public:
     Collapser(const std::vector<gpu::BvhNode>& nodes, const std::vector<std::uint32_t>* blockRoots)
         : nodes_(nodes), blockRoots_(blockRoots) {}
 
-    // Number of 4-wide nodes the subtree at `node` becomes.
-    std::uint32_t count(std::uint32_t node) const {
+    // Records the subtree at `node` depth-first into out (a node's index is its position there,
+    // links to inner children as such indices, flagged relative); returns its index.
+    std::uint32_t plan(std::uint32_t node, std::vector<PlannedNode>& out) const {
         std::array<Slot, 4> slots;
         const int n = gather(node, slots);
-        std::uint32_t total = 1;
-        for (int k = 0; k < n; ++k)
-            if (slots[k].inner() && block(slots[k].link) < 0) total += count(slots[k].link);
-        return total;
-    }
-
-    // Writes the subtree at `node` into out[next...] depth-first (links as out indices + base,
-    // which is out's index in the final array); returns the index of its root.
-    std::uint32_t write(std::uint32_t node, WideNode* out, std::uint32_t base, std::uint32_t& next) const {
-        std::array<Slot, 4> slots;
-        const int n = gather(node, slots);
-        const std::uint32_t index = next++;
-        std::array<std::uint32_t, 4> links{};
-        for (int k = 0; k < n; ++k) {
-            if (!slots[k].inner()) links[k] = slots[k].link;
-            else if (const int b = block(slots[k].link); b >= 0) links[k] = kBlockLink | static_cast<std::uint32_t>(b);
-            else links[k] = base + write(slots[k].link, out, base, next);
-        }
-        WideNode& w = out[index];
+        const auto index = static_cast<std::uint32_t>(out.size());
+        out.emplace_back();
+        PlannedNode p{};
         for (int k = 0; k < 4; ++k) {
-            if (k >= n) {  // empty slot: the empty box (see wide_bvh.h)
-                for (int row = 0; row < 6; ++row) w.bounds[row][k] = (row % 2) ? -FLT_MAX : FLT_MAX;
-                w.link[k] = gpu::NODE_NONE;
-                w.count[k] = 0;
+            if (k >= n) {
+                p.source[k] = gpu::NODE_NONE;
                 continue;
             }
-            const float* xy = slots[k].box + 4 * slots[k].k;
-            const float* z = slots[k].box + 8 + 2 * slots[k].k;
-            w.bounds[0][k] = xy[0];
-            w.bounds[1][k] = xy[1];
-            w.bounds[2][k] = xy[2];
-            w.bounds[3][k] = xy[3];
-            w.bounds[4][k] = z[0];
-            w.bounds[5][k] = z[1];
-            w.link[k] = links[k];
-            w.count[k] = slots[k].count;
+            p.source[k] = slots[k].node;
+            p.side[k] = static_cast<std::uint8_t>(slots[k].k);
+            if (!slots[k].inner()) {
+                p.link[k] = slots[k].link;
+            } else if (const int b = block(slots[k].link); b >= 0) {
+                p.link[k] = kBlockLink | static_cast<std::uint32_t>(b);
+            } else {
+                p.link[k] = plan(slots[k].link, out);
+                p.relative |= static_cast<std::uint8_t>(1u << k);
+            }
         }
+        out[index] = p;  // after the children: out may have grown
         return index;
     }
 
@@ -84,7 +69,7 @@ public:
 private:
     // The up-to-4 child slots of a 4-wide node: the two-child node's children, then repeatedly the
     // inner child with the largest surface area replaced by its two children while there is room
-    // (the SAH's view: the largest box is the one most rays enter). Recursion in count/write is as
+    // (the SAH's view: the largest box is the one most rays enter). Recursion in plan() is as
     // deep as the two-child tree, which the builder bounds.
     int gather(std::uint32_t node, std::array<Slot, 4>& slots) const {
         int n = 0;
@@ -98,7 +83,7 @@ private:
                 const float* z = f + 8 + 2 * k;
                 const float ex = xy[1] - xy[0], ey = xy[3] - xy[2], ez = z[1] - z[0];
                 for (int j = n; j > at; --j) slots[j] = slots[j - 1];
-                slots[at++] = {f, k, ex * ey + ey * ez + ez * ex, link, count};
+                slots[at++] = {index, k, ex * ey + ey * ez + ez * ex, link, count};
                 ++n;
             }
         };
@@ -121,6 +106,30 @@ private:
     const std::vector<std::uint32_t>* blockRoots_;
 };
 
+// Writes a planned 4-wide node; base: the output index of its part's first node.
+void writeNode(const std::vector<gpu::BvhNode>& nodes, const PlannedNode& p, std::uint32_t base, WideNode& w) {
+    for (int k = 0; k < 4; ++k) {
+        if (p.source[k] == gpu::NODE_NONE) {  // empty slot: the empty box (see wide_bvh.h)
+            for (int row = 0; row < 6; ++row) w.bounds[row][k] = (row % 2) ? -FLT_MAX : FLT_MAX;
+            w.link[k] = gpu::NODE_NONE;
+            w.count[k] = 0;
+            continue;
+        }
+        const gpu::BvhNode& src = nodes[p.source[k]];
+        const auto* f = reinterpret_cast<const float*>(&src);
+        const float* xy = f + 4 * p.side[k];
+        const float* z = f + 8 + 2 * p.side[k];
+        w.bounds[0][k] = xy[0];
+        w.bounds[1][k] = xy[1];
+        w.bounds[2][k] = xy[2];
+        w.bounds[3][k] = xy[3];
+        w.bounds[4][k] = z[0];
+        w.bounds[5][k] = z[1];
+        w.link[k] = p.link[k] + (((p.relative >> k) & 1u) ? base : 0u);
+        w.count[k] = childCount(src, p.side[k]);
+    }
+}
+
 }  // namespace
 
 CollapsePlan planCollapse(const std::vector<gpu::BvhNode>& nodes, std::uint32_t root,
@@ -133,9 +142,14 @@ CollapsePlan planCollapse(const std::vector<gpu::BvhNode>& nodes, std::uint32_t 
     const Collapser whole(nodes, nullptr);
     const Collapser above(nodes, &plan.blocks);
     // The part above the blocks, then each block (in parallel); they are placed in that order.
-    plan.topCount = plan.rootIsBlock ? 0 : above.count(root);
+    if (!plan.rootIsBlock) above.plan(root, plan.top);
+    plan.topCount = static_cast<std::uint32_t>(plan.top.size());
+    plan.blockNodes.resize(plan.blocks.size());
     plan.blockSizes.resize(plan.blocks.size());
-    pool.parallelFor(plan.blocks.size(), [&](std::size_t i) { plan.blockSizes[i] = whole.count(plan.blocks[i]); });
+    pool.parallelFor(plan.blocks.size(), [&](std::size_t i) {
+        whole.plan(plan.blocks[i], plan.blockNodes[i]);
+        plan.blockSizes[i] = static_cast<std::uint32_t>(plan.blockNodes[i].size());
+    });
     plan.total = plan.topCount;
     for (std::uint32_t s : plan.blockSizes) plan.total += s;
     return plan;
@@ -143,8 +157,6 @@ CollapsePlan planCollapse(const std::vector<gpu::BvhNode>& nodes, std::uint32_t 
 
 std::uint32_t writeCollapse(const std::vector<gpu::BvhNode>& nodes, const CollapsePlan& plan, ThreadPool& pool,
                             WideNode* out, std::uint32_t first) {
-    const Collapser whole(nodes, nullptr);
-    const Collapser above(nodes, &plan.blocks);
     std::vector<std::uint32_t> offsets(plan.blocks.size());
     std::uint32_t total = first + plan.topCount;
     for (std::size_t i = 0; i < offsets.size(); ++i) {
@@ -152,17 +164,16 @@ std::uint32_t writeCollapse(const std::vector<gpu::BvhNode>& nodes, const Collap
         total += plan.blockSizes[i];
     }
     // Every part straight into its place.
-    if (!plan.rootIsBlock) {
-        std::uint32_t next = 0;
-        above.write(plan.root, out + first, first, next);
-        for (std::uint32_t i = first; i < first + plan.topCount; ++i)
-            for (int k = 0; k < 4; ++k)
-                if (out[i].count[k] == 0 && out[i].link[k] != gpu::NODE_NONE && (out[i].link[k] & kBlockLink))
-                    out[i].link[k] = offsets[out[i].link[k] & ~kBlockLink];
+    for (std::uint32_t i = 0; i < plan.topCount; ++i) {
+        WideNode& w = out[first + i];
+        writeNode(nodes, plan.top[i], first, w);
+        for (int k = 0; k < 4; ++k)
+            if (w.count[k] == 0 && w.link[k] != gpu::NODE_NONE && (w.link[k] & kBlockLink))
+                w.link[k] = offsets[w.link[k] & ~kBlockLink];
     }
     pool.parallelFor(plan.blocks.size(), [&](std::size_t i) {
-        std::uint32_t next = 0;
-        whole.write(plan.blocks[i], out + offsets[i], offsets[i], next);
+        const std::vector<PlannedNode>& part = plan.blockNodes[i];
+        for (std::size_t j = 0; j < part.size(); ++j) writeNode(nodes, part[j], offsets[i], out[offsets[i] + j]);
     });
     if (!plan.rootIsBlock) return first;
     const auto it = std::lower_bound(plan.blocks.begin(), plan.blocks.end(), plan.root);

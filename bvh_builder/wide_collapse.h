@@ -12,9 +12,18 @@ namespace vkrt::bvh {
 // Collapsing runs in two passes, so that every tree's 4-wide nodes can be counted before the one
 // allocation that holds them all (growing the array tree by tree reallocated and copied it: 40 of
 // the 54 ms the collapse took at 1M triangles).
-// planCollapse counts the 4-wide nodes the two-child tree rooted at `root` becomes. The subtrees
-// rooted at blockRoots (FlattenResult::blockRoots) are counted and later written in parallel,
-// after the nodes of the part above them, which never opens a block's root.
+// planCollapse decides the 4-wide nodes the two-child tree rooted at `root` becomes and records
+// them (in output order), so writing them needs no second descent. The subtrees rooted at
+// blockRoots (FlattenResult::blockRoots) are planned and later written in parallel, after the
+// nodes of the part above them, which never opens a block's root.
+// One planned 4-wide node: slot k is child side[k] of two-child node source[k] (NODE_NONE: empty
+// slot); its link is link[k], plus the part's first output index if bit k of `relative` is set.
+struct PlannedNode {
+    std::uint32_t source[4];
+    std::uint32_t link[4];
+    std::uint8_t side[4];
+    std::uint8_t relative;
+};
 struct CollapsePlan {
     std::uint32_t root = 0;
     bool rootIsBlock = false;
@@ -22,6 +31,8 @@ struct CollapsePlan {
     std::vector<std::uint32_t> blockSizes;  // 4-wide nodes per block
     std::uint32_t topCount = 0;             // 4-wide nodes above the blocks
     std::uint32_t total = 0;                // all of them
+    std::vector<PlannedNode> top;           // the part above the blocks, in output order
+    std::vector<std::vector<PlannedNode>> blockNodes;  // each block's, in output order
 };
 CollapsePlan planCollapse(const std::vector<gpu::BvhNode>& nodes, std::uint32_t root,
                           const std::vector<std::uint32_t>& blockRoots, ThreadPool& pool);
