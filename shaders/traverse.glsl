@@ -1,18 +1,27 @@
-// Two-level BVH traversal: iterative, one fixed private stack (no recursion in GLSL).
+// Two-level BVH traversal: iterative, with a fixed stack (no recursion in GLSL).
 // Nodes hold both children's boxes (64 bytes, 4 texels), so each step decides both children
 // from one contiguous fetch. Each pass of the main loop walks inner nodes (an inner loop, one node's
 // two children per pass) until the lane holds something else, then handles it: intersects a
 // bottom-level leaf's primitives (a second inner loop: "while-while", Aila & Laine 2009), enters
 // an instance or leaves one. A far leaf is pushed like a node, as a packed entry (device_host.h,
 // ENTRY_LEAF_BIT).
-// Why two loops: lavapipe (Mesa 22.3) runs every statement of a loop body for all 8 lanes, masked,
-// whatever the branch conditions, and a loop body runs at least once (host/vulkan/README.md). A
-// leaf loop inside the walk's pass cost one full primitive test per pass even when no lane had a
-// leaf; on its own it runs once per leaf round. Measured against that single loop (alternating
-// runs, GPU/CPU rays/s): primary 0.61-0.74 -> 0.75-0.86, shadow 0.59-0.69 -> 0.74-1.00, diffuse
-// 0.48-0.66 -> 0.68-0.85 on sphere:64, dragon and sphere:512. Letting a lane that holds a leaf
-// walk on while the others look for theirs (speculative, subgroupAll to end the walk) was slower.
-// Instance steps moved out of the walk for the same reason: 400x400x16 pt_objects 4.2 -> 3.3 s.
+// Why this shape: lavapipe (Mesa 22.3) runs every statement of a loop body for all 8 lanes, masked,
+// whatever the branch conditions, and a loop body runs at least once (host/vulkan/README.md). So
+// the walk, the loop that runs most, holds only what every pass needs:
+//  - the leaf's primitive tests are a loop of their own, run once per leaf round. Inside the walk's
+//    pass they cost one full primitive test per pass even when no lane had a leaf. Measured against
+//    that (alternating runs, GPU/CPU rays/s on sphere:64, dragon, sphere:512): primary 0.61-0.74 ->
+//    0.75-0.86, shadow 0.59-0.69 -> 0.74-1.00, diffuse 0.48-0.66 -> 0.68-0.85;
+//  - instance steps moved out too: 400x400x16 pt_objects 4.2 -> 3.3 s;
+//  - the stack's top REG_STACK entries live in registers, shifted on push and pop. A private array
+//    indexed per lane is a scalar load or masked store per lane (with a branch per lane that
+//    mispredicts); the walk touched it twice per pass. Now only the main loop does: it stores the
+//    entry that a push with full registers shifted out, and refills when a pop finds them empty.
+//    Against the array in the walk: primary 0.62-0.76 -> 0.75-0.90, shadow 0.65-0.92 -> 0.92-1.22,
+//    diffuse 0.60-0.67 -> 0.79-0.94. A CPU simulation put the extra leaf rounds from spills and
+//    refills at +12% (primary) to +16% (dragon shadow) with 4 registers; 6 or 8 measured no better.
+// Letting a lane that holds a leaf walk on while the others look for theirs (speculative,
+// subgroupAll to end the walk) was slower.
 #ifndef VKRT_TRAVERSE_GLSL
 #define VKRT_TRAVERSE_GLSL
 
@@ -28,6 +37,8 @@ struct Hit {
 const uint ENTRY_INSTANCE_BIT = 0x80000000u;
 const uint ENTRY_LEAVE_INSTANCE = 0xffffffffu;
 const uint ENTRY_NONE = 0xfffffffeu;
+const uint ENTRY_REFILL = 0xfffffffdu;  // the walk's pop found the registers empty: take the array's top
+const uint REG_STACK = 4u;  // stack entries kept in registers
 
 vec3 texelFloats(uvec4 t) { return uintBitsToFloat(t.xyz); }
 
@@ -104,9 +115,14 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
 
     TraceRay worldRay = makeTraceRay(origin, dir);
     TraceRay ray = worldRay;
-    // One spare slot: every iteration writes the free slot stack[sp] (see below), also when full.
-    uint stack[TRAVERSAL_STACK_SIZE + 1u];
-    uint sp = 0u;
+    // The stack: its top REG_STACK entries in registers (r0 = top), the rest in a private array
+    // that only the main loop touches (see the header).
+    uint stack[TRAVERSAL_STACK_SIZE];
+    uint sp = 0u;  // entries in the array
+    uint r0 = ENTRY_NONE, r1 = ENTRY_NONE, r2 = ENTRY_NONE, r3 = ENTRY_NONE;
+    uint held = 0u;  // entries in registers
+    bool spilling = false;
+    uint spillEntry = ENTRY_NONE;
     uint instance = 0u;
     bool inBottom = !HAS_INSTANCES;
     uint entry = HAS_INSTANCES ? frame.scene.w : instanceInfo(0u).x;
@@ -115,15 +131,10 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
 
     while (true) {
         if (!chargeLoop()) break;
-        // 1. Walk the tree until this lane holds a leaf, an instance to enter or leave, or has
-        // nothing left.
-        while (!finished && isNodeEntry(entry)) {
+        // 1. Walk the tree until this lane holds a leaf, an instance to enter or leave, needs the
+        // array (to spill a register entry or to refill from it), or has nothing left.
+        while (!finished && !spilling && isNodeEntry(entry)) {
             if (!chargeLoop()) break;
-            // The stack is touched only after the branches, by every lane: a push writes the free
-            // slot stack[sp] whether or not it is needed, and the pop reads the top whether or not
-            // it is needed. A private array indexed per lane costs a scalar access per lane; inside
-            // a divergent branch each of those also tests the lane's mask and branches on it, which
-            // mispredicts (measured: ~30% of the time).
             int base = int(entry * BVH_NODE_TEXELS);
             uvec4 xy0 = imageLoad(bvhNodes, base);
             uvec4 xy1 = imageLoad(bvhNodes, base + 1);
@@ -140,26 +151,53 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             uint next0 = childEntry(link.x, link.z, inBottom);
             uint next1 = childEntry(link.y, link.w, inBottom);
             bool nearFirst = !(hit0 && hit1 && tNear1 < tNear0);
-            uint pushed = (hit0 && hit1) ? (nearFirst ? next1 : next0) : ENTRY_NONE;
+            bool push = hit0 && hit1;
+            uint pushed = nearFirst ? next1 : next0;
             bool descend = hit0 || hit1;
             entry = (hit0 && nearFirst) ? next0 : next1;
-            stack[min(sp, TRAVERSAL_STACK_SIZE)] = pushed;
-            if (pushed != ENTRY_NONE) {
-                if (sp >= TRAVERSAL_STACK_SIZE) {
-                    overflow = true;
-                    break;
-                }
-                ++sp;
+            // Push: shift the registers down; the bottom one leaves for the array when all are held.
+            spilling = push && held == REG_STACK;
+            spillEntry = r3;
+            if (push) {
+                r3 = r2;
+                r2 = r1;
+                r1 = r0;
+                r0 = pushed;
             }
-            uint top = stack[sp > 0u ? sp - 1u : 0u];
+            if (push && !spilling) ++held;
+            // Pop: from the registers, else mark a refill from the array, else done.
             if (!descend) {
-                if (sp == 0u) finished = true;
-                entry = top;
-                if (sp > 0u) --sp;
+                if (held > 0u) {
+                    entry = r0;
+                    r0 = r1;
+                    r1 = r2;
+                    r2 = r3;
+                    --held;
+                } else if (sp > 0u) {
+                    entry = ENTRY_REFILL;
+                } else {
+                    finished = true;
+                }
             }
         }
-        if (finished || overflow || isNodeEntry(entry)) break;  // done, or cut off (checked below)
-        // 2. Enter an instance (its root is walked next), leave one, or intersect a leaf. Instance
+        if (finished || (!spilling && isNodeEntry(entry))) break;  // done, or cut off (checked below)
+        // 2. The array: a spilled register entry goes on top of it, a refill takes its top.
+        if (spilling) {
+            if (sp >= TRAVERSAL_STACK_SIZE) {
+                overflow = true;
+                break;
+            }
+            stack[sp] = spillEntry;
+            ++sp;
+            spilling = false;
+        }
+        if (entry == ENTRY_REFILL) {
+            --sp;
+            entry = stack[sp];
+            continue;
+        }
+        if (isNodeEntry(entry)) continue;  // spilled mid-walk: walk on
+        // 3. Enter an instance (its root is walked next), leave one, or intersect a leaf. Instance
         // steps are here rather than in the walk so that the walk's passes do not pay for them.
         if (HAS_INSTANCES && entry == ENTRY_LEAVE_INSTANCE) {
             ray = worldRay;
@@ -169,12 +207,21 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             ray = rayIntoInstance(origin, dir, instance);
             inBottom = true;
             entry = instanceInfo(instance).x;
-            if (sp >= TRAVERSAL_STACK_SIZE) {
-                overflow = true;
-                break;
+            // The marker that returns to the top level, pushed like a node.
+            if (held == REG_STACK) {
+                if (sp >= TRAVERSAL_STACK_SIZE) {
+                    overflow = true;
+                    break;
+                }
+                stack[sp] = r3;
+                ++sp;
+            } else {
+                ++held;
             }
-            stack[sp] = ENTRY_LEAVE_INSTANCE;  // returns to the top level once the bottom is done
-            ++sp;
+            r3 = r2;
+            r2 = r1;
+            r1 = r0;
+            r0 = ENTRY_LEAVE_INSTANCE;
             continue;
         } else {
             uint first = (entry & ~ENTRY_LEAF_BIT) >> 4u;
@@ -195,13 +242,20 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             }
             if (i < count) markLoopCutOff();
         }
-        // 3. The next entry.
-        if (sp == 0u) {
+        // 4. The next entry.
+        if (held > 0u) {
+            entry = r0;
+            r0 = r1;
+            r1 = r2;
+            r2 = r3;
+            --held;
+        } else if (sp > 0u) {
+            --sp;
+            entry = stack[sp];
+        } else {
             finished = true;
             break;
         }
-        --sp;
-        entry = stack[sp];
     }
     if (overflow) atomicOr(status.flags.x, STATUS_RAY_STACK_OVERFLOW);
     else if (!finished) markLoopCutOff();

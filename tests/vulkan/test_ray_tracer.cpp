@@ -115,6 +115,66 @@ TEST_P(RayTracerLeaves, MatchesTheCpuTraversal) {
 
 INSTANTIATE_TEST_SUITE_P(LeafSizes, RayTracerLeaves, ::testing::Values(8, static_cast<int>(gpu::LEAF_ENTRY_MAX_COUNT)));
 
+// traverse.glsl keeps the stack's top entries in registers and the rest in an array that only its
+// main loop touches: a push with the registers full spills one, a pop with them empty refills one,
+// and entering an instance pushes the marker that leaves it (spilling if need be). Many instances
+// of a deep tree, crossed by long rays, take every one of those paths at both levels: the top
+// level alone is deeper than the registers hold.
+TEST_F(VulkanTest, RayTracerMatchesTheCpuThroughDeepStacksAndManyInstances) {
+    std::mt19937 random(23);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    auto point = [&] { return glm::vec3(u(random), u(random), u(random)); };
+    std::vector<std::vector<bvh::PrimitiveInput>> groups(1);
+    for (int i = 0; i < 3000; ++i) {
+        const glm::vec3 c = point();
+        groups[0].push_back({gpu::PRIM_KIND_TRIANGLE, c + 0.05f * point(), c + 0.05f * point(), c + 0.05f * point()});
+    }
+    std::vector<bvh::InstanceInput> instances;
+    for (int i = 0; i < 300; ++i) {
+        const glm::mat4 m = glm::rotate(glm::translate(glm::mat4(1.0f), 12.0f * point()), 3.0f * u(random), glm::normalize(point() + glm::vec3(0.0f, 0.0f, 1.5f)));
+        instances.push_back({0, glm::scale(m, glm::vec3(0.5f + 0.3f * u(random))), gpu::MATERIAL_NONE});
+    }
+    const bvh::SceneBvh scene = bvh::buildSceneBvh(groups, instances, {});
+    ASSERT_GE(scene.stats.topDepth, 8) << "the top level must be deeper than the 4 register entries";
+    ASSERT_GE(scene.stats.bottomDepth, 8);
+
+    GpuRendererOptions options;
+    options.validation = true;
+    GpuRayTracer tracer(scene, options);
+    watch(tracer.validationLog());
+    std::vector<gpu::TraceRayInput> rays(20000);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const glm::vec3 origin = 16.0f * point(), target = 10.0f * point();
+        // Every other ray stops half-way: the shadow queries then see hits and misses.
+        rays[i].origin = glm::vec4(origin, i % 2 ? 0.5f * glm::length(target - origin) : 1e30f);
+        rays[i].direction = glm::vec4(glm::normalize(target - origin), 0.0f);
+    }
+    // Same tolerance as RayTracerLeaves (grazing rays may go either way on FMA contraction).
+    for (const bool anyHit : {false, true}) {
+        const auto hits = tracer.trace(rays, anyHit);
+        int disagreements = 0, hitsSeen = 0;
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            const bvh::Ray ray{glm::vec3(rays[i].origin), glm::vec3(rays[i].direction), rays[i].origin.w};
+            bvh::Hit hit;
+            const bool cpuHit = anyHit ? bvh::intersectAny(scene, ray) : bvh::intersectClosest(scene, ray, hit);
+            const bool gpuHit = hits[i].hit.x != 0xffffffffu;
+            hitsSeen += cpuHit;
+            if (cpuHit != gpuHit || (!anyHit && cpuHit && (hit.prim != hits[i].hit.y || hit.instance != hits[i].hit.z))) {
+                ++disagreements;
+            } else if (!anyHit && cpuHit) {
+                // Plus an absolute term: the origin (up to ~28 from the world origin) is carried
+                // into each instance's space in float on both sides, a few ULP of |origin| apart
+                // (~1e-6 seen), which dominates for rays that start next to a surface.
+                const float slack = 1e-5f * hit.t + 1e-6f * glm::length(glm::vec3(rays[i].origin));
+                EXPECT_NEAR(glm::uintBitsToFloat(hits[i].hit.x), hit.t, slack) << "ray " << i;
+            }
+        }
+        EXPECT_GT(hitsSeen, 2000) << (anyHit ? "shadow" : "closest");
+        EXPECT_LT(hitsSeen, 19000) << (anyHit ? "shadow" : "closest");
+        EXPECT_LE(disagreements, static_cast<int>(rays.size()) / 500) << (anyHit ? "shadow" : "closest");
+    }
+}
+
 TEST_F(VulkanTest, RayTracerSplitsLargeRayListsIntoBatches) {
     const bvh::SceneBvh scene = randomScene();
     GpuRendererOptions options;
