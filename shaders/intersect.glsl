@@ -21,6 +21,11 @@ vec3 safeInverse(vec3 d) {
     return s / m;
 }
 
+// v's components in the order k names them, by selects: indexing a vector with a per-lane index
+// (v[k]) is a per-lane scalar access on lavapipe.
+float pickAxis(vec3 v, int k) { return k == 0 ? v.x : (k == 1 ? v.y : v.z); }
+vec3 permuteAxes(vec3 v, ivec3 k) { return vec3(pickAxis(v, k.x), pickAxis(v, k.y), pickAxis(v, k.z)); }
+
 TraceRay makeTraceRay(vec3 origin, vec3 dir) {
     TraceRay r;
     r.origin = origin;
@@ -31,20 +36,16 @@ TraceRay makeTraceRay(vec3 origin, vec3 dir) {
     int kx = kz == 2 ? 0 : kz + 1;  // (kz + 1) % 3 without an integer division per lane
     int ky = kx == 2 ? 0 : kx + 1;
     // Keep the winding: swapping kx and ky when d[kz] < 0 preserves the sign of the edge tests.
-    if (dir[kz] < 0.0) {
+    float dz = pickAxis(dir, kz);
+    if (dz < 0.0) {
         int tmp = kx;
         kx = ky;
         ky = tmp;
     }
     r.axes = ivec3(kx, ky, kz);
-    r.shear = vec3(dir[kx] / dir[kz], dir[ky] / dir[kz], 1.0 / dir[kz]);
+    r.shear = vec3(pickAxis(dir, kx) / dz, pickAxis(dir, ky) / dz, 1.0 / dz);
     return r;
 }
-
-// v's components in the order k names them, by selects: indexing a vector with a per-lane index
-// (v[k]) is a per-lane scalar access on lavapipe.
-float pickAxis(vec3 v, int k) { return k == 0 ? v.x : (k == 1 ? v.y : v.z); }
-vec3 permuteAxes(vec3 v, ivec3 k) { return vec3(pickAxis(v, k.x), pickAxis(v, k.y), pickAxis(v, k.z)); }
 
 // Watertight ray/triangle. On a hit with 0 < t < tBest returns true, t and the barycentric
 // weights (b1, b2) of v1 and v2. Edge functions are `precise` so no FMA contraction breaks the
