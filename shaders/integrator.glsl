@@ -33,7 +33,7 @@ void emitRay(inout PathQueue q, vec3 origin, vec3 dir, vec3 weight, uint depth) 
     } else if (g_pathTop < PATH_STACK_SIZE) {
         g_pathStack[g_pathTop++] = r;
     } else {
-        atomicOr(status.flags.x, STATUS_RAY_STACK_OVERFLOW);
+        g_rayStackOverflow = true;  // reported once by render.comp (see traverse.glsl)
     }
 }
 

@@ -25,7 +25,11 @@ void main() {
     vec3 direction = uintBitsToFloat(imageLoad(rays, int(2u * i + 1u)).xyz);
     Hit hit;
     bool found = traceScene(origin.xyz, direction, origin.w, trace.rays.y != 0u, hit);
-    if (g_budgetExceeded) atomicOr(status.flags.x, STATUS_LOOP_BUDGET_EXCEEDED);
-    else if (g_loopCutOff) atomicOr(status.flags.x, STATUS_LOOP_CUT_OFF);
-    imageStore(hits, int(i), found ? uvec4(floatBitsToUint(hit.t), hit.prim, hit.instance, 0u) : uvec4(0xffffffffu, 0u, 0u, 0u));
+    // Failures travel in the hit's w (STATUS_* bits), read by the host with the hits: no atomics,
+    // which would be a per-lane loop for every ray on lavapipe.
+    uint failures = (g_budgetExceeded ? STATUS_LOOP_BUDGET_EXCEEDED : 0u) |
+                    (g_loopCutOff && !g_budgetExceeded ? STATUS_LOOP_CUT_OFF : 0u) |
+                    (g_rayStackOverflow ? STATUS_RAY_STACK_OVERFLOW : 0u);
+    imageStore(hits, int(i), found ? uvec4(floatBitsToUint(hit.t), hit.prim, hit.instance, failures)
+                                   : uvec4(0xffffffffu, 0u, 0u, failures));
 }

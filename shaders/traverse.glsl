@@ -105,6 +105,8 @@ uint childEntry(uint link, uint count, bool inBottom) {
     return ENTRY_LEAF_BIT | (link << 4u) | count;  // device_host.h: the host checked it fits
 }
 
+bool g_rayStackOverflow = false;  // a traversal stack overflowed (STATUS_RAY_STACK_OVERFLOW)
+
 // Closest hit (anyHit = false) or any hit (shadow rays) with 0 < t < tMax.
 bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
     hit.t = tMax;
@@ -257,7 +259,9 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             break;
         }
     }
-    if (overflow) atomicOr(status.flags.x, STATUS_RAY_STACK_OVERFLOW);
+    // Reported by the kernel's entry point, once per invocation: an atomic is a per-lane loop on
+    // lavapipe that runs wherever it is inlined, taken or not (host/vulkan/README.md).
+    if (overflow) g_rayStackOverflow = true;
     else if (!finished) markLoopCutOff();
     return found;
 }

@@ -197,18 +197,20 @@ std::vector<gpu::TraceHitOutput> GpuRayTracer::trace(std::span<const gpu::TraceR
             computeToHostBarrier(commands);
         });
         ++stats.submissions;
-        const auto& status = *reinterpret_cast<const gpu::RenderStatus*>(m.status.mapped());
-        if (status.flags.x & gpu::STATUS_LOOP_BUDGET_EXCEEDED)
+        m.transfers.download(m.hits, std::as_writable_bytes(std::span(hits).subspan(first, count)));
+        // The kernel reports failures per ray in hit.w (trace_rays.comp), not through atomics.
+        std::uint32_t failures = 0;
+        for (std::size_t i = first; i < first + count; ++i) failures |= hits[i].hit.w;
+        if (failures & gpu::STATUS_LOOP_BUDGET_EXCEEDED)
             throw GpuKernelError("a ray of batch " + std::to_string(first / m.batch) + " needed more than " +
                                  std::to_string(gpu::LOOP_BUDGET) + " traversal steps (the kernel's loop budget; lavapipe before Mesa 25 "
                                  "cuts loops off silently at 65,535 passes)");
-        if (status.flags.x & gpu::STATUS_LOOP_CUT_OFF)
+        if (failures & gpu::STATUS_LOOP_CUT_OFF)
             throw GpuKernelError("the traversal of a ray of batch " + std::to_string(first / m.batch) +
                                  " was cut off by the driver's loop limiter (lavapipe before Mesa 25 ends every loop "
                                  "silently after 65,535 passes per group of 8 lanes)");
-        if (status.flags.x & gpu::STATUS_RAY_STACK_OVERFLOW)
+        if (failures & gpu::STATUS_RAY_STACK_OVERFLOW)
             throw GpuKernelError("the BVH traversal stack (" + std::to_string(gpu::TRAVERSAL_STACK_SIZE) + " entries) overflowed");
-        m.transfers.download(m.hits, std::as_writable_bytes(std::span(hits).subspan(first, count)));
     }
     if (statsOut) *statsOut = stats;
     return hits;

@@ -211,7 +211,7 @@ struct TraceRayInput {
     vec4 direction;  // xyz direction, w unused
 };
 struct TraceHitOutput {
-    uvec4 hit;       // x = floatBits(t) or 0xffffffff for a miss, y = primitive, z = instance, w unused
+    uvec4 hit;       // x = floatBits(t) or 0xffffffff for a miss, y = primitive, z = instance, w = STATUS_* failures
 };
 struct TraceParams {
     uvec4 rays;      // x = ray count, y = 1 for any-hit (shadow) queries, 0 for closest hit, z, w unused

@@ -195,6 +195,32 @@ TEST_F(VulkanTest, RayTracerSplitsLargeRayListsIntoBatches) {
     for (std::size_t i = 0; i < tail.size(); ++i) EXPECT_EQ(all[tracer.maxRaysPerSubmission() + i].hit, tail[i].hit);
 }
 
+// The kernel reports a ray it could not finish in its hit record (trace_rays.comp), and the tracer
+// turns that into an error instead of returning a wrong hit: 80,000 coincident triangles all lie at
+// the same distance, so a closest-hit ray must visit every leaf, far more loop passes than the
+// per-ray budget (LOOP_BUDGET) allows. On lavapipe the driver's loop limiter ends it first (its
+// count includes every inner loop's exit pass), on other drivers the budget does: either is an error.
+TEST_F(VulkanTest, RayTracerReportsARayOverTheLoopBudget) {
+    std::vector<std::vector<bvh::PrimitiveInput>> groups(1);
+    for (int i = 0; i < 80000; ++i)
+        groups[0].push_back({gpu::PRIM_KIND_TRIANGLE, glm::vec3(-1, -1, 0), glm::vec3(1, -1, 0), glm::vec3(0, 1, 0)});
+    const bvh::SceneBvh scene = bvh::buildSceneBvh(groups, {{0, glm::mat4(1.0f), gpu::MATERIAL_NONE}}, {});
+    GpuRendererOptions options;
+    options.validation = true;
+    GpuRayTracer tracer(scene, options);
+    watch(tracer.validationLog());
+    const std::vector<gpu::TraceRayInput> rays{{glm::vec4(0.0f, 0.0f, -1.0f, 1e30f), glm::vec4(0.0f, 0.0f, 1.0f, 0.0f)}};
+    try {
+        tracer.trace(rays, false);
+        FAIL() << "a ray over the loop budget came back as a result";
+    } catch (const GpuKernelError& e) {
+        const std::string what = e.what();
+        EXPECT_TRUE(what.find("needed more than") != std::string::npos || what.find("cut off") != std::string::npos) << what;
+    }
+    // An any-hit query stops at the first triangle: well within the budget.
+    EXPECT_NE(tracer.trace(rays, true)[0].hit.x, 0xffffffffu);
+}
+
 TEST(GpuRayTracer, RefusesABvhOverTheLimit) {
     const bvh::SceneBvh scene = randomScene();
     GpuRendererOptions options;
