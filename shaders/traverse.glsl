@@ -105,6 +105,22 @@ uint childEntry(uint link, uint count, bool inBottom) {
     return ENTRY_LEAF_BIT | (link << 4u) | count;  // device_host.h: the host checked it fits
 }
 
+// The stack's register part, r0 on top (REG_STACK entries; see the header): a push shifts the
+// entries down (r3 falls off: the caller saves it first if it was held), a pop shifts them up.
+void shiftIn(inout uint r0, inout uint r1, inout uint r2, inout uint r3, uint value) {
+    r3 = r2;
+    r2 = r1;
+    r1 = r0;
+    r0 = value;
+}
+uint shiftOut(inout uint r0, inout uint r1, inout uint r2, uint r3) {
+    uint top = r0;
+    r0 = r1;
+    r1 = r2;
+    r2 = r3;
+    return top;
+}
+
 bool g_rayStackOverflow = false;  // a traversal stack overflowed (STATUS_RAY_STACK_OVERFLOW)
 
 // Closest hit (anyHit = false) or any hit (shadow rays) with 0 < t < tMax.
@@ -168,20 +184,12 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             // Push: shift the registers down; the bottom one leaves for the array when all are held.
             spilling = push && held == REG_STACK;
             spillEntry = r3;
-            if (push) {
-                r3 = r2;
-                r2 = r1;
-                r1 = r0;
-                r0 = pushed;
-            }
+            if (push) shiftIn(r0, r1, r2, r3, pushed);
             if (push && !spilling) ++held;
             // Pop: from the registers, else mark a refill from the array, else done.
             if (!descend) {
                 if (held > 0u) {
-                    entry = r0;
-                    r0 = r1;
-                    r1 = r2;
-                    r2 = r3;
+                    entry = shiftOut(r0, r1, r2, r3);
                     --held;
                 } else if (sp > 0u) {
                     entry = ENTRY_REFILL;
@@ -228,10 +236,7 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             } else {
                 ++held;
             }
-            r3 = r2;
-            r2 = r1;
-            r1 = r0;
-            r0 = ENTRY_LEAVE_INSTANCE;
+            shiftIn(r0, r1, r2, r3, ENTRY_LEAVE_INSTANCE);
             continue;
         } else {
             uint first = (entry & ~ENTRY_LEAF_BIT) >> 4u;
@@ -254,10 +259,7 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
         }
         // 4. The next entry.
         if (held > 0u) {
-            entry = r0;
-            r0 = r1;
-            r1 = r2;
-            r2 = r3;
+            entry = shiftOut(r0, r1, r2, r3);
             --held;
         } else if (sp > 0u) {
             --sp;
