@@ -1,4 +1,4 @@
-// `vkrt-bench gpu scenes [DIR] [-w W -h H -r RPP]`: every .xml under DIR (default the upstream
+// `vkrt-bench gpu scenes [DIR] [-w W -h H -r RPP] [--shader-dir DIR]`: every .xml under DIR (default the upstream
 // course scenes in ../shared, $VKRT_SHARED overriding as in the tests) rendered by the GPU kernel
 // specialised to the scene, by the general kernel (every feature on), and by the CPU reference,
 // all with the same options. One row per scene with both time ratios, then their median and range.
@@ -28,6 +28,7 @@ struct Args {
     std::string dir;
     RenderOptions render;
     int repeat = 1;
+    std::string shaderDir;  // render.comp compiled from DIR at run time: same-binary A/B runs of kernel edits
 };
 
 std::string defaultSceneDir() {
@@ -47,11 +48,12 @@ Args parseArgs(const std::vector<std::string>& args) {
         else if (args[i] == "-h" && value) a.render.height = positiveInt(args[++i], "-h");
         else if (args[i] == "-r" && value) a.render.samplesPerPixel = positiveInt(args[++i], "-r");
         else if (args[i] == "--repeat" && value) a.repeat = positiveInt(args[++i], "--repeat");
+        else if (args[i] == "--shader-dir" && value) a.shaderDir = args[++i];
         else if (args[i].rfind("-", 0) == 0) throw std::runtime_error("unknown option " + args[i]);
         else positional.push_back(args[i]);
     }
     if (positional.size() > 1)
-        throw std::runtime_error("usage: vkrt-bench gpu scenes [DIR] [-w W] [-h H] [-r RPP] [--repeat N]");
+        throw std::runtime_error("usage: vkrt-bench gpu scenes [DIR] [-w W] [-h H] [-r RPP] [--repeat N] [--shader-dir DIR]");
     a.dir = positional.empty() ? defaultSceneDir() : positional[0];
     return a;
 }
@@ -107,7 +109,10 @@ void printSummary(const char* what, std::vector<double> v) {
 int runGpuScenesBench(const std::vector<std::string>& argv) {
     const Args a = parseArgs(argv);
     const std::vector<std::filesystem::path> files = sceneFiles(a.dir);
-    GpuRenderer gpu;
+    GpuRendererOptions gpuOptions;
+    if (!a.shaderDir.empty()) gpuOptions.shaderDir = a.shaderDir;
+    GpuRenderer gpu(gpuOptions);
+    if (!a.shaderDir.empty()) std::printf("# GPU kernels compiled from %s\n", a.shaderDir.c_str());
     std::printf("# %zu scenes in %s, %dx%d, %d rpp, depth %d, on %s; CPU reference on all cores\n", files.size(),
                 a.dir.c_str(), a.render.width, a.render.height, a.render.samplesPerPixel, a.render.maxDepth,
                 gpu.deviceName().c_str());
