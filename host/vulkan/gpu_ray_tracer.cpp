@@ -132,6 +132,8 @@ GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& opt
       instances(context, "instances", stableTexelBufferBytes(paddedBytes(bvh.instances)), kTexels, MemoryUse::Device),
       frame(context, "frame parameters", sizeof(gpu::FrameParams),
             vk::BufferUsageFlagBits::eUniformBuffer | vk::BufferUsageFlagBits::eTransferDst, MemoryUse::Device),
+      // Bound because the layout shared with render.comp declares it; trace_rays.comp reports
+      // failures in each hit's w instead.
       status(context, "render status", sizeof(gpu::RenderStatus), kStorage, MemoryUse::Shared),
       rays(context, "rays", rayBytes(batch), kTexels, MemoryUse::Device),
       hits(context, "hits", hitBytes(batch), kTexels | vk::BufferUsageFlagBits::eTransferSrc, MemoryUse::Device) {
@@ -198,19 +200,30 @@ std::vector<gpu::TraceHitOutput> GpuRayTracer::trace(std::span<const gpu::TraceR
         });
         ++stats.submissions;
         m.transfers.download(m.hits, std::as_writable_bytes(std::span(hits).subspan(first, count)));
-        // The kernel reports failures per ray in hit.w (trace_rays.comp), not through atomics.
+        // The kernel reports failures per ray in hit.w (trace_rays.comp), not through atomics, so
+        // the error can name the first ray that failed.
         std::uint32_t failures = 0;
-        for (std::size_t i = first; i < first + count; ++i) failures |= hits[i].hit.w;
+        std::size_t failed = rays.size();
+        for (std::size_t i = first; i < first + count; ++i) {
+            if (hits[i].hit.w != 0 && failed == rays.size()) failed = i;
+            failures |= hits[i].hit.w;
+        }
+        if (failures == 0) continue;
+        const glm::vec4 o = rays[failed].origin, d = rays[failed].direction;
+        const std::string ray = "ray " + std::to_string(failed) + " of " + std::to_string(rays.size()) + " (origin " +
+                                std::to_string(o.x) + ", " + std::to_string(o.y) + ", " + std::to_string(o.z) + ", direction " +
+                                std::to_string(d.x) + ", " + std::to_string(d.y) + ", " + std::to_string(d.z) + ")";
         if (failures & gpu::STATUS_LOOP_BUDGET_EXCEEDED)
-            throw GpuKernelError("a ray of batch " + std::to_string(first / m.batch) + " needed more than " +
-                                 std::to_string(gpu::LOOP_BUDGET) + " traversal steps (the kernel's loop budget; lavapipe before Mesa 25 "
-                                 "cuts loops off silently at 65,535 passes)");
+            throw GpuKernelError(ray + " needed more than " + std::to_string(gpu::LOOP_BUDGET) +
+                                 " traversal steps (the kernel's loop budget; lavapipe before Mesa 25 cuts loops off silently "
+                                 "at 65,535 passes)");
         if (failures & gpu::STATUS_LOOP_CUT_OFF)
-            throw GpuKernelError("the traversal of a ray of batch " + std::to_string(first / m.batch) +
+            throw GpuKernelError("the traversal of " + ray +
                                  " was cut off by the driver's loop limiter (lavapipe before Mesa 25 ends every loop "
                                  "silently after 65,535 passes per group of 8 lanes)");
         if (failures & gpu::STATUS_RAY_STACK_OVERFLOW)
-            throw GpuKernelError("the BVH traversal stack (" + std::to_string(gpu::TRAVERSAL_STACK_SIZE) + " entries) overflowed");
+            throw GpuKernelError("the BVH traversal stack (" + std::to_string(gpu::TRAVERSAL_STACK_SIZE) + " entries) overflowed on " + ray);
+        throw GpuKernelError("unknown failure flags " + std::to_string(failures) + " on " + ray);
     }
     if (statsOut) *statsOut = stats;
     return hits;

@@ -216,6 +216,7 @@ TEST_F(VulkanTest, RayTracerReportsARayOverTheLoopBudget) {
     } catch (const GpuKernelError& e) {
         const std::string what = e.what();
         EXPECT_TRUE(what.find("needed more than") != std::string::npos || what.find("cut off") != std::string::npos) << what;
+        EXPECT_NE(what.find("ray 0 of 1"), std::string::npos) << "the message names the ray: " << what;
     }
     // An any-hit query stops at the first triangle: well within the budget.
     EXPECT_NE(tracer.trace(rays, true)[0].hit.x, 0xffffffffu);
