@@ -30,7 +30,18 @@ layout(set = 0, binding = BINDING_SHADERS, rgba32ui) uniform readonly uimageBuff
 layout(set = 0, binding = BINDING_LIGHTS, rgba32ui) uniform readonly uimageBuffer lightTexels;
 layout(set = 0, binding = BINDING_TEXTURES, rgba32ui) uniform readonly uimageBuffer textureInfoTexels;
 layout(set = 0, binding = BINDING_TEXELS, r32ui) uniform readonly uimageBuffer textureTexels;
-layout(std140, set = 0, binding = BINDING_FRAME) uniform FrameBuffer { FrameParams frame; };
+// Uniform values (this block and the push constants) are read at VKRT_UNIFORM_INDEX, which is 0
+// but not a compile-time constant. lavapipe (Mesa 22.3, update_inline_shader_state) inlines
+// uniforms that feed branches or loop bounds into a copy of the kernel and recompiles it whenever
+// push constants or uniform bindings change: here, at every submission. With Mesa's shader disk
+// cache those recompiles were cache hits (22-27 copies of the kernel in memory during one render);
+// without it each was a full LLVM compile (a 64x64, 4 rpp render took 63 s instead of 0.1 s), and
+// a cold cache added ~0.5 s to the first render of each scene. The inliner only follows loads at
+// constant offsets; an index it cannot fold leaves one compile per pipeline. Every dispatch is
+// (n, 1, 1) workgroups (host/vulkan), so gl_NumWorkGroups.z - 1 is 0.
+#define VKRT_UNIFORM_INDEX (gl_NumWorkGroups.z - 1u)
+layout(std140, set = 0, binding = BINDING_FRAME) uniform FrameBuffer { FrameParams frames[1]; };
+#define frame frames[VKRT_UNIFORM_INDEX]
 layout(std430, set = 0, binding = BINDING_ACCUM) buffer AccumBuffer { vec4 accum[]; };
 layout(std430, set = 0, binding = BINDING_STATUS) coherent buffer StatusBuffer { RenderStatus status; };
 

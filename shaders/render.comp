@@ -17,13 +17,14 @@
 #include "integrator.glsl"
 #include "camera.glsl"
 
-layout(push_constant) uniform PushConstants { PassParams pass; };
+layout(push_constant) uniform PushConstants { PassParams passes[1]; };  // read at VKRT_UNIFORM_INDEX (bindings.glsl)
 
 // 64 invocations = one 8x8 pixel block; each group of 8 lanes (lavapipe's subgroup) is a 4x2
 // patch, so lanes that run in lockstep trace neighbouring, coherent rays.
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 
 void main() {
+    PassParams pass = passes[VKRT_UNIFORM_INDEX];
     uvec4 tile = pass.tile;
     // Workgroups are handed to lavapipe's threads in contiguous chunks; visiting blocks in a
     // strided order spreads expensive regions of the image over all threads.

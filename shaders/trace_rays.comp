@@ -14,7 +14,8 @@
 // per-lane address is a scalar loop over the lanes (host/vulkan/README.md).
 layout(set = 0, binding = BINDING_RAYS, rgba32ui) uniform readonly uimageBuffer rays;
 layout(set = 0, binding = BINDING_HITS, rgba32ui) uniform writeonly uimageBuffer hits;
-layout(push_constant) uniform TracePush { TraceParams trace; };
+layout(push_constant) uniform TracePush { TraceParams traces[1]; };
+#define trace traces[VKRT_UNIFORM_INDEX]  // bindings.glsl: why not a plain member
 
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 
