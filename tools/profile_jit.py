@@ -53,9 +53,19 @@ def regions(addresses):
 def disassemble(pid, lo, hi):
     """(address, text) of each instruction in [lo, hi], read from the live process."""
     start, size = lo - 64, hi - lo + 128
-    with open(f"/proc/{pid}/mem", "rb") as mem:
-        mem.seek(start)
-        code = mem.read(size)
+    code = bytearray()
+    with open(f"/proc/{pid}/mem", "rb", buffering=0) as mem:
+        # Page by page: a span of samples can cross pages that are not mapped (or were unmapped
+        # since); those read as zero bytes rather than failing the whole read.
+        address = start
+        while address < start + size:
+            chunk = min(start + size, (address // 4096 + 1) * 4096) - address
+            try:
+                mem.seek(address)
+                code += mem.read(chunk)
+            except OSError:
+                code += bytes(chunk)
+            address += chunk
     with tempfile.NamedTemporaryFile(suffix=".bin") as blob:
         blob.write(code)
         blob.flush()
