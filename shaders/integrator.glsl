@@ -1,7 +1,8 @@
 // The radiance of one camera sample: Whitted-style recursion with Cook's distribution effects,
 // written as a loop over an explicit stack of pending rays (GLSL has no recursion). Only
 // dielectrics (two branches) and depth-0 gloss samples push; everything else continues in place,
-// so the stack never holds more than MAX_DEPTH + glossSamples entries (PATH_STACK_SIZE).
+// so the stack never holds more than MAX_DEPTH + glossSamples entries (PATH_STACK_SIZE), and a
+// scene with neither has no stack at all (PATH_STACK_SIZE = 0).
 #ifndef VKRT_INTEGRATOR_GLSL
 #define VKRT_INTEGRATOR_GLSL
 
@@ -21,7 +22,7 @@ struct PathQueue {
     bool hasNext;
 };
 
-PathRay g_pathStack[PATH_STACK_SIZE];
+PathRay g_pathStack[PATH_STACK_ENTRIES];
 uint g_pathTop = 0u;
 
 void emitRay(inout PathQueue q, vec3 origin, vec3 dir, vec3 weight, uint depth) {
@@ -30,7 +31,7 @@ void emitRay(inout PathQueue q, vec3 origin, vec3 dir, vec3 weight, uint depth) 
     if (!q.hasNext) {
         q.next = r;
         q.hasNext = true;
-    } else if (g_pathTop < PATH_STACK_SIZE) {
+    } else if (HAS_PATH_STACK && g_pathTop < PATH_STACK_SIZE) {
         g_pathStack[g_pathTop++] = r;
     } else {
         g_rayStackOverflow = true;  // reported once by render.comp (see traverse.glsl)
@@ -165,7 +166,7 @@ vec3 cameraSampleRadiance(vec3 origin, vec3 dir, SampleKey key) {
         if (g_budgetExceeded) break;
         if (q.hasNext) {
             ray = q.next;
-        } else if (g_pathTop > 0u) {
+        } else if (HAS_PATH_STACK && g_pathTop > 0u) {
             ray = g_pathStack[--g_pathTop];
         } else {
             finished = true;

@@ -13,6 +13,15 @@ std::uint32_t pathStack(std::uint32_t maxDepth, const RenderOptions& options) {
     return std::max<std::uint32_t>(1, maxDepth + static_cast<std::uint32_t>(std::max(options.glossSamples, 1)));
 }
 
+// A scene where no hit emits a second ray needs no path stack: 0 compiles its push and pop out of
+// the kernel. They are not free when unused: lavapipe runs every statement for all 8 lanes whatever
+// the branches decide, and a store to the per-lane indexed stack is a per-lane loop of masked
+// stores, at each of the integrator's three push sites (host/vulkan/README.md).
+std::uint32_t scenePathStack(const FeatureSet& f, const RenderOptions& options) {
+    const bool glossFanOut = f.reflection && f.gloss && options.glossSamples > 1;
+    return (f.dielectric || glossFanOut) ? pathStack(f.maxDepth, options) : 0u;
+}
+
 bool isIdentity(const gpu::Instance& instance) {
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 4; ++c)
@@ -99,7 +108,7 @@ FeatureSet deriveFeatureSet(const Scene& scene, const SceneAccel& accel, const R
         f.coolToWarm |= s.type == ShaderType::CoolToWarm;
     }
     f.maxDepth = (f.reflection || f.dielectric) ? static_cast<std::uint32_t>(std::max(options.maxDepth, 0)) : 0u;
-    f.pathStackSize = pathStack(f.maxDepth, options);
+    f.pathStackSize = scenePathStack(f, options);
     return f;
 }
 

@@ -27,7 +27,8 @@ struct FeatureSet {
     bool textures = true;
     bool coolToWarm = true;
     std::uint32_t maxDepth = 4;        // 0 when nothing reflects or refracts, else options.maxDepth
-    std::uint32_t pathStackSize = 5;   // pending rays: maxDepth + glossSamples (integrator.glsl)
+    std::uint32_t pathStackSize = 5;   // pending rays: maxDepth + glossSamples (integrator.glsl); 0 when
+                                       // nothing pushes (no dielectric, no gloss fan-out): no stack code
 
     auto operator<=>(const FeatureSet&) const = default;
 
