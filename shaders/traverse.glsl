@@ -21,7 +21,8 @@
 //    diffuse 0.60-0.67 -> 0.79-0.94. A CPU simulation put the extra leaf rounds from spills and
 //    refills at +12% (primary) to +16% (dragon shadow) with 4 registers; 6 or 8 measured no better.
 // Letting a lane that holds a leaf walk on while the others look for theirs (speculative,
-// subgroupAll to end the walk) was slower.
+// subgroupAll to end the walk, or a lane stopping at its second leaf) was slower, and so was a
+// 4-wide node (host/vulkan/README.md, "Tried and not kept").
 #ifndef VKRT_TRAVERSE_GLSL
 #define VKRT_TRAVERSE_GLSL
 
