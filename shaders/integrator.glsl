@@ -20,22 +20,41 @@ struct PathRay {
 struct PathQueue {
     PathRay next;
     bool hasNext;
+    PathRay extra;  // a second child, until flushQueue pushes it
+    bool hasExtra;
 };
 
 PathRay g_pathStack[PATH_STACK_ENTRIES];
 uint g_pathTop = 0u;
 
+// Records a child ray; a hit emits at most two between flushes (emitReflection flushes after each
+// gloss sample).
 void emitRay(inout PathQueue q, vec3 origin, vec3 dir, vec3 weight, uint depth) {
     if (max(max(weight.x, weight.y), weight.z) < MIN_RAY_WEIGHT) return;
     PathRay r = PathRay(origin, dir, weight, depth);
     if (!q.hasNext) {
         q.next = r;
         q.hasNext = true;
-    } else if (HAS_PATH_STACK && g_pathTop < PATH_STACK_SIZE) {
-        g_pathStack[g_pathTop++] = r;
+    } else if (HAS_PATH_STACK) {
+        q.extra = r;
+        q.hasExtra = true;
+    } else {
+        g_rayStackOverflow = true;  // the host found no hit that emits two (feature_set.cpp)
+    }
+}
+
+// The path stack's push, kept out of emitRay: lavapipe runs every push site on every path step
+// for all lanes (a per-lane loop of masked stores of the 10-word ray), so one site in the path
+// loop and one in the gloss loop instead of one per emitRay call. The stack receives the same
+// rays in the same order as when emitRay pushed.
+void flushQueue(inout PathQueue q) {
+    if (!HAS_PATH_STACK || !q.hasExtra) return;
+    if (g_pathTop < PATH_STACK_SIZE) {
+        g_pathStack[g_pathTop++] = q.extra;
     } else {
         g_rayStackOverflow = true;  // reported once by render.comp (see traverse.glsl)
     }
+    q.hasExtra = false;
 }
 
 // The mirror direction perturbed within the square of side `roughness` in r's (U, V) basis.
@@ -72,6 +91,7 @@ void emitReflection(inout PathQueue q, PathRay ray, Surface s, vec3 N, float rou
                         : sample2D(frame.sampling.x, frame.pixelGrid, key.pixel, key.index, dimGloss(ray.depth), key.seed);
         vec3 rg = glossyDirection(r, roughness, u);
         if (dot(rg, s.geomNormal) > 0.0) emitRay(q, offsetTowards(s, rg), rg, w, ray.depth + 1u);
+        flushQueue(q);
     }
     if (j < g) markLoopCutOff();
 }
@@ -122,6 +142,7 @@ vec3 cameraSampleRadiance(vec3 origin, vec3 dir, SampleKey key) {
         if (!chargeLoop()) break;
         PathQueue q;
         q.hasNext = false;
+        q.hasExtra = false;
         Hit hit;
         if (!traceScene(ray.origin, ray.dir, FLT_MAX, false, hit)) {
             radiance += ray.weight * background;
@@ -163,6 +184,7 @@ vec3 cameraSampleRadiance(vec3 origin, vec3 dir, SampleKey key) {
                 }
             }
         }
+        flushQueue(q);
         if (g_budgetExceeded) break;
         if (q.hasNext) {
             ray = q.next;
