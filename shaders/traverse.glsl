@@ -98,6 +98,9 @@ TraceRay rayIntoInstance(vec3 origin, vec3 dir, uint instance) {
 
 // An inner node's index (leaf entries, instance entries and the leave marker have bit 30 or 31 set).
 bool isNodeEntry(uint e) { return (e & (ENTRY_INSTANCE_BIT | ENTRY_LEAF_BIT)) == 0u; }
+bool isLeafEntry(uint e) { return (e & (ENTRY_INSTANCE_BIT | ENTRY_LEAF_BIT)) == ENTRY_LEAF_BIT; }
+// An instance to enter (top bit; the markers above ENTRY_REFILL have it too).
+bool isInstanceEntry(uint e) { return (e & ENTRY_INSTANCE_BIT) != 0u && e < ENTRY_REFILL; }
 
 // The stack entry for child K of a node: an inner node, a bottom-level leaf, or an instance.
 uint childEntry(uint link, uint count, bool inBottom) {
@@ -150,13 +153,22 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
 
     while (true) {
         if (!chargeLoop()) break;
-        // Top up: an empty register stack takes the array's top now, so the walk's next pop does
-        // not end the walk for a refill round (each round pays a primitive-test pass). GPU/CPU
-        // primary: buddha 0.65-0.67 -> 0.67-0.70, sphere:512 0.76 -> 0.84; two entries: no better.
-        if (held == 0u && sp > 0u) {
+        // 0. The array's only load: a refill (the walk or the last pop found the registers empty)
+        // takes its top as the entry; otherwise an empty register stack tops up from it, so the
+        // walk's next pop does not end the walk for a refill round (each round pays a primitive-test
+        // pass). Top-up, GPU/CPU primary: buddha 0.65-0.67 -> 0.67-0.70, sphere:512 0.76 -> 0.84.
+        // One load site and one store site (step 3): each is a per-lane loop that every lane runs
+        // on every round (host/vulkan/README.md).
+        bool refill = entry == ENTRY_REFILL;
+        if ((refill || held == 0u) && sp > 0u) {
             --sp;
-            r0 = stack[sp];
-            held = 1u;
+            uint top = stack[sp];
+            if (refill) {
+                entry = top;
+            } else {
+                r0 = top;
+                held = 1u;
+            }
         }
         // 1. Walk the tree until this lane holds a leaf, an instance to enter or leave, needs the
         // array (to spill a register entry or to refill from it), or has nothing left.
@@ -200,46 +212,28 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             }
         }
         if (finished || (!spilling && isNodeEntry(entry))) break;  // done, or cut off (checked below)
-        // 2. The array: a spilled register entry goes on top of it, a refill takes its top.
-        if (spilling) {
-            if (sp >= TRAVERSAL_STACK_SIZE) {
-                overflow = true;
-                break;
-            }
-            stack[sp] = spillEntry;
-            ++sp;
-            spilling = false;
-        }
-        if (entry == ENTRY_REFILL) {
-            --sp;
-            entry = stack[sp];
-            continue;
-        }
-        if (isNodeEntry(entry)) continue;  // spilled mid-walk: walk on
-        // 3. Enter an instance (its root is walked next), leave one, or intersect a leaf. Instance
+        // 2. Leave an instance, enter one (its root is walked next), or intersect a leaf. Instance
         // steps are here rather than in the walk so that the walk's passes do not pay for them.
+        bool consumed = false;  // `entry` is done with: take the next one
         if (HAS_INSTANCES && entry == ENTRY_LEAVE_INSTANCE) {
             ray = worldRay;
             inBottom = false;
-        } else if (HAS_INSTANCES && (entry & ENTRY_INSTANCE_BIT) != 0u) {
-            instance = entry & ~ENTRY_INSTANCE_BIT;
-            ray = rayIntoInstance(origin, dir, instance);
-            inBottom = true;
-            entry = instanceInfo(instance).x;
-            // The marker that returns to the top level, pushed like a node.
-            if (held == REG_STACK) {
-                if (sp >= TRAVERSAL_STACK_SIZE) {
-                    overflow = true;
-                    break;
-                }
-                stack[sp] = r3;
-                ++sp;
-            } else {
-                ++held;
+            consumed = true;
+        } else if (HAS_INSTANCES && isInstanceEntry(entry)) {
+            // The marker that returns to the top level is pushed like a node; the register it
+            // shifts out goes to the array below. A walk that spilled in this round comes first:
+            // the instance waits for the next round.
+            if (!spilling) {
+                instance = entry & ~ENTRY_INSTANCE_BIT;
+                ray = rayIntoInstance(origin, dir, instance);
+                inBottom = true;
+                entry = instanceInfo(instance).x;
+                spilling = held == REG_STACK;
+                spillEntry = r3;
+                if (!spilling) ++held;
+                shiftIn(r0, r1, r2, r3, ENTRY_LEAVE_INSTANCE);
             }
-            shiftIn(r0, r1, r2, r3, ENTRY_LEAVE_INSTANCE);
-            continue;
-        } else {
+        } else if (isLeafEntry(entry)) {
             uint first = (entry & ~ENTRY_LEAF_BIT) >> 4u;
             uint count = entry & 15u;
             uint i = 0u;
@@ -257,14 +251,28 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
                 }
             }
             if (i < count) markLoopCutOff();
+            consumed = true;
         }
-        // 4. The next entry.
+        // 3. The array's only store: the register entry that a push (the walk's, or the leave
+        // marker's) shifted out of full registers.
+        if (spilling) {
+            if (sp >= TRAVERSAL_STACK_SIZE) {
+                overflow = true;
+                break;
+            }
+            stack[sp] = spillEntry;
+            ++sp;
+            spilling = false;
+        }
+        // A node to walk (spilled mid-walk, or an instance's root), a refill or a waiting instance:
+        // the next round.
+        if (!consumed) continue;
+        // 4. The next entry: from the registers, else a refill at the next round's start, else done.
         if (held > 0u) {
             entry = shiftOut(r0, r1, r2, r3);
             --held;
         } else if (sp > 0u) {
-            --sp;
-            entry = stack[sp];
+            entry = ENTRY_REFILL;
         } else {
             finished = true;
             break;
