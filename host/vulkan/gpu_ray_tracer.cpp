@@ -195,6 +195,7 @@ std::vector<gpu::TraceHitOutput> GpuRayTracer::trace(std::span<const gpu::TraceR
             commands.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline);
             commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, m.layout.pipelineLayout(), 0, *m.set, {});
             commands.pushConstants<gpu::TraceParams>(m.layout.pipelineLayout(), vk::ShaderStageFlagBits::eCompute, 0, params);
+            // 1 x 1: trace_rays.comp reads its push constants at gl_NumWorkGroups.z - 1 (bindings.glsl).
             commands.dispatch((count + kLocalSize - 1) / kLocalSize, 1, 1);
             computeToHostBarrier(commands);
         });

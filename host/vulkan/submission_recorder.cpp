@@ -20,7 +20,7 @@ void recordWarmUp(const vk::raii::CommandBuffer& commands, vk::Pipeline pipeline
     commands.bindPipeline(vk::PipelineBindPoint::eCompute, pipeline);
     commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, layout, 0, set, {});
     commands.pushConstants<gpu::PassParams>(layout, vk::ShaderStageFlagBits::eCompute, 0, params);
-    commands.dispatch(1, 1, 1);
+    commands.dispatch(1, 1, 1);  // z = 1: see recordSubmission
     computeToHostBarrier(commands);
 }
 
@@ -36,7 +36,8 @@ void recordSubmission(const vk::raii::CommandBuffer& commands, vk::Pipeline pipe
         if (s > 0) computeToComputeBarrier(commands);  // pass s adds to the sums pass s-1 wrote
         commands.pushConstants<gpu::PassParams>(layout, vk::ShaderStageFlagBits::eCompute, 0, params);
         // The base offsets gl_WorkGroupID, so render.comp's block mapping sees workgroups
-        // [first, first + count) of the pass without knowing about partial dispatches.
+        // [first, first + count) of the pass without knowing about partial dispatches. Height and
+        // depth stay 1: the kernels read their uniforms at gl_NumWorkGroups.z - 1 (bindings.glsl).
         commands.dispatchBase(submission.firstWorkgroup, 0, 0, submission.workgroupCount, 1, 1);
     }
     computeToHostBarrier(commands);  // status (every submission) and accumulation (at the end)
