@@ -169,19 +169,17 @@ vec3 cameraSampleRadiance(vec3 origin, vec3 dir, SampleKey key) {
                 vec3 local = vec3(0.0);
                 if (type != SHADER_MIRROR)
                     local = directLighting(s, N, V, type, kd, ks, m.specular.w, ray.depth, key);
+                // The shares of local shading and of reflection: mirror 0 and 1, glaze 1 and m,
+                // mirrored Blinn-Phong 1 - m and m, the others 1 and none (RENDERING.md §5). One
+                // emitReflection call for the three reflecting shaders, not one each: lavapipe runs
+                // every inlined copy of its gloss loop on every path step, whatever the shader.
                 float mirror = m.params.x;
-                if (!HAS_REFLECTION || type == SHADER_LAMBERTIAN || type == SHADER_BLINN_PHONG ||
-                    type == SHADER_COOL_TO_WARM) {
-                    radiance += ray.weight * local;
-                } else if (type == SHADER_MIRROR) {
-                    emitReflection(q, ray, s, N, m.params.y, ray.weight, key);
-                } else if (type == SHADER_GLAZE) {
-                    radiance += ray.weight * local;
-                    emitReflection(q, ray, s, N, m.params.y, ray.weight * mirror, key);
-                } else {  // SHADER_BLINN_PHONG_MIRRORED
-                    radiance += ray.weight * (1.0 - mirror) * local;
-                    emitReflection(q, ray, s, N, m.params.y, ray.weight * mirror, key);
-                }
+                bool reflects = HAS_REFLECTION && (type == SHADER_MIRROR || type == SHADER_GLAZE ||
+                                                   type == SHADER_BLINN_PHONG_MIRRORED);
+                float localShare = !reflects || type == SHADER_GLAZE ? 1.0 : (type == SHADER_MIRROR ? 0.0 : 1.0 - mirror);
+                radiance += ray.weight * localShare * local;
+                if (reflects)
+                    emitReflection(q, ray, s, N, m.params.y, ray.weight * (type == SHADER_MIRROR ? 1.0 : mirror), key);
             }
         }
         flushQueue(q);
