@@ -12,8 +12,9 @@ runs, so this script samples first, then copies the sampled address ranges out o
 /proc/PID/mem and disassembles them with objdump. A backward jump marks a loop; the loop that
 holds most samples is the traversal's main loop, and the loops inside it are the walk and the
 leaf tests (shaders/traverse.glsl). Give the command enough work to outlast --wait + --seconds
-(it is stopped afterwards). Needs perf (Debian: linux-perf) and objdump (binutils), as root or
-with kernel.perf_event_paranoid <= 1.
+(it is stopped afterwards), and give the renderer itself, not a wrapper such as `env` or a shell
+(perf samples the process it starts; set variables before this script instead). Needs perf
+(Debian: linux-perf) and objdump (binutils), as root or with kernel.perf_event_paranoid <= 1.
 """
 import argparse
 import os
@@ -29,14 +30,17 @@ REGION_GAP = 4096  # sampled addresses closer than this belong to one block of J
 
 
 def sampled_jit_addresses(perf_data):
-    """Unresolved sample addresses (perf prints them as 0x... symbols) -> share in percent."""
-    report = subprocess.run(["perf", "report", "-i", perf_data, "--no-children", "--sort", "sym", "--stdio"],
-                            capture_output=True, text=True).stdout
+    """Sample addresses in JIT code (perf's [JIT] or [unknown] objects) -> share in percent."""
+    report = subprocess.run(["perf", "report", "-i", perf_data, "--no-children", "--sort", "dso,sym", "--stdio"],
+                            capture_output=True, text=True)
+    if report.returncode != 0:
+        sys.exit(f"profile_jit: perf report failed: {report.stderr.strip()}")
     shares = {}
-    for line in report.splitlines():
-        m = re.match(r"\s*([0-9.]+)%\s+\[\.\]\s+0x([0-9a-f]+)\s*$", line)
-        if m:
-            shares[int(m.group(2), 16)] = float(m.group(1))
+    for line in report.stdout.splitlines():
+        m = re.match(r"\s*([0-9.]+)%\s+(.*?)\s+\[\.\]\s+0x([0-9a-f]+)\s*$", line)
+        # A stripped library's unresolved samples also print as bare offsets: keep JIT code only.
+        if m and ("[JIT]" in m.group(2) or "[unknown]" in m.group(2)):
+            shares[int(m.group(3), 16)] = float(m.group(1))
     return shares
 
 
@@ -52,9 +56,13 @@ def regions(addresses):
 
 def disassemble(pid, lo, hi):
     """(address, text) of each instruction in [lo, hi], read from the live process."""
-    start, size = lo - 64, hi - lo + 128
+    start, size = lo, hi - lo + 64  # sampled addresses start instructions: decode from the first
     code = bytearray()
-    with open(f"/proc/{pid}/mem", "rb", buffering=0) as mem:
+    try:
+        mem = open(f"/proc/{pid}/mem", "rb", buffering=0)
+    except OSError as error:
+        sys.exit(f"profile_jit: cannot read the process's memory ({error}); run as root or allow ptrace")
+    with mem:
         # Page by page: a span of samples can cross pages that are not mapped (or were unmapped
         # since); those read as zero bytes rather than failing the whole read.
         address = start
@@ -111,8 +119,11 @@ def main():
                      "give it more work or a shorter --wait")
         with tempfile.TemporaryDirectory() as tmp:
             perf_data = os.path.join(tmp, "perf.data")
-            subprocess.run(["perf", "record", "-q", "-p", str(process.pid), "-o", perf_data, "sleep", str(args.seconds)],
-                           stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
+            record = subprocess.run(["perf", "record", "-q", "-p", str(process.pid), "-o", perf_data, "sleep", str(args.seconds)],
+                                    stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+            if record.returncode != 0:
+                sys.exit(f"profile_jit: perf record failed: {record.stderr.strip()} "
+                         "(root, or kernel.perf_event_paranoid <= 1)")
             shares = sampled_jit_addresses(perf_data)
             if process.poll() is not None:
                 sys.exit("profile_jit: the command ended while sampling; its JIT code is gone (give it more work)")
