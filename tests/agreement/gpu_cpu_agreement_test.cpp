@@ -112,6 +112,17 @@ TEST(GpuCpuAgreement, EveryUpstreamAndBundledSceneAt64x64) {
     }
 }
 
+// Several gloss and light samples per pixel sample: the only settings where one hit emits more
+// than one reflected ray (the path stack, integrator.glsl) and an area light takes several
+// shadow rays per sample. A lost or repeated gloss ray changes every glossy reflection.
+TEST(GpuCpuAgreement, GlossAndLightSampleFanOut) {
+    RenderOptions options = small(128, 4);
+    options.glossSamples = 4;
+    options.lightSamples = 4;
+    renderBothAndCompare(test::upstreamDir() + "/glossinessTest.xml", options);
+    renderBothAndCompare(test::upstreamDir() + "/threeEggs_SoftShadows.xml", options);
+}
+
 // 256x256 at 16 rpp (the instructor's sampling), one scene per feature the kernel specialises on.
 class GpuCpuAgreementLarge : public ::testing::TestWithParam<const char*> {};
 
