@@ -45,10 +45,19 @@ layout(set = 0, binding = BINDING_TEXELS, r32ui) uniform readonly uimageBuffer t
 #define VKRT_UNIFORM_INDEX (gl_NumWorkGroups.z - 1u)
 layout(std140, set = 0, binding = BINDING_FRAME) uniform FrameBuffer { FrameParams frames[1]; };
 #define frame frames[VKRT_UNIFORM_INDEX]
-layout(std430, set = 0, binding = BINDING_ACCUM) buffer AccumBuffer { vec4 accum[]; };
+// The per-pixel sums, a texel buffer rather than an SSBO: on lavapipe an SSBO load at per-lane
+// addresses is a loop over the lanes, one scalar load (and cache miss) at a time, while imageLoad
+// is a gather (host/vulkan/README.md).
+layout(set = 0, binding = BINDING_ACCUM, rgba32ui) uniform uimageBuffer accumTexels;
 layout(std430, set = 0, binding = BINDING_STATUS) coherent buffer StatusBuffer { RenderStatus status; };
 
 uvec4 loadPrimInfo(uint i) { return imageLoad(primInfoTexels, int(i)); }
+
+// Adds one sample's radiance to a pixel's sum (one invocation per pixel per pass: no race).
+void accumulate(uint pixel, vec3 radiance) {
+    vec4 sum = uintBitsToFloat(imageLoad(accumTexels, int(pixel)));
+    imageStore(accumTexels, int(pixel), floatBitsToUint(vec4(sum.rgb + radiance, sum.w)));
+}
 
 VertexAttrib loadVertexAttrib(uint i) {
     int t = int(i * VERTEX_ATTRIB_TEXELS);

@@ -63,5 +63,5 @@ void main() {
         atomicAdd(status.flags.w, 1u);
         radiance = vec3(0.0);
     }
-    accum[key.pixel].rgb += radiance;
+    accumulate(key.pixel, radiance);
 }

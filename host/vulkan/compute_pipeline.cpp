@@ -61,7 +61,7 @@ KernelLayout renderLayout(const Context& context) {
         computeBinding(gpu::BINDING_TEXTURES, T::eStorageTexelBuffer),
         computeBinding(gpu::BINDING_TEXELS, T::eStorageTexelBuffer),
         computeBinding(gpu::BINDING_FRAME, T::eUniformBuffer),
-        computeBinding(gpu::BINDING_ACCUM, T::eStorageBuffer),
+        computeBinding(gpu::BINDING_ACCUM, T::eStorageTexelBuffer),
         computeBinding(gpu::BINDING_STATUS, T::eStorageBuffer),
     };
     return KernelLayout(context, bindings, sizeof(gpu::PassParams));

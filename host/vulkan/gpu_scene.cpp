@@ -50,7 +50,8 @@ std::vector<BufferPlan> planSceneBuffers(const SceneTables& tables, const bvh::S
     plan[gpu::BINDING_TEXTURES] = {"texture info", BufferKind::StorageTexel, texels(bytesOf(tables.textures))};
     plan[gpu::BINDING_TEXELS] = {"texels", BufferKind::StorageTexel, texels(bytesOf(tables.texels)), 4};
     plan[gpu::BINDING_FRAME] = {"frame parameters", BufferKind::Uniform, sizeof(gpu::FrameParams)};
-    plan[gpu::BINDING_ACCUM] = {"accumulation (one vec4 per pixel)", BufferKind::Storage, std::max<std::uint64_t>(1, pixels) * sizeof(glm::vec4)};
+    plan[gpu::BINDING_ACCUM] = {"accumulation (one vec4 per pixel)", BufferKind::StorageTexel,
+                                texels(std::max<std::uint64_t>(1, pixels) * sizeof(glm::vec4))};
     plan[gpu::BINDING_STATUS] = {"render status", BufferKind::Storage, sizeof(gpu::RenderStatus)};
     return plan;
 }

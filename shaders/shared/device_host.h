@@ -41,7 +41,7 @@ VKRT_CONST uint BINDING_LIGHTS = 6;        // Light[]
 VKRT_CONST uint BINDING_TEXTURES = 7;      // TextureInfo[]
 VKRT_CONST uint BINDING_TEXELS = 8;        // readonly uimageBuffer R32UI: RGBA8 packed texels of all textures
 VKRT_CONST uint BINDING_FRAME = 9;         // UBO FrameParams
-VKRT_CONST uint BINDING_ACCUM = 10;        // SSBO vec4[] per-pixel radiance sum (rgb), w unused
+VKRT_CONST uint BINDING_ACCUM = 10;        // uimageBuffer RGBA32UI: per-pixel radiance sum (rgb float bits), w unused
 VKRT_CONST uint BINDING_STATUS = 11;       // SSBO RenderStatus
 VKRT_CONST uint BINDING_RAYS = 12;         // trace_rays.comp only: readonly uimageBuffer RGBA32UI, TraceRayInput = 2 texels
 VKRT_CONST uint BINDING_HITS = 13;         // trace_rays.comp only: writeonly uimageBuffer RGBA32UI, TraceHitOutput = 1 texel

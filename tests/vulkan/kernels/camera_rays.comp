@@ -20,5 +20,5 @@ void main() {
     float a = frame.cameraU.w * ((float(x) + jitter.x) / float(frame.image.x) - 0.5);
     float b = frame.cameraV.w * (0.5 - (float(y) + jitter.y) / float(frame.image.y));
     vec3 dir = normalize(-frame.cameraW.w * frame.cameraW.xyz + a * frame.cameraU.xyz + b * frame.cameraV.xyz);
-    accum[pixel].rgb += dir + vec3(0.0, 0.0, float(sampleIndex) / 64.0);
+    addToPixel(pixel, dir + vec3(0.0, 0.0, float(sampleIndex) / 64.0));
 }

@@ -18,5 +18,5 @@ void main() {
                 bitIf(HAS_REFLECTION, SPEC_HAS_REFLECTION) | bitIf(HAS_GLOSS, SPEC_HAS_GLOSS) |
                 bitIf(HAS_DIELECTRIC, SPEC_HAS_DIELECTRIC) | bitIf(HAS_TEXTURES, SPEC_HAS_TEXTURES) |
                 bitIf(HAS_COOL_TO_WARM, SPEC_HAS_COOL_TO_WARM);
-    accum[y * frame.image.x + x].rgb += vec3(float(mask), float(MAX_DEPTH), float(PATH_STACK_SIZE));
+    addToPixel(y * frame.image.x + x, vec3(float(mask), float(MAX_DEPTH), float(PATH_STACK_SIZE)));
 }

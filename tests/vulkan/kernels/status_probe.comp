@@ -15,5 +15,5 @@ void main() {
         atomicOr(status.flags.x, HAS_GLOSS ? STATUS_RAY_STACK_OVERFLOW : STATUS_LOOP_BUDGET_EXCEEDED);
         if (atomicCompSwap(status.flags.y, 0u, pixel + 1u) == 0u) status.flags.z = pass.pass.x;
     }
-    accum[pixel].rgb += vec3(1.0);
+    addToPixel(pixel, vec3(1.0));
 }

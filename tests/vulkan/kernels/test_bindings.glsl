@@ -23,7 +23,12 @@ layout(set = 0, binding = BINDING_PRIMS, rgba32ui) uniform readonly uimageBuffer
 layout(set = 0, binding = BINDING_SHADERS, rgba32ui) uniform readonly uimageBuffer materialTexels;
 layout(set = 0, binding = BINDING_LIGHTS, rgba32ui) uniform readonly uimageBuffer lightTexels;
 layout(std140, set = 0, binding = BINDING_FRAME) uniform FrameBuffer { FrameParams frame; };
-layout(std430, set = 0, binding = BINDING_ACCUM) buffer AccumBuffer { vec4 accum[]; };
+layout(set = 0, binding = BINDING_ACCUM, rgba32ui) uniform uimageBuffer accumTexels;
+
+void addToPixel(uint pixel, vec3 value) {
+    vec4 sum = uintBitsToFloat(imageLoad(accumTexels, int(pixel)));
+    imageStore(accumTexels, int(pixel), floatBitsToUint(vec4(sum.rgb + value, sum.w)));
+}
 layout(std430, set = 0, binding = BINDING_STATUS) coherent buffer StatusBuffer { RenderStatus status; };
 
 layout(push_constant) uniform PushConstants { PassParams pass; };
