@@ -125,6 +125,20 @@ uint shiftOut(inout uint r0, inout uint r1, inout uint r2, uint r3) {
     return top;
 }
 
+// The next entry: the top register, else a refill from the array at the next round's start
+// (ENTRY_REFILL), else nothing is left (finished).
+void popEntry(inout uint entry, inout uint held, inout uint r0, inout uint r1, inout uint r2, uint r3, uint sp,
+              inout bool finished) {
+    if (held > 0u) {
+        entry = shiftOut(r0, r1, r2, r3);
+        --held;
+    } else if (sp > 0u) {
+        entry = ENTRY_REFILL;
+    } else {
+        finished = true;
+    }
+}
+
 bool g_rayStackOverflow = false;  // a traversal stack overflowed (STATUS_RAY_STACK_OVERFLOW)
 
 // Closest hit (anyHit = false) or any hit (shadow rays) with 0 < t < tMax.
@@ -199,17 +213,7 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             spillEntry = r3;
             if (push) shiftIn(r0, r1, r2, r3, pushed);
             if (push && !spilling) ++held;
-            // Pop: from the registers, else mark a refill from the array, else done.
-            if (!descend) {
-                if (held > 0u) {
-                    entry = shiftOut(r0, r1, r2, r3);
-                    --held;
-                } else if (sp > 0u) {
-                    entry = ENTRY_REFILL;
-                } else {
-                    finished = true;
-                }
-            }
+            if (!descend) popEntry(entry, held, r0, r1, r2, r3, sp, finished);
         }
         if (finished || (!spilling && isNodeEntry(entry))) break;  // done, or cut off (checked below)
         // 2. Leave an instance, enter one (its root is walked next), or intersect a leaf. Instance
@@ -267,16 +271,9 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
         // A node to walk (spilled mid-walk, or an instance's root), a refill or a waiting instance:
         // the next round.
         if (!consumed) continue;
-        // 4. The next entry: from the registers, else a refill at the next round's start, else done.
-        if (held > 0u) {
-            entry = shiftOut(r0, r1, r2, r3);
-            --held;
-        } else if (sp > 0u) {
-            entry = ENTRY_REFILL;
-        } else {
-            finished = true;
-            break;
-        }
+        // 4. The next entry.
+        popEntry(entry, held, r0, r1, r2, r3, sp, finished);
+        if (finished) break;
     }
     // Reported by the kernel's entry point, once per invocation: an atomic is a per-lane loop on
     // lavapipe that runs wherever it is inlined, taken or not (host/vulkan/README.md).
