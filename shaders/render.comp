@@ -52,9 +52,7 @@ void main() {
 
     // One atomic site for every failure (each inlined atomic is a per-lane loop that runs whether
     // or not a lane takes it); the first failing pixel and sample are recorded for the message.
-    uint failures = (g_budgetExceeded ? STATUS_LOOP_BUDGET_EXCEEDED : 0u) |
-                    (g_loopCutOff && !g_budgetExceeded ? STATUS_LOOP_CUT_OFF : 0u) |
-                    (g_rayStackOverflow ? STATUS_RAY_STACK_OVERFLOW : 0u);
+    uint failures = failureFlags();
     if (failures != 0u) {
         atomicOr(status.flags.x, failures);
         if (atomicCompSwap(status.flags.y, 0u, key.pixel + 1u) == 0u) status.flags.z = key.index;

@@ -28,9 +28,7 @@ void main() {
     bool found = traceScene(origin.xyz, direction, origin.w, trace.rays.y != 0u, hit);
     // Failures travel in the hit's w (STATUS_* bits), read by the host with the hits: no atomics,
     // which would be a per-lane loop for every ray on lavapipe.
-    uint failures = (g_budgetExceeded ? STATUS_LOOP_BUDGET_EXCEEDED : 0u) |
-                    (g_loopCutOff && !g_budgetExceeded ? STATUS_LOOP_CUT_OFF : 0u) |
-                    (g_rayStackOverflow ? STATUS_RAY_STACK_OVERFLOW : 0u);
+    uint failures = failureFlags();
     imageStore(hits, int(i), found ? uvec4(floatBitsToUint(hit.t), hit.prim, hit.instance, failures)
                                    : uvec4(0xffffffffu, 0u, 0u, failures));
 }

@@ -38,7 +38,7 @@ struct Hit {
 const uint ENTRY_INSTANCE_BIT = 0x80000000u;
 const uint ENTRY_LEAVE_INSTANCE = 0xffffffffu;
 const uint ENTRY_NONE = 0xfffffffeu;
-const uint ENTRY_REFILL = 0xfffffffdu;  // the walk's pop found the registers empty: take the array's top
+const uint ENTRY_REFILL = 0xfffffffdu;  // a pop found the registers empty: the next round takes the array's top
 const uint REG_STACK = 4u;  // stack entries kept in registers
 
 vec3 texelFloats(uvec4 t) { return uintBitsToFloat(t.xyz); }
@@ -140,6 +140,14 @@ void popEntry(inout uint entry, inout uint held, inout uint r0, inout uint r1, i
 }
 
 bool g_rayStackOverflow = false;  // a traversal stack overflowed (STATUS_RAY_STACK_OVERFLOW)
+
+// The invocation's failures as STATUS_* bits: the entry point reports them once (an atomic where
+// they arise would be a per-lane loop on lavapipe; see the end of traceScene).
+uint failureFlags() {
+    return (g_budgetExceeded ? STATUS_LOOP_BUDGET_EXCEEDED : 0u) |
+           (g_loopCutOff && !g_budgetExceeded ? STATUS_LOOP_CUT_OFF : 0u) |
+           (g_rayStackOverflow ? STATUS_RAY_STACK_OVERFLOW : 0u);
+}
 
 // Closest hit (anyHit = false) or any hit (shadow rays) with 0 < t < tMax.
 bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
