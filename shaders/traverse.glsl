@@ -1,9 +1,9 @@
 // Two-level BVH traversal: iterative, with a fixed stack (no recursion in GLSL).
-// Nodes hold both children's boxes (64 bytes, 4 texels), so each step decides both children
-// from one contiguous fetch. Each pass of the main loop walks inner nodes (an inner loop, one node's
-// two children per pass) until the lane holds something else, then handles it: intersects a
-// bottom-level leaf's primitives (a second inner loop: "while-while", Aila & Laine 2009), enters
-// an instance or leaves one. A far leaf is pushed like a node, as a packed entry (device_host.h,
+// Nodes hold both children's boxes and stack entries (48 bytes, 3 texels: device_host.h,
+// GpuBvhNode), so each step decides both children from one contiguous fetch. Each pass of the
+// main loop walks inner nodes (an inner loop, one node's two children per pass) until the lane
+// holds something else, then handles it: intersects a bottom-level leaf's primitives (a second
+// inner loop: "while-while", Aila & Laine 2009), enters an instance or leaves one. A far leaf is pushed like a node, as a packed entry (device_host.h,
 // ENTRY_LEAF_BIT).
 // Why this shape: lavapipe (Mesa 22.3) runs every statement of a loop body for all 8 lanes, masked,
 // whatever the branch conditions, and a loop body runs at least once (host/vulkan/README.md). So
@@ -33,11 +33,10 @@ struct Hit {
     vec2 bary;      // triangle: barycentric weights of v1 and v2
 };
 
-// Stack entries: an inner node index, an instance to enter (top bit set), or the marker that
-// returns from an instance's bottom level to the top level.
-const uint ENTRY_INSTANCE_BIT = 0x80000000u;
+// Stack entries: an inner node index, a bottom-level leaf, an instance to enter (device_host.h:
+// the host writes these into the nodes), or the kernel's own markers: the one that returns from
+// an instance's bottom level to the top level, and a refill.
 const uint ENTRY_LEAVE_INSTANCE = 0xffffffffu;
-const uint ENTRY_NONE = 0xfffffffeu;
 const uint ENTRY_REFILL = 0xfffffffdu;  // a pop found the registers empty: the next round takes the array's top
 const uint REG_STACK = 4u;  // stack entries kept in registers
 
@@ -102,11 +101,12 @@ bool isLeafEntry(uint e) { return (e & (ENTRY_INSTANCE_BIT | ENTRY_LEAF_BIT)) ==
 // An instance to enter (top bit; the markers above ENTRY_REFILL have it too).
 bool isInstanceEntry(uint e) { return (e & ENTRY_INSTANCE_BIT) != 0u && e < ENTRY_REFILL; }
 
-// The stack entry for child K of a node: an inner node, a bottom-level leaf, or an instance.
-uint childEntry(uint link, uint count, bool inBottom) {
-    if (count == 0u) return link;
-    if (!inBottom) return ENTRY_INSTANCE_BIT | link;  // top-level leaves hold one instance
-    return ENTRY_LEAF_BIT | (link << 4u) | count;  // device_host.h: the host checked it fits
+// Child K's stack entry, carried in the low bits of its box floats (device_host.h, GpuBvhNode).
+uint nodeChildEntry(uvec4 xy, uvec2 z) {
+    const uint xyMask = (1u << NODE_ENTRY_XY_BITS) - 1u;
+    return (xy.x & xyMask) | ((xy.y & xyMask) << NODE_ENTRY_XY_BITS) | ((xy.z & xyMask) << (2u * NODE_ENTRY_XY_BITS)) |
+           ((xy.w & xyMask) << (3u * NODE_ENTRY_XY_BITS)) | ((z.x & ((1u << NODE_ENTRY_Z_BITS) - 1u)) << (4u * NODE_ENTRY_XY_BITS)) |
+           (z.y << (4u * NODE_ENTRY_XY_BITS + NODE_ENTRY_Z_BITS));
 }
 
 // The stack's register part, r0 on top (REG_STACK entries; see the header): a push shifts the
@@ -168,7 +168,6 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
     bool spilling = false;
     uint spillEntry = ENTRY_NONE;
     uint instance = 0u;
-    bool inBottom = !HAS_INSTANCES;
     uint entry = HAS_INSTANCES ? frame.scene.w : instanceInfo(0u).x;
     bool finished = false;
     bool overflow = false;
@@ -196,21 +195,20 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
         // array (to spill a register entry or to refill from it), or has nothing left.
         while (!finished && !spilling && isNodeEntry(entry)) {
             if (!chargeLoop()) break;
-            int base = int(entry * BVH_NODE_TEXELS);
+            int base = int(entry * GPU_NODE_TEXELS);
             uvec4 xy0 = imageLoad(bvhNodes, base);
             uvec4 xy1 = imageLoad(bvhNodes, base + 1);
             uvec4 z01 = imageLoad(bvhNodes, base + 2);
-            uvec4 link = imageLoad(bvhNodes, base + 3);
             vec4 fxy0 = uintBitsToFloat(xy0);
             vec4 fxy1 = uintBitsToFloat(xy1);
             vec4 fz = uintBitsToFloat(z01);
             float tNear0, tNear1;
             bool box0 = hitsBox(ray, vec3(fxy0.x, fxy0.z, fz.x), vec3(fxy0.y, fxy0.w, fz.y), hit.t, tNear0);
             bool box1 = hitsBox(ray, vec3(fxy1.x, fxy1.z, fz.z), vec3(fxy1.y, fxy1.w, fz.w), hit.t, tNear1);
-            bool hit0 = box0 && (link.z != 0u || link.x != NODE_NONE);
-            bool hit1 = box1 && (link.w != 0u || link.y != NODE_NONE);
-            uint next0 = childEntry(link.x, link.z, inBottom);
-            uint next1 = childEntry(link.y, link.w, inBottom);
+            uint next0 = nodeChildEntry(xy0, z01.xy);
+            uint next1 = nodeChildEntry(xy1, z01.zw);
+            bool hit0 = box0 && next0 != ENTRY_NONE;
+            bool hit1 = box1 && next1 != ENTRY_NONE;
             bool nearFirst = !(hit0 && hit1 && tNear1 < tNear0);
             bool push = hit0 && hit1;
             uint pushed = nearFirst ? next1 : next0;
@@ -229,7 +227,6 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
         bool consumed = false;  // `entry` is done with: take the next one
         if (HAS_INSTANCES && entry == ENTRY_LEAVE_INSTANCE) {
             ray = worldRay;
-            inBottom = false;
             consumed = true;
         } else if (HAS_INSTANCES && isInstanceEntry(entry)) {
             // The marker that returns to the top level is pushed like a node; the register it
@@ -238,7 +235,6 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             if (!spilling) {
                 instance = entry & ~ENTRY_INSTANCE_BIT;
                 ray = rayIntoInstance(origin, dir, instance);
-                inBottom = true;
                 entry = instanceInfo(instance).x;
                 spilling = held == REG_STACK;
                 spillEntry = r3;

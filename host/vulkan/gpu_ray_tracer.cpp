@@ -11,6 +11,7 @@
 #include "feature_set.h"
 #include "kernel_cache.h"
 #include "kernel_source.h"
+#include "node_packing.h"
 #include "traversal_stack.h"
 #include "vulkan_errors.h"
 
@@ -110,12 +111,12 @@ std::uint32_t batchRays(const Context& context) {
 std::uint32_t checkedBatch(const Context& context, const bvh::SceneBvh& bvh) {
     const std::uint32_t batch = batchRays(context);
     const BufferLimits& limits = context.limits();
-    checkBufferFits(limits, "BVH nodes", BufferKind::StorageTexel, stableTexelBufferBytes(paddedBytes(bvh.nodes)));
+    checkBufferFits(limits, "BVH nodes", BufferKind::StorageTexel, stableTexelBufferBytes(packedNodeBytes(bvh)));
     checkBufferFits(limits, "primitives", BufferKind::StorageTexel, stableTexelBufferBytes(paddedBytes(bvh.prims)));
     checkBufferFits(limits, "instances", BufferKind::StorageTexel, stableTexelBufferBytes(paddedBytes(bvh.instances)));
     checkBufferFits(limits, "rays", BufferKind::StorageTexel, rayBytes(batch));
     checkBufferFits(limits, "hits", BufferKind::StorageTexel, hitBytes(batch));
-    checkTotalFits(limits, stableTexelBufferBytes(paddedBytes(bvh.nodes)) + stableTexelBufferBytes(paddedBytes(bvh.prims)) +
+    checkTotalFits(limits, stableTexelBufferBytes(packedNodeBytes(bvh)) + stableTexelBufferBytes(paddedBytes(bvh.prims)) +
                                stableTexelBufferBytes(paddedBytes(bvh.instances)) + rayBytes(batch) + hitBytes(batch));
     checkTraversalStack(bvh, needsTopLevel(bvh));
     return batch;
@@ -127,7 +128,7 @@ GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& opt
     : context(contextOptionsOf(options)), runner(context), transfers(context, runner), layout(traceLayout(context)),
       kernels(context, layout, loadKernel(traceSource(options))), features(traversalFeatures(bvh)),
       batch(checkedBatch(context, bvh)),
-      nodes(context, "BVH nodes", stableTexelBufferBytes(paddedBytes(bvh.nodes)), kTexels, MemoryUse::Device),
+      nodes(context, "BVH nodes", stableTexelBufferBytes(packedNodeBytes(bvh)), kTexels, MemoryUse::Device),
       prims(context, "primitives", stableTexelBufferBytes(paddedBytes(bvh.prims)), kTexels, MemoryUse::Device),
       instances(context, "instances", stableTexelBufferBytes(paddedBytes(bvh.instances)), kTexels, MemoryUse::Device),
       frame(context, "frame parameters", sizeof(gpu::FrameParams),
@@ -137,7 +138,7 @@ GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& opt
       status(context, "render status", sizeof(gpu::RenderStatus), kStorage, MemoryUse::Shared),
       rays(context, "rays", rayBytes(batch), kTexels, MemoryUse::Device),
       hits(context, "hits", hitBytes(batch), kTexels | vk::BufferUsageFlagBits::eTransferSrc, MemoryUse::Device) {
-    transfers.upload(nodes, bytesOf(bvh.nodes));
+    transfers.upload(nodes, bytesOf(packNodes(bvh)));
     transfers.upload(prims, bytesOf(bvh.prims));
     transfers.upload(instances, bytesOf(bvh.instances));
     gpu::FrameParams params{};

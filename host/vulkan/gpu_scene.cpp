@@ -5,6 +5,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "node_packing.h"
+
 namespace vkrt {
 
 namespace {
@@ -40,7 +42,8 @@ std::vector<BufferPlan> planSceneBuffers(const SceneTables& tables, const bvh::S
     // Every table the kernel reads is a texel buffer, sized past the lengths that change lavapipe's
     // JIT key (stableTexelBufferBytes, buffer.h).
     auto texels = [](std::uint64_t bytes) { return stableTexelBufferBytes(bytes); };
-    plan[gpu::BINDING_NODES] = {"BVH nodes", BufferKind::StorageTexel, texels(bytesOf(bvh.nodes))};
+    plan[gpu::BINDING_NODES] = {"BVH nodes", BufferKind::StorageTexel,
+                                texels(packedNodeBytes(bvh))};
     plan[gpu::BINDING_PRIMS] = {"primitives", BufferKind::StorageTexel, texels(bytesOf(bvh.prims))};
     plan[gpu::BINDING_PRIM_INFO] = {"primitive info", BufferKind::StorageTexel, texels(bytesOf(tables.primInfos))};
     plan[gpu::BINDING_VERTEX_ATTRIBS] = {"vertex attributes", BufferKind::StorageTexel, texels(bytesOf(tables.vertexAttribs))};
@@ -81,7 +84,7 @@ GpuScene::GpuScene(const Context& context, Transfers& transfers, const KernelLay
     auto upload = [&](std::uint32_t binding, const auto& items) {
         transfers.upload(buffers_[binding], padded(items, plan[binding].bytes));
     };
-    upload(gpu::BINDING_NODES, bvh.nodes);
+    upload(gpu::BINDING_NODES, packNodes(bvh));
     upload(gpu::BINDING_PRIMS, bvh.prims);
     upload(gpu::BINDING_PRIM_INFO, tables.primInfos);
     upload(gpu::BINDING_VERTEX_ATTRIBS, tables.vertexAttribs);

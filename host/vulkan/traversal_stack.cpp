@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "node_packing.h"
 #include "vulkan_errors.h"
 
 namespace vkrt {
@@ -40,24 +41,16 @@ std::uint32_t traversalStackNeed(const bvh::SceneBvh& bvh, bool instancing) {
 }
 
 void checkLeafEntries(const bvh::SceneBvh& bvh) {
-    // Bottom levels only: top-level leaves are pushed as instance entries, not as leaf entries.
-    std::vector<std::uint32_t> pending;
-    for (const gpu::Instance& instance : bvh.instances)
-        if (instance.info.x != gpu::NODE_NONE) pending.push_back(instance.info.x);
-    std::vector<bool> seen(bvh.nodes.size(), false);
-    while (!pending.empty()) {
-        const std::uint32_t index = pending.back();
-        pending.pop_back();
-        if (index >= bvh.nodes.size()) throw std::logic_error("BVH node link " + std::to_string(index) + " is outside the nodes");
-        if (seen[index]) continue;  // instances share bottom levels
-        seen[index] = true;
+    // Bottom levels only (every node outside the top level, as packNodes classifies them):
+    // top-level leaves are instance entries, not leaf entries.
+    const std::vector<bool> topLevel = topLevelNodes(bvh);
+    for (std::uint32_t index = 0; index < bvh.nodes.size(); ++index) {
+        if (topLevel[index]) continue;
         const gpu::BvhNode& node = bvh.nodes[index];
         for (int child = 0; child < 2; ++child) {
             const std::uint32_t link = node.link[child];
             const std::uint32_t count = node.link[2 + child];
-            if (count == 0) {
-                if (link != gpu::NODE_NONE) pending.push_back(link);
-            } else if (count > gpu::LEAF_ENTRY_MAX_COUNT || link > gpu::LEAF_ENTRY_MAX_FIRST) {
+            if (count > 0 && (count > gpu::LEAF_ENTRY_MAX_COUNT || link > gpu::LEAF_ENTRY_MAX_FIRST)) {
                 throw DeviceLimitExceeded("BVH node " + std::to_string(index) + " has a leaf of " + std::to_string(count) +
                                           " primitives starting at primitive " + std::to_string(link) +
                                           "; the kernel's traversal stack packs at most " +

@@ -29,7 +29,7 @@ using ivec4 = glm::ivec4;
 
 // ---------------------------------------------------------------------------------------------
 // Descriptor set 0 bindings.
-VKRT_CONST uint BINDING_NODES = 0;         // readonly uimageBuffer RGBA32UI, BVH_NODE_TEXELS texels per node
+VKRT_CONST uint BINDING_NODES = 0;         // readonly uimageBuffer RGBA32UI, GpuBvhNode = GPU_NODE_TEXELS texels
 VKRT_CONST uint BINDING_PRIMS = 1;         // readonly uimageBuffer RGBA32UI, PRIM_TEXELS texels per primitive
 // The read-only tables below are RGBA32UI texel buffers too (uimageBuffer): each struct is its
 // vec4/uvec4 members in order, one texel each (the *_TEXELS counts, pinned by static_asserts).
@@ -47,8 +47,9 @@ VKRT_CONST uint BINDING_RAYS = 12;         // trace_rays.comp only: readonly uim
 VKRT_CONST uint BINDING_HITS = 13;         // trace_rays.comp only: writeonly uimageBuffer RGBA32UI, TraceHitOutput = 1 texel
 
 // ---------------------------------------------------------------------------------------------
-// BVH node: 64 bytes = 4 RGBA32UI texels, both children's boxes side by side (Aila & Laine 2009),
-// so one contiguous fetch per inner step decides both children.
+// BVH node as the builder writes it (SceneBvh::nodes; the CPU traversal's 4-wide copy is made from
+// it): 64 bytes, both children's boxes side by side (Aila & Laine 2009), so one contiguous fetch
+// per inner step decides both children. The kernels read it packed into 48 bytes (GpuBvhNode).
 //   texel 0: child 0 box  lo.x hi.x lo.y hi.y   (float bits)
 //   texel 1: child 1 box  lo.x hi.x lo.y hi.y   (float bits)
 //   texel 2: lo0.z hi0.z lo1.z hi1.z            (float bits)
@@ -59,7 +60,6 @@ VKRT_CONST uint BINDING_HITS = 13;         // trace_rays.comp only: writeonly ui
 // An empty child (countK == 0, linkK == NODE_NONE) stores lo = +FLT_MAX, hi = -FLT_MAX; a
 // min/max slab test would treat that inverted box as everything, so traversals skip an empty
 // child by its link, never by its box.
-VKRT_CONST uint BVH_NODE_TEXELS = 4;
 VKRT_CONST uint NODE_NONE = 0xffffffffu;
 // traverse.glsl keeps a bottom-level leaf on its stack as one 32-bit entry: ENTRY_LEAF_BIT, the
 // first primitive in bits 4..29 and the count in bits 0..3 (inner nodes are plain indices below
@@ -73,6 +73,29 @@ struct BvhNode {
     uvec4 xy1;
     uvec4 z01;
     uvec4 link;
+};
+
+// The node as the kernels read it: the builder's BvhNode above in 48 bytes = 3 RGBA32UI texels
+// (host/vulkan/node_packing.h packs it at upload). Texels 0-2 as in BvhNode, but each child's
+// link and count travel as its ready stack entry (traverse.glsl: an inner node's index,
+// ENTRY_LEAF_BIT | first << 4 | count for a bottom-level leaf, ENTRY_INSTANCE_BIT | instance for a
+// top-level leaf, ENTRY_NONE for an empty child) in the low bits of the child's own box floats:
+// NODE_ENTRY_XY_BITS bits in each of lo.x hi.x lo.y hi.y (entry bits 0-23), NODE_ENTRY_Z_BITS in
+// lo.z and hi.z (bits 24-31). The host rounds each bound outward to the nearest float with those
+// low bits, so the box the kernel reads contains the builder's box (looser by at most
+// 2 * 2^6 ulp = 2^-16 of the bound's magnitude in x and y, 2^-18 in z).
+// Why: lavapipe fetches a texel per lane (an address extract, a load and a transpose: about 40
+// instructions per texel), and the walk fetches one node per pass; the fourth texel cost
+// more than the bit unpacking.
+VKRT_CONST uint GPU_NODE_TEXELS = 3;
+VKRT_CONST uint NODE_ENTRY_XY_BITS = 6u;
+VKRT_CONST uint NODE_ENTRY_Z_BITS = 4u;
+VKRT_CONST uint ENTRY_INSTANCE_BIT = 0x80000000u;
+VKRT_CONST uint ENTRY_NONE = 0xfffffffeu;
+struct GpuBvhNode {
+    uvec4 xy0;
+    uvec4 xy1;
+    uvec4 z01;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -246,6 +269,8 @@ VKRT_CONST uint LOOP_BUDGET = 60000u;
 
 #ifdef __cplusplus
 static_assert(sizeof(BvhNode) == 64);
+static_assert(sizeof(GpuBvhNode) == 16 * GPU_NODE_TEXELS);
+static_assert(4 * NODE_ENTRY_XY_BITS + 2 * NODE_ENTRY_Z_BITS == 32);
 static_assert(sizeof(Primitive) == 48);
 static_assert(sizeof(PrimInfo) == 16 * PRIM_INFO_TEXELS);
 static_assert(sizeof(VertexAttrib) == 16 * VERTEX_ATTRIB_TEXELS);

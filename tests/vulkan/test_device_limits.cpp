@@ -141,7 +141,7 @@ TEST(SceneBuffers, PlanPadsEmptyTablesToOneElement) {
     EXPECT_EQ(plan[gpu::BINDING_SHADERS].kind, BufferKind::StorageTexel);
     EXPECT_EQ(plan[gpu::BINDING_TEXELS].bytes, stableTexelBufferBytes(4));
     EXPECT_EQ(plan[gpu::BINDING_TEXELS].texelBytes, 4u);
-    EXPECT_EQ(plan[gpu::BINDING_NODES].bytes, stableTexelBufferBytes(2 * sizeof(gpu::BvhNode)));
+    EXPECT_EQ(plan[gpu::BINDING_NODES].bytes, stableTexelBufferBytes(2 * sizeof(gpu::GpuBvhNode)));
     EXPECT_EQ(plan[gpu::BINDING_NODES].kind, BufferKind::StorageTexel);
     EXPECT_EQ(plan[gpu::BINDING_ACCUM].bytes, stableTexelBufferBytes(10 * 16));
     EXPECT_EQ(plan[gpu::BINDING_ACCUM].kind, BufferKind::StorageTexel);
@@ -214,6 +214,11 @@ TEST(TraversalStack, LeavesMustFitOneStackEntry) {
     b.nodes = chain(0, 3);  // the last node's children are leaves of one primitive each
     b.instances.resize(1);
     b.instances[0].info.x = 0;
+    // The top level: one node whose only child is instance 0.
+    gpu::BvhNode top = b.nodes[2];
+    top.link = glm::uvec4(0u, gpu::NODE_NONE, 1u, 0u);
+    b.nodes.push_back(top);
+    b.topRoot = 3;
     b.nodes[2].link = glm::uvec4(gpu::LEAF_ENTRY_MAX_FIRST, 0u, gpu::LEAF_ENTRY_MAX_COUNT, 1u);
     EXPECT_NO_THROW(checkTraversalStack(b, false));
     b.nodes[2].link.z = gpu::LEAF_ENTRY_MAX_COUNT + 1;
@@ -227,10 +232,7 @@ TEST(TraversalStack, LeavesMustFitOneStackEntry) {
     EXPECT_THROW(checkTraversalStack(b, false), DeviceLimitExceeded);
     // Top-level leaves are pushed as instance entries: their counts are not packed.
     b.nodes[2].link = glm::uvec4(0u, 0u, 1u, 1u);
-    gpu::BvhNode top = b.nodes[2];
-    top.link = glm::uvec4(0u, gpu::NODE_NONE, gpu::LEAF_ENTRY_MAX_COUNT + 5, 0u);
-    b.nodes.push_back(top);
-    b.topRoot = 3;
+    b.nodes[3].link = glm::uvec4(0u, gpu::NODE_NONE, gpu::LEAF_ENTRY_MAX_COUNT + 5, 0u);
     EXPECT_NO_THROW(checkTraversalStack(b, true));
 }
 

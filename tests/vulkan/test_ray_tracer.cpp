@@ -225,7 +225,7 @@ TEST_F(VulkanTest, RayTracerReportsARayOverTheLoopBudget) {
 TEST(GpuRayTracer, RefusesABvhOverTheLimit) {
     const bvh::SceneBvh scene = randomScene();
     GpuRendererOptions options;
-    options.maxBufferBytes = scene.nodes.size() * sizeof(gpu::BvhNode) - 16;  // one texel short
+    options.maxBufferBytes = scene.nodes.size() * sizeof(gpu::GpuBvhNode) - 16;  // one texel short of the packed nodes
     try {
         GpuRayTracer tracer(scene, options);
         FAIL() << "accepted";

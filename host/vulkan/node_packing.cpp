@@ -1,0 +1,124 @@
+#include "node_packing.h"
+
+#include <bit>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace vkrt {
+
+namespace {
+
+constexpr std::uint32_t kSignBit = 0x80000000u;
+constexpr std::uint32_t kInfinityBits = 0x7f800000u;
+
+std::uint32_t lowBits(std::uint32_t value, unsigned bits) { return value & ((1u << bits) - 1u); }
+
+}  // namespace
+
+std::uint32_t roundDownWithLowBits(float value, std::uint32_t payload, unsigned bits) {
+    if (!std::isfinite(value)) throw std::invalid_argument("a BVH box bound is not finite");
+    const std::uint32_t step = 1u << bits;
+    const std::uint32_t b = std::bit_cast<std::uint32_t>(value);
+    const std::uint32_t magnitude = b & ~kSignBit;
+    // Candidates with the payload come every `step` patterns. Among floats of one sign the bit
+    // pattern orders the magnitude, so: positive values go down by lowering the pattern,
+    // negative ones by raising it.
+    std::uint32_t candidate = (magnitude & ~(step - 1u)) | payload;
+    if ((b & kSignBit) == 0u) {
+        if (candidate <= magnitude) return candidate;
+        if (magnitude >= step) return candidate - step;
+        return kSignBit | payload;  // below +0 with that payload: the tiny negative one (<= 0 <= value)
+    }
+    if (candidate < magnitude) candidate += step;
+    if (candidate >= kInfinityBits)
+        throw std::invalid_argument("a BVH box bound (" + std::to_string(value) +
+                                    ") is too close to the largest float to be rounded outward");
+    return kSignBit | candidate;
+}
+
+std::uint32_t roundUpWithLowBits(float value, std::uint32_t payload, unsigned bits) {
+    // Negation flips the sign bit only: the smallest float >= v is minus the largest <= -v.
+    return roundDownWithLowBits(-value, payload, bits) ^ kSignBit;
+}
+
+std::uint32_t childStackEntry(const gpu::BvhNode& node, int k, bool topLevel) {
+    const std::uint32_t link = node.link[k];
+    const std::uint32_t count = node.link[2 + k];
+    if (count == 0) {
+        if (link == gpu::NODE_NONE) return gpu::ENTRY_NONE;
+        if ((link & (gpu::ENTRY_INSTANCE_BIT | gpu::ENTRY_LEAF_BIT)) != 0u)
+            throw std::logic_error("BVH node index " + std::to_string(link) + " does not fit a stack entry");
+        return link;
+    }
+    if (topLevel) {
+        // A top-level leaf is one instance (bvh_builder/top_level.cpp builds them so).
+        if (count != 1u || link >= gpu::ENTRY_NONE - gpu::ENTRY_INSTANCE_BIT - 1u)
+            throw std::logic_error("top-level BVH leaf of " + std::to_string(count) + " instances at " + std::to_string(link));
+        return gpu::ENTRY_INSTANCE_BIT | link;
+    }
+    if (count > gpu::LEAF_ENTRY_MAX_COUNT || link > gpu::LEAF_ENTRY_MAX_FIRST)
+        throw std::logic_error("BVH leaf of " + std::to_string(count) + " primitives at " + std::to_string(link) +
+                               " does not fit a stack entry (checkLeafEntries lets none through)");
+    return gpu::ENTRY_LEAF_BIT | (link << 4u) | count;
+}
+
+std::vector<bool> topLevelNodes(const bvh::SceneBvh& bvh) {
+    std::vector<bool> topLevel(bvh.nodes.size(), false);
+    std::vector<std::uint32_t> pending;
+    if (bvh.topRoot < bvh.nodes.size()) pending.push_back(bvh.topRoot);
+    while (!pending.empty()) {
+        const std::uint32_t index = pending.back();
+        pending.pop_back();
+        if (index >= bvh.nodes.size()) throw std::logic_error("BVH node link " + std::to_string(index) + " is outside the nodes");
+        if (topLevel[index]) throw std::logic_error("the top-level BVH's node links form a cycle");
+        topLevel[index] = true;
+        for (int k = 0; k < 2; ++k)
+            if (bvh.nodes[index].link[2 + k] == 0 && bvh.nodes[index].link[k] != gpu::NODE_NONE)
+                pending.push_back(bvh.nodes[index].link[k]);
+    }
+    return topLevel;
+}
+
+std::vector<gpu::GpuBvhNode> packNodes(const bvh::SceneBvh& bvh) {
+    const std::vector<bool> topLevel = topLevelNodes(bvh);
+    constexpr unsigned xyBits = gpu::NODE_ENTRY_XY_BITS, zBits = gpu::NODE_ENTRY_Z_BITS;
+    std::vector<gpu::GpuBvhNode> packed(bvh.nodes.size());
+    for (std::size_t i = 0; i < bvh.nodes.size(); ++i) {
+        const gpu::BvhNode& node = bvh.nodes[i];
+        gpu::GpuBvhNode& out = packed[i];
+        for (int k = 0; k < 2; ++k) {
+            const std::uint32_t entry = childStackEntry(node, k, topLevel[i]);
+            const glm::uvec4& xy = k == 0 ? node.xy0 : node.xy1;
+            glm::uvec4& packedXy = k == 0 ? out.xy0 : out.xy1;
+            // lo.x hi.x lo.y hi.y carry entry bits 0-23, lo.z and hi.z bits 24-31.
+            for (int c = 0; c < 4; ++c) {
+                const float bound = std::bit_cast<float>(xy[c]);
+                const std::uint32_t payload = lowBits(entry >> (xyBits * c), xyBits);
+                packedXy[c] = c % 2 == 0 ? roundDownWithLowBits(bound, payload, xyBits) : roundUpWithLowBits(bound, payload, xyBits);
+            }
+            const float loZ = std::bit_cast<float>(node.z01[2 * k]), hiZ = std::bit_cast<float>(node.z01[2 * k + 1]);
+            out.z01[2 * k] = roundDownWithLowBits(loZ, lowBits(entry >> (4 * xyBits), zBits), zBits);
+            out.z01[2 * k + 1] = roundUpWithLowBits(hiZ, lowBits(entry >> (4 * xyBits + zBits), zBits), zBits);
+        }
+    }
+    return packed;
+}
+
+PackedChildBox packedChildBox(const gpu::GpuBvhNode& node, int k) {
+    const glm::uvec4& xy = k == 0 ? node.xy0 : node.xy1;
+    auto f = [](std::uint32_t u) { return std::bit_cast<float>(u); };
+    return {{f(xy[0]), f(xy[2]), f(node.z01[2 * k])}, {f(xy[1]), f(xy[3]), f(node.z01[2 * k + 1])}};
+}
+
+std::uint32_t packedChildEntry(const gpu::GpuBvhNode& node, int k) {
+    constexpr unsigned xyBits = gpu::NODE_ENTRY_XY_BITS, zBits = gpu::NODE_ENTRY_Z_BITS;
+    const glm::uvec4& xy = k == 0 ? node.xy0 : node.xy1;
+    std::uint32_t entry = 0;
+    for (int c = 0; c < 4; ++c) entry |= lowBits(xy[c], xyBits) << (xyBits * c);
+    entry |= lowBits(node.z01[2 * k], zBits) << (4 * xyBits);
+    entry |= lowBits(node.z01[2 * k + 1], zBits) << (4 * xyBits + zBits);
+    return entry;
+}
+
+}  // namespace vkrt

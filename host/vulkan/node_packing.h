@@ -1,0 +1,46 @@
+// The builder's BVH nodes (gpu::BvhNode: exact boxes, explicit link and count) -> the 48-byte
+// nodes the kernels read (gpu::GpuBvhNode: each child's stack entry in the low bits of its box
+// floats, the boxes rounded outward to make room; shaders/shared/device_host.h).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "bvh.h"
+
+namespace vkrt {
+
+// The largest float <= value whose low `bits` bits are `payload` (as a bit pattern); the
+// smallest float >= value with them. Throws std::invalid_argument when there is none (value
+// within 2^bits ulp of the largest float, or infinite).
+std::uint32_t roundDownWithLowBits(float value, std::uint32_t payload, unsigned bits);
+std::uint32_t roundUpWithLowBits(float value, std::uint32_t payload, unsigned bits);
+
+// Which nodes belong to the top level (reachable from bvh.topRoot): their leaves are instances.
+// Every other node is bottom-level.
+std::vector<bool> topLevelNodes(const bvh::SceneBvh& bvh);
+
+// The kernel's stack entry for child k of bvh.nodes[index], where `topLevel` says whether the
+// node belongs to the top level (whose leaves are instances) or to a bottom level.
+std::uint32_t childStackEntry(const gpu::BvhNode& node, int k, bool topLevel);
+
+// Every node of bvh.nodes, in the same order (indices stay valid). Leaf entries must fit
+// (checkLeafEntries, traversal_stack.h, refuses a scene whose leaves do not): one that does not
+// is a std::logic_error here.
+std::vector<gpu::GpuBvhNode> packNodes(const bvh::SceneBvh& bvh);
+// The bytes packNodes returns (at least one node: an empty binding still needs a buffer).
+inline std::uint64_t packedNodeBytes(const bvh::SceneBvh& bvh) {
+    return std::max<std::uint64_t>(1, bvh.nodes.size()) * sizeof(gpu::GpuBvhNode);
+}
+
+// The box of child k as the kernel reads it from a packed node (what packNodes rounded outward).
+struct PackedChildBox {
+    float lo[3];
+    float hi[3];
+};
+PackedChildBox packedChildBox(const gpu::GpuBvhNode& node, int k);
+// The stack entry of child k as the kernel decodes it (traverse.glsl, nodeChildEntry).
+std::uint32_t packedChildEntry(const gpu::GpuBvhNode& node, int k);
+
+}  // namespace vkrt

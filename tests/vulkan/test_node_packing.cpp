@@ -1,0 +1,140 @@
+// The 48-byte nodes the kernels read (host/vulkan/node_packing.h): every child's box read back
+// contains the builder's box and is looser by at most the documented 2 * 2^bits ulp, and every
+// child's entry read back is the one the builder's link and count mean. No device needed.
+#include <bit>
+#include <cfloat>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+#include "node_packing.h"
+
+namespace vkrt {
+namespace {
+
+std::uint32_t bitsOf(float f) { return std::bit_cast<std::uint32_t>(f); }
+float floatOf(std::uint32_t u) { return std::bit_cast<float>(u); }
+
+// Distance in representable floats between a and b (same sign or across zero).
+std::int64_t ulpsBetween(float a, float b) {
+    auto ordered = [](float f) {
+        const std::uint32_t u = bitsOf(f);
+        return (u & 0x80000000u) ? -static_cast<std::int64_t>(u & 0x7fffffffu) : static_cast<std::int64_t>(u);
+    };
+    return std::llabs(ordered(a) - ordered(b));
+}
+
+void expectRoundedDown(float value, std::uint32_t payload, unsigned bits) {
+    const float r = floatOf(roundDownWithLowBits(value, payload, bits));
+    EXPECT_LE(r, value) << value;
+    EXPECT_EQ(roundDownWithLowBits(value, payload, bits) & ((1u << bits) - 1u), payload) << value;
+    // The nearest such float: fewer than two steps of 2^bits patterns below (at most one when
+    // both are on the same side of zero).
+    EXPECT_LT(ulpsBetween(r, value), 2 << bits) << value << " -> " << r;
+    const float u = floatOf(roundUpWithLowBits(value, payload, bits));
+    EXPECT_GE(u, value) << value;
+    EXPECT_EQ(roundUpWithLowBits(value, payload, bits) & ((1u << bits) - 1u), payload) << value;
+    EXPECT_LT(ulpsBetween(u, value), 2 << bits) << value << " -> " << u;
+}
+
+TEST(NodePacking, RoundingOutwardKeepsThePayloadAndStaysClose) {
+    std::mt19937 random(3);
+    std::uniform_int_distribution<std::uint32_t> payload6(0, 63), payload4(0, 15);
+    std::uniform_real_distribution<float> mantissa(-1.0f, 1.0f);
+    std::uniform_int_distribution<int> exponent(-140, 120);
+    for (int i = 0; i < 20000; ++i) {
+        const float value = std::ldexp(mantissa(random), exponent(random));  // denormals included
+        expectRoundedDown(value, payload6(random), 6);
+        expectRoundedDown(value, payload4(random), 4);
+    }
+    for (float v : {0.0f, -0.0f, FLT_MIN, -FLT_MIN, 1.0f, -1.0f, 1e-45f, -1e-45f, 3.0e38f, -3.0e38f})
+        for (std::uint32_t p : {0u, 1u, 31u, 63u}) expectRoundedDown(v, p, 6);
+}
+
+TEST(NodePacking, RoundingRefusesBoundsWithNoFloatOutside) {
+    EXPECT_THROW(roundDownWithLowBits(-INFINITY, 1, 6), std::invalid_argument);
+    EXPECT_THROW(roundDownWithLowBits(NAN, 1, 6), std::invalid_argument);
+    EXPECT_THROW(roundDownWithLowBits(-FLT_MAX, 1, 6), std::invalid_argument);  // nothing finite below it with payload 1
+    EXPECT_THROW(roundUpWithLowBits(FLT_MAX, 1, 6), std::invalid_argument);
+    // The empty child's box (lo = +FLT_MAX, hi = -FLT_MAX) rounds inward there, which is fine.
+    EXPECT_NO_THROW(roundDownWithLowBits(FLT_MAX, 63, 6));
+    EXPECT_NO_THROW(roundUpWithLowBits(-FLT_MAX, 63, 6));
+}
+
+bvh::SceneBvh instancedScene(float offset) {
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    auto point = [&] { return glm::vec3(offset) + glm::vec3(u(random), u(random), u(random)); };
+    std::vector<std::vector<bvh::PrimitiveInput>> groups(2);
+    for (int i = 0; i < 400; ++i) {
+        const glm::vec3 c = point();
+        groups[0].push_back({gpu::PRIM_KIND_TRIANGLE, c, c + 0.05f * (point() - offset), c + 0.05f * (point() - offset)});
+    }
+    for (int i = 0; i < 30; ++i) groups[1].push_back({gpu::PRIM_KIND_SPHERE, point(), glm::vec3(0.05f, 0, 0), {}});
+    std::vector<bvh::InstanceInput> instances;
+    for (int i = 0; i < 20; ++i)
+        instances.push_back({static_cast<std::uint32_t>(i % 2), glm::translate(glm::mat4(1.0f), glm::vec3(3.0f * i, 0, 0)),
+                             gpu::MATERIAL_NONE});
+    return bvh::buildSceneBvh(groups, instances, {});
+}
+
+TEST(NodePacking, PackedNodesHoldTheBuildersEntriesAndContainItsBoxes) {
+    for (float offset : {0.0f, 1e5f, -3e-3f}) {
+        const bvh::SceneBvh scene = instancedScene(offset);
+        const std::vector<gpu::GpuBvhNode> packed = packNodes(scene);
+        ASSERT_EQ(packed.size(), scene.nodes.size());
+        // Which nodes are top-level, walked independently of packNodes.
+        std::vector<bool> top(scene.nodes.size(), false);
+        std::vector<std::uint32_t> pending{scene.topRoot};
+        int leaves = 0, instanceLeaves = 0, inner = 0;
+        while (!pending.empty()) {
+            const std::uint32_t i = pending.back();
+            pending.pop_back();
+            top[i] = true;
+            for (int k = 0; k < 2; ++k)
+                if (scene.nodes[i].link[2 + k] == 0 && scene.nodes[i].link[k] != gpu::NODE_NONE) pending.push_back(scene.nodes[i].link[k]);
+        }
+        for (std::size_t i = 0; i < packed.size(); ++i) {
+            const gpu::BvhNode& node = scene.nodes[i];
+            for (int k = 0; k < 2; ++k) {
+                const std::uint32_t link = node.link[k], count = node.link[2 + k];
+                const std::uint32_t entry = packedChildEntry(packed[i], k);
+                if (count == 0 && link == gpu::NODE_NONE) {
+                    EXPECT_EQ(entry, gpu::ENTRY_NONE);
+                    continue;
+                }
+                if (count == 0) {
+                    EXPECT_EQ(entry, link);
+                    ++inner;
+                } else if (top[i]) {
+                    EXPECT_EQ(entry, gpu::ENTRY_INSTANCE_BIT | link);
+                    ++instanceLeaves;
+                } else {
+                    EXPECT_EQ(entry, gpu::ENTRY_LEAF_BIT | (link << 4) | count);
+                    ++leaves;
+                }
+                const glm::uvec4& xy = k == 0 ? node.xy0 : node.xy1;
+                const float lo[3] = {floatOf(xy[0]), floatOf(xy[2]), floatOf(node.z01[2 * k])};
+                const float hi[3] = {floatOf(xy[1]), floatOf(xy[3]), floatOf(node.z01[2 * k + 1])};
+                const PackedChildBox box = packedChildBox(packed[i], k);
+                for (int axis = 0; axis < 3; ++axis) {
+                    const int bits = axis < 2 ? gpu::NODE_ENTRY_XY_BITS : gpu::NODE_ENTRY_Z_BITS;
+                    EXPECT_LE(box.lo[axis], lo[axis]);
+                    EXPECT_GE(box.hi[axis], hi[axis]);
+                    EXPECT_LT(ulpsBetween(box.lo[axis], lo[axis]), 2 << bits);
+                    EXPECT_LT(ulpsBetween(box.hi[axis], hi[axis]), 2 << bits);
+                }
+            }
+        }
+        // The scene exercises every kind of entry.
+        EXPECT_GT(inner, 0);
+        EXPECT_GT(leaves, 0);
+        EXPECT_EQ(instanceLeaves, 20);
+    }
+}
+
+}  // namespace
+}  // namespace vkrt
