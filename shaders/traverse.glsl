@@ -1,9 +1,10 @@
 // Two-level BVH traversal: iterative, with a fixed stack (no recursion in GLSL).
-// Nodes hold both children's boxes and stack entries (48 bytes, 3 texels: device_host.h,
-// GpuBvhNode), so each step decides both children from one contiguous fetch. Each pass of the
-// main loop walks inner nodes (an inner loop, one node's two children per pass) until the lane
-// holds something else, then handles it: intersects a bottom-level leaf's primitives (a second
-// inner loop: "while-while", Aila & Laine 2009), enters an instance or leaves one. A far leaf is pushed like a node, as a packed entry (device_host.h,
+// Nodes hold both children's boxes and stack entries (48 bytes, 3 texels; 64 bytes where packing
+// would loosen the boxes too much: device_host.h, GpuBvhNode), so each step decides both children
+// from one contiguous fetch. Each pass of the main loop walks inner nodes (an inner loop, one
+// node's two children per pass) until the lane holds something else, then handles it: intersects
+// a bottom-level leaf's primitives (a second inner loop: "while-while", Aila & Laine 2009), enters
+// an instance or leaves one. A far leaf is pushed like a node, as a packed entry (device_host.h,
 // ENTRY_LEAF_BIT).
 // Why this shape: lavapipe (Mesa 22.3) runs every statement of a loop body for all 8 lanes, masked,
 // whatever the branch conditions, and a loop body runs at least once (host/vulkan/README.md). So
@@ -195,7 +196,7 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
         // array (to spill a register entry or to refill from it), or has nothing left.
         while (!finished && !spilling && isNodeEntry(entry)) {
             if (!chargeLoop()) break;
-            int base = int(entry * GPU_NODE_TEXELS);
+            int base = int(entry * (PACKED_NODES ? GPU_NODE_TEXELS : GPU_EXACT_NODE_TEXELS));
             uvec4 xy0 = imageLoad(bvhNodes, base);
             uvec4 xy1 = imageLoad(bvhNodes, base + 1);
             uvec4 z01 = imageLoad(bvhNodes, base + 2);
@@ -205,8 +206,15 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             float tNear0, tNear1;
             bool box0 = hitsBox(ray, vec3(fxy0.x, fxy0.z, fz.x), vec3(fxy0.y, fxy0.w, fz.y), hit.t, tNear0);
             bool box1 = hitsBox(ray, vec3(fxy1.x, fxy1.z, fz.z), vec3(fxy1.y, fxy1.w, fz.w), hit.t, tNear1);
-            uint next0 = nodeChildEntry(xy0, z01.xy);
-            uint next1 = nodeChildEntry(xy1, z01.zw);
+            uint next0, next1;
+            if (PACKED_NODES) {
+                next0 = nodeChildEntry(xy0, z01.xy);
+                next1 = nodeChildEntry(xy1, z01.zw);
+            } else {
+                uvec2 entries = imageLoad(bvhNodes, base + 3).xy;
+                next0 = entries.x;
+                next1 = entries.y;
+            }
             bool hit0 = box0 && next0 != ENTRY_NONE;
             bool hit1 = box1 && next1 != ENTRY_NONE;
             bool nearFirst = !(hit0 && hit1 && tNear1 < tNear0);

@@ -58,6 +58,7 @@ std::array<std::uint32_t, gpu::SPEC_COUNT> FeatureSet::specializationValues() co
     v[gpu::SPEC_HAS_COOL_TO_WARM] = coolToWarm;
     v[gpu::SPEC_MAX_DEPTH] = maxDepth;
     v[gpu::SPEC_PATH_STACK_SIZE] = pathStackSize;
+    v[gpu::SPEC_PACKED_NODES] = packedNodes;
     return v;
 }
 
@@ -79,6 +80,7 @@ std::string FeatureSet::describe() const {
     add(dielectric, "dielectric");
     add(textures, "textures");
     add(coolToWarm, "cool-to-warm");
+    add(!packedNodes, "exact-nodes");
     add(true, ("depth=" + std::to_string(maxDepth) + " stack=" + std::to_string(pathStackSize)).c_str());
     return s;
 }

@@ -29,6 +29,8 @@ struct FeatureSet {
     std::uint32_t maxDepth = 4;        // 0 when nothing reflects or refracts, else options.maxDepth
     std::uint32_t pathStackSize = 5;   // pending rays: maxDepth + glossSamples (integrator.glsl); 0 when
                                        // nothing pushes (no dielectric, no gloss fan-out): no stack code
+    bool packedNodes = true;           // the BVH nodes' layout, not a feature: set from the upload's
+                                       // GpuNodes::packed (node_packing.h) before choosing a kernel
 
     auto operator<=>(const FeatureSet&) const = default;
 

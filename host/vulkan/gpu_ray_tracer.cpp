@@ -67,6 +67,7 @@ struct GpuRayTracer::Impl {
     KernelCache kernels;
     FeatureSet features;
     std::uint32_t batch;
+    GpuNodes nodeData;  // after batch: checkedBatch refuses unfit leaves before gpuNodes meets them
     Buffer nodes, prims, instances, frame, status, rays, hits;
     vk::raii::BufferView nodeView = nullptr, primView = nullptr, instanceView = nullptr, rayView = nullptr, hitView = nullptr;
     vk::raii::DescriptorPool pool = nullptr;
@@ -107,16 +108,22 @@ std::uint32_t batchRays(const Context& context) {
     return static_cast<std::uint32_t>(std::max<std::uint64_t>(kLocalSize, batch));
 }
 
+// The nodes' bytes in the larger of the two layouts (node_packing.h), for the checks made before
+// the layout is chosen.
+std::uint64_t exactNodeBytes(const bvh::SceneBvh& bvh) {
+    return std::max<std::uint64_t>(1, bvh.nodes.size()) * sizeof(gpu::GpuExactBvhNode);
+}
+
 // Checks every buffer before any is created (the limits are checked in Impl's initialiser).
 std::uint32_t checkedBatch(const Context& context, const bvh::SceneBvh& bvh) {
     const std::uint32_t batch = batchRays(context);
     const BufferLimits& limits = context.limits();
-    checkBufferFits(limits, "BVH nodes", BufferKind::StorageTexel, stableTexelBufferBytes(packedNodeBytes(bvh)));
+    checkBufferFits(limits, "BVH nodes", BufferKind::StorageTexel, stableTexelBufferBytes(exactNodeBytes(bvh)));
     checkBufferFits(limits, "primitives", BufferKind::StorageTexel, stableTexelBufferBytes(paddedBytes(bvh.prims)));
     checkBufferFits(limits, "instances", BufferKind::StorageTexel, stableTexelBufferBytes(paddedBytes(bvh.instances)));
     checkBufferFits(limits, "rays", BufferKind::StorageTexel, rayBytes(batch));
     checkBufferFits(limits, "hits", BufferKind::StorageTexel, hitBytes(batch));
-    checkTotalFits(limits, stableTexelBufferBytes(packedNodeBytes(bvh)) + stableTexelBufferBytes(paddedBytes(bvh.prims)) +
+    checkTotalFits(limits, stableTexelBufferBytes(exactNodeBytes(bvh)) + stableTexelBufferBytes(paddedBytes(bvh.prims)) +
                                stableTexelBufferBytes(paddedBytes(bvh.instances)) + rayBytes(batch) + hitBytes(batch));
     checkTraversalStack(bvh, needsTopLevel(bvh));
     return batch;
@@ -127,8 +134,8 @@ std::uint32_t checkedBatch(const Context& context, const bvh::SceneBvh& bvh) {
 GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& options)
     : context(contextOptionsOf(options)), runner(context), transfers(context, runner), layout(traceLayout(context)),
       kernels(context, layout, loadKernel(traceSource(options))), features(traversalFeatures(bvh)),
-      batch(checkedBatch(context, bvh)),
-      nodes(context, "BVH nodes", stableTexelBufferBytes(packedNodeBytes(bvh)), kTexels, MemoryUse::Device),
+      batch(checkedBatch(context, bvh)), nodeData(gpuNodes(bvh)),
+      nodes(context, "BVH nodes", stableTexelBufferBytes(nodeBytes(nodeData)), kTexels, MemoryUse::Device),
       prims(context, "primitives", stableTexelBufferBytes(paddedBytes(bvh.prims)), kTexels, MemoryUse::Device),
       instances(context, "instances", stableTexelBufferBytes(paddedBytes(bvh.instances)), kTexels, MemoryUse::Device),
       frame(context, "frame parameters", sizeof(gpu::FrameParams),
@@ -138,7 +145,8 @@ GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& opt
       status(context, "render status", sizeof(gpu::RenderStatus), kStorage, MemoryUse::Shared),
       rays(context, "rays", rayBytes(batch), kTexels, MemoryUse::Device),
       hits(context, "hits", hitBytes(batch), kTexels | vk::BufferUsageFlagBits::eTransferSrc, MemoryUse::Device) {
-    transfers.upload(nodes, bytesOf(packNodes(bvh)));
+    transfers.upload(nodes, bytesOf(nodeData.texels));
+    features.packedNodes = nodeData.packed;
     transfers.upload(prims, bytesOf(bvh.prims));
     transfers.upload(instances, bytesOf(bvh.instances));
     gpu::FrameParams params{};
@@ -180,6 +188,8 @@ GpuRayTracer::~GpuRayTracer() = default;
 
 std::uint32_t GpuRayTracer::maxRaysPerSubmission() const { return impl_->batch; }
 std::string GpuRayTracer::deviceName() const { return impl_->context.info().name; }
+bool GpuRayTracer::packedNodes() const { return impl_->nodeData.packed; }
+double GpuRayTracer::nodeAreaGrowth() const { return impl_->nodeData.areaGrowth; }
 std::shared_ptr<const ValidationLog> GpuRayTracer::validationLog() const { return impl_->context.validationLog(); }
 
 std::vector<gpu::TraceHitOutput> GpuRayTracer::trace(std::span<const gpu::TraceRayInput> rays, bool anyHit, GpuTraceStats* statsOut) {

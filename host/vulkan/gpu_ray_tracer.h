@@ -39,6 +39,9 @@ public:
 
     std::uint32_t maxRaysPerSubmission() const;
     std::string deviceName() const;
+    // The node layout uploaded (node_packing.h): packed into 3 texels, and the boxes' area growth.
+    bool packedNodes() const;
+    double nodeAreaGrowth() const;
     std::shared_ptr<const ValidationLog> validationLog() const;
 
 private:

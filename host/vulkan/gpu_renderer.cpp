@@ -16,6 +16,7 @@
 #include "render_status.h"
 #include "scene_tables.h"
 #include "submission_recorder.h"
+#include "node_packing.h"
 #include "traversal_stack.h"
 
 namespace vkrt {
@@ -80,16 +81,20 @@ Image GpuRenderer::render(const Scene& scene, const SceneAccel& accel, const Ren
     stats.device = impl_->context.info().name;
     const gpu::FrameParams frame = makeFrameParams(scene, accel, options);  // validates the options
     const bool general = settings.variant == KernelVariant::General;
-    const FeatureSet features = general ? generalFeatureSet(options) : deriveFeatureSet(scene, accel, options);
+    FeatureSet features = general ? generalFeatureSet(options) : deriveFeatureSet(scene, accel, options);
+    checkTraversalStack(accel.bvh, features.instances);
+    auto start = Clock::now();
+    const GpuNodes nodes = gpuNodes(accel.bvh);
+    features.packedNodes = nodes.packed;
     stats.features = features.describe();
     stats.generalKernel = general;
-    checkTraversalStack(accel.bvh, features.instances);
+    const double packSeconds = secondsSince(start);
 
     const vk::raii::Pipeline& pipeline = impl_->kernels.pipeline(features, &stats.pipelineSeconds);
 
-    auto start = Clock::now();
-    const GpuScene gpuScene(impl_->context, impl_->transfers, impl_->layout, buildSceneTables(scene, accel), accel.bvh, frame);
-    stats.uploadSeconds = secondsSince(start);
+    start = Clock::now();
+    const GpuScene gpuScene(impl_->context, impl_->transfers, impl_->layout, buildSceneTables(scene, accel), accel.bvh, nodes, frame);
+    stats.uploadSeconds = packSeconds + secondsSince(start);
     stats.sceneBytes = gpuScene.bytes();
 
     stats.warmUpSeconds = impl_->runner.run([&](const vk::raii::CommandBuffer& commands) {

@@ -5,8 +5,6 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "node_packing.h"
-
 namespace vkrt {
 
 namespace {
@@ -37,13 +35,13 @@ vk::BufferUsageFlags usageOf(BufferKind kind) {
 
 }  // namespace
 
-std::vector<BufferPlan> planSceneBuffers(const SceneTables& tables, const bvh::SceneBvh& bvh, std::uint64_t pixels) {
+std::vector<BufferPlan> planSceneBuffers(const SceneTables& tables, const bvh::SceneBvh& bvh, std::uint64_t nodeBytes,
+                                         std::uint64_t pixels) {
     std::vector<BufferPlan> plan(gpu::BINDING_STATUS + 1);
     // Every table the kernel reads is a texel buffer, sized past the lengths that change lavapipe's
     // JIT key (stableTexelBufferBytes, buffer.h).
     auto texels = [](std::uint64_t bytes) { return stableTexelBufferBytes(bytes); };
-    plan[gpu::BINDING_NODES] = {"BVH nodes", BufferKind::StorageTexel,
-                                texels(packedNodeBytes(bvh))};
+    plan[gpu::BINDING_NODES] = {"BVH nodes", BufferKind::StorageTexel, texels(nodeBytes)};
     plan[gpu::BINDING_PRIMS] = {"primitives", BufferKind::StorageTexel, texels(bytesOf(bvh.prims))};
     plan[gpu::BINDING_PRIM_INFO] = {"primitive info", BufferKind::StorageTexel, texels(bytesOf(tables.primInfos))};
     plan[gpu::BINDING_VERTEX_ATTRIBS] = {"vertex attributes", BufferKind::StorageTexel, texels(bytesOf(tables.vertexAttribs))};
@@ -69,9 +67,9 @@ void checkSceneBuffers(const BufferLimits& limits, const std::vector<BufferPlan>
 }
 
 GpuScene::GpuScene(const Context& context, Transfers& transfers, const KernelLayout& layout, const SceneTables& tables,
-                   const bvh::SceneBvh& bvh, const gpu::FrameParams& frame) {
+                   const bvh::SceneBvh& bvh, const GpuNodes& nodes, const gpu::FrameParams& frame) {
     const std::uint64_t pixels = static_cast<std::uint64_t>(frame.image.x) * frame.image.y;
-    const std::vector<BufferPlan> plan = planSceneBuffers(tables, bvh, pixels);
+    const std::vector<BufferPlan> plan = planSceneBuffers(tables, bvh, nodeBytes(nodes), pixels);
     checkSceneBuffers(context.limits(), plan);
 
     buffers_.reserve(plan.size());
@@ -84,7 +82,7 @@ GpuScene::GpuScene(const Context& context, Transfers& transfers, const KernelLay
     auto upload = [&](std::uint32_t binding, const auto& items) {
         transfers.upload(buffers_[binding], padded(items, plan[binding].bytes));
     };
-    upload(gpu::BINDING_NODES, packNodes(bvh));
+    upload(gpu::BINDING_NODES, nodes.texels);
     upload(gpu::BINDING_PRIMS, bvh.prims);
     upload(gpu::BINDING_PRIM_INFO, tables.primInfos);
     upload(gpu::BINDING_VERTEX_ATTRIBS, tables.vertexAttribs);

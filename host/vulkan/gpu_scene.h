@@ -16,6 +16,7 @@
 #include "compute_pipeline.h"
 #include "context.h"
 #include "device_limits.h"
+#include "node_packing.h"
 #include "scene_tables.h"
 
 namespace vkrt {
@@ -30,15 +31,18 @@ struct BufferPlan {
 
 // The buffers a render needs, in binding order; empty tables get one zeroed element because
 // Vulkan has no empty buffers.
-std::vector<BufferPlan> planSceneBuffers(const SceneTables& tables, const bvh::SceneBvh& bvh, std::uint64_t pixels);
+// nodeBytes: the BVH nodes as uploaded (node_packing.h).
+std::vector<BufferPlan> planSceneBuffers(const SceneTables& tables, const bvh::SceneBvh& bvh, std::uint64_t nodeBytes,
+                                         std::uint64_t pixels);
 
 // Throws DeviceLimitExceeded for the first buffer over a limit, or when all together exceed the heap.
 void checkSceneBuffers(const BufferLimits& limits, const std::vector<BufferPlan>& plan);
 
 class GpuScene {
 public:
+    // nodes: bvh's nodes as the kernel reads them (gpuNodes, node_packing.h).
     GpuScene(const Context& context, Transfers& transfers, const KernelLayout& layout, const SceneTables& tables,
-             const bvh::SceneBvh& bvh, const gpu::FrameParams& frame);
+             const bvh::SceneBvh& bvh, const GpuNodes& nodes, const gpu::FrameParams& frame);
 
     vk::DescriptorSet descriptorSet() const { return *set_; }
     const Buffer& accum() const { return buffers_[gpu::BINDING_ACCUM]; }

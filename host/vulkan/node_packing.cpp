@@ -1,5 +1,6 @@
 #include "node_packing.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <stdexcept>
@@ -103,6 +104,64 @@ std::vector<gpu::GpuBvhNode> packNodes(const bvh::SceneBvh& bvh) {
         }
     }
     return packed;
+}
+
+namespace {
+
+double surfaceArea(const float lo[3], const float hi[3]) {
+    const double dx = double(hi[0]) - lo[0], dy = double(hi[1]) - lo[1], dz = double(hi[2]) - lo[2];
+    return 2.0 * (dx * dy + dy * dz + dz * dx);
+}
+
+// The packed child boxes' total surface area over the builder's, in the tree under `root`.
+double treeAreaGrowth(const bvh::SceneBvh& bvh, const std::vector<gpu::GpuBvhNode>& packed, std::uint32_t root) {
+    double exactArea = 0.0, packedArea = 0.0;
+    std::vector<std::uint32_t> pending;
+    if (root < bvh.nodes.size()) pending.push_back(root);
+    while (!pending.empty()) {
+        const std::uint32_t i = pending.back();
+        pending.pop_back();
+        const gpu::BvhNode& node = bvh.nodes[i];
+        for (int k = 0; k < 2; ++k) {
+            if (node.link[2 + k] == 0) {
+                if (node.link[k] == gpu::NODE_NONE) continue;  // empty slot
+                pending.push_back(node.link[k]);
+            }
+            const PackedChildBox p = packedChildBox(packed[i], k);
+            const glm::uvec4& xy = k == 0 ? node.xy0 : node.xy1;
+            const float lo[3] = {std::bit_cast<float>(xy[0]), std::bit_cast<float>(xy[2]), std::bit_cast<float>(node.z01[2 * k])};
+            const float hi[3] = {std::bit_cast<float>(xy[1]), std::bit_cast<float>(xy[3]), std::bit_cast<float>(node.z01[2 * k + 1])};
+            exactArea += surfaceArea(lo, hi);
+            packedArea += surfaceArea(p.lo, p.hi);
+        }
+    }
+    if (exactArea > 0.0) return packedArea / exactArea;
+    return packedArea > 0.0 ? INFINITY : 1.0;
+}
+
+}  // namespace
+
+GpuNodes gpuNodes(const bvh::SceneBvh& bvh) {
+    const std::vector<gpu::GpuBvhNode> packed = packNodes(bvh);
+    // Per tree: a huge top-level box must not hide a mesh whose own boxes grew.
+    double growth = treeAreaGrowth(bvh, packed, bvh.topRoot);
+    for (const bvh::GroupRange& group : bvh.groups) growth = std::max(growth, treeAreaGrowth(bvh, packed, group.rootNode));
+    GpuNodes out;
+    out.areaGrowth = growth;
+    out.packed = out.areaGrowth <= kMaxPackedAreaGrowth;
+    if (out.packed) {
+        out.texels.reserve(packed.size() * gpu::GPU_NODE_TEXELS);
+        for (const gpu::GpuBvhNode& n : packed) out.texels.insert(out.texels.end(), {n.xy0, n.xy1, n.z01});
+        return out;
+    }
+    const std::vector<bool> topLevel = topLevelNodes(bvh);
+    out.texels.reserve(bvh.nodes.size() * gpu::GPU_EXACT_NODE_TEXELS);
+    for (std::size_t i = 0; i < bvh.nodes.size(); ++i) {
+        const gpu::BvhNode& n = bvh.nodes[i];
+        const glm::uvec4 entries(childStackEntry(n, 0, topLevel[i]), childStackEntry(n, 1, topLevel[i]), 0u, 0u);
+        out.texels.insert(out.texels.end(), {n.xy0, n.xy1, n.z01, entries});
+    }
+    return out;
 }
 
 PackedChildBox packedChildBox(const gpu::GpuBvhNode& node, int k) {

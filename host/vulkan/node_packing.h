@@ -29,10 +29,24 @@ std::uint32_t childStackEntry(const gpu::BvhNode& node, int k, bool topLevel);
 // (checkLeafEntries, traversal_stack.h, refuses a scene whose leaves do not): one that does not
 // is a std::logic_error here.
 std::vector<gpu::GpuBvhNode> packNodes(const bvh::SceneBvh& bvh);
-// The bytes packNodes returns (at least one node: an empty binding still needs a buffer).
-inline std::uint64_t packedNodeBytes(const bvh::SceneBvh& bvh) {
-    return std::max<std::uint64_t>(1, bvh.nodes.size()) * sizeof(gpu::GpuBvhNode);
-}
+
+// The node texels to upload, and which layout they are in (device_host.h, SPEC_PACKED_NODES).
+struct GpuNodes {
+    std::vector<glm::uvec4> texels;  // GPU_NODE_TEXELS per node if packed, else GPU_EXACT_NODE_TEXELS
+    bool packed = true;
+    double areaGrowth = 1.0;  // the packed child boxes' total surface area over the builder's, in the
+                              // tree (a bottom level or the top level) where it grows most
+};
+// Packing pays while it adds few node visits; the expected visits of a child are proportional to
+// its box's surface area (the SAH's assumption), so the boxes' total area is the measure, per tree
+// because a ray that reaches a mesh walks that mesh's tree.
+constexpr double kMaxPackedAreaGrowth = 1.01;
+
+// The packed nodes if their areaGrowth is at most kMaxPackedAreaGrowth, else the exact layout.
+// Leaf entries must fit, as for packNodes.
+GpuNodes gpuNodes(const bvh::SceneBvh& bvh);
+// The bytes to upload (at least one texel: an empty binding still needs a buffer).
+inline std::uint64_t nodeBytes(const GpuNodes& nodes) { return std::max<std::uint64_t>(1, nodes.texels.size()) * sizeof(glm::uvec4); }
 
 // The box of child k as the kernel reads it from a packed node (what packNodes rounded outward).
 struct PackedChildBox {

@@ -29,7 +29,7 @@ using ivec4 = glm::ivec4;
 
 // ---------------------------------------------------------------------------------------------
 // Descriptor set 0 bindings.
-VKRT_CONST uint BINDING_NODES = 0;         // readonly uimageBuffer RGBA32UI, GpuBvhNode = GPU_NODE_TEXELS texels
+VKRT_CONST uint BINDING_NODES = 0;         // readonly uimageBuffer RGBA32UI, GpuBvhNode or GpuExactBvhNode
 VKRT_CONST uint BINDING_PRIMS = 1;         // readonly uimageBuffer RGBA32UI, PRIM_TEXELS texels per primitive
 // The read-only tables below are RGBA32UI texel buffers too (uimageBuffer): each struct is its
 // vec4/uvec4 members in order, one texel each (the *_TEXELS counts, pinned by static_asserts).
@@ -87,7 +87,13 @@ struct BvhNode {
 // Why: lavapipe fetches a texel per lane (an address extract, a load and a transpose: about 40
 // instructions per texel), and the walk fetches one node per pass; the fourth texel cost
 // more than the bit unpacking.
+// The looseness is relative to a bound's magnitude, so geometry far from its origin compared with
+// its size (a mesh modelled at x = 10^4) would get boxes far larger than its triangles. The host
+// packs only when that costs little (node_packing.h: the child boxes' total surface area grows by
+// at most 1%) and otherwise uploads GpuExactBvhNode: the builder's boxes unchanged, with the two
+// ready entries in a fourth texel (x, y; z and w zero). SPEC_PACKED_NODES tells the kernel which.
 VKRT_CONST uint GPU_NODE_TEXELS = 3;
+VKRT_CONST uint GPU_EXACT_NODE_TEXELS = 4;
 VKRT_CONST uint NODE_ENTRY_XY_BITS = 6u;
 VKRT_CONST uint NODE_ENTRY_Z_BITS = 4u;
 VKRT_CONST uint ENTRY_INSTANCE_BIT = 0x80000000u;
@@ -96,6 +102,12 @@ struct GpuBvhNode {
     uvec4 xy0;
     uvec4 xy1;
     uvec4 z01;
+};
+struct GpuExactBvhNode {
+    uvec4 xy0;
+    uvec4 xy1;
+    uvec4 z01;
+    uvec4 entries;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -254,7 +266,8 @@ VKRT_CONST uint SPEC_HAS_TEXTURES = 9;
 VKRT_CONST uint SPEC_HAS_COOL_TO_WARM = 10;
 VKRT_CONST uint SPEC_MAX_DEPTH = 11;        // recursion depth the scene can use
 VKRT_CONST uint SPEC_PATH_STACK_SIZE = 12;   // pending reflection/refraction rays (maxDepth + glossSamples)
-VKRT_CONST uint SPEC_COUNT = 13;
+VKRT_CONST uint SPEC_PACKED_NODES = 13;     // the nodes are GpuBvhNode (3 texels), else GpuExactBvhNode (4)
+VKRT_CONST uint SPEC_COUNT = 14;
 
 // Entries of the kernel's BVH traversal stack. The host refuses a BVH whose top-level depth plus
 // deepest bottom-level depth exceeds it, so the stack can never overflow at run time.
@@ -270,6 +283,7 @@ VKRT_CONST uint LOOP_BUDGET = 60000u;
 #ifdef __cplusplus
 static_assert(sizeof(BvhNode) == 64);
 static_assert(sizeof(GpuBvhNode) == 16 * GPU_NODE_TEXELS);
+static_assert(sizeof(GpuExactBvhNode) == 16 * GPU_EXACT_NODE_TEXELS);
 static_assert(4 * NODE_ENTRY_XY_BITS + 2 * NODE_ENTRY_Z_BITS == 32);
 static_assert(sizeof(Primitive) == 48);
 static_assert(sizeof(PrimInfo) == 16 * PRIM_INFO_TEXELS);

@@ -134,14 +134,16 @@ TEST_F(VulkanTest, RendererAcceptsASceneAtTheLimitAndRefusesOneOver) {
 TEST(SceneBuffers, PlanPadsEmptyTablesToOneElement) {
     test::TinyScene tiny;
     SceneTables tables;  // all empty
-    const std::vector<BufferPlan> plan = planSceneBuffers(tables, tiny.accel.bvh, 10);
+    const GpuNodes nodes = gpuNodes(tiny.accel.bvh);
+    const std::vector<BufferPlan> plan = planSceneBuffers(tables, tiny.accel.bvh, nodeBytes(nodes), 10);
     ASSERT_EQ(plan.size(), gpu::BINDING_STATUS + 1u);
     // One zeroed element, then the texel-buffer padding that keeps lavapipe's JIT key stable.
     EXPECT_EQ(plan[gpu::BINDING_SHADERS].bytes, stableTexelBufferBytes(sizeof(gpu::Material)));
     EXPECT_EQ(plan[gpu::BINDING_SHADERS].kind, BufferKind::StorageTexel);
     EXPECT_EQ(plan[gpu::BINDING_TEXELS].bytes, stableTexelBufferBytes(4));
     EXPECT_EQ(plan[gpu::BINDING_TEXELS].texelBytes, 4u);
-    EXPECT_EQ(plan[gpu::BINDING_NODES].bytes, stableTexelBufferBytes(2 * sizeof(gpu::GpuBvhNode)));
+    EXPECT_EQ(plan[gpu::BINDING_NODES].bytes, stableTexelBufferBytes(2 * sizeof(gpu::GpuBvhNode)));  // two packed nodes
+    EXPECT_TRUE(nodes.packed);
     EXPECT_EQ(plan[gpu::BINDING_NODES].kind, BufferKind::StorageTexel);
     EXPECT_EQ(plan[gpu::BINDING_ACCUM].bytes, stableTexelBufferBytes(10 * 16));
     EXPECT_EQ(plan[gpu::BINDING_ACCUM].kind, BufferKind::StorageTexel);

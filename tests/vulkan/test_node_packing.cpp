@@ -136,5 +136,31 @@ TEST(NodePacking, PackedNodesHoldTheBuildersEntriesAndContainItsBoxes) {
     }
 }
 
+// The layout choice: near its origin a mesh's boxes barely grow, so the nodes go up packed; the
+// same mesh 10^4 away (100x its size) would get boxes far larger than its triangles, so they go
+// up exact: the builder's bits, with the ready entries in the fourth texel.
+TEST(NodePacking, FarFromItsOriginGeometryKeepsTheExactLayout) {
+    const bvh::SceneBvh nearScene = instancedScene(0.0f);
+    const GpuNodes nearNodes = gpuNodes(nearScene);
+    EXPECT_TRUE(nearNodes.packed);
+    EXPECT_LT(nearNodes.areaGrowth, 1.001);
+    EXPECT_EQ(nearNodes.texels.size(), nearScene.nodes.size() * gpu::GPU_NODE_TEXELS);
+
+    const bvh::SceneBvh farScene = instancedScene(1e4f);
+    const GpuNodes farNodes = gpuNodes(farScene);
+    EXPECT_FALSE(farNodes.packed);
+    EXPECT_GT(farNodes.areaGrowth, kMaxPackedAreaGrowth);
+    ASSERT_EQ(farNodes.texels.size(), farScene.nodes.size() * gpu::GPU_EXACT_NODE_TEXELS);
+    const std::vector<bool> top = topLevelNodes(farScene);
+    for (std::size_t i = 0; i < farScene.nodes.size(); ++i) {
+        const gpu::BvhNode& node = farScene.nodes[i];
+        const glm::uvec4* t = &farNodes.texels[i * gpu::GPU_EXACT_NODE_TEXELS];
+        EXPECT_EQ(t[0], node.xy0);
+        EXPECT_EQ(t[1], node.xy1);
+        EXPECT_EQ(t[2], node.z01);
+        EXPECT_EQ(t[3], glm::uvec4(childStackEntry(node, 0, top[i]), childStackEntry(node, 1, top[i]), 0u, 0u));
+    }
+}
+
 }  // namespace
 }  // namespace vkrt

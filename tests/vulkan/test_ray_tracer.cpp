@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu_ray_tracer.h"
+#include "node_packing.h"
 #include "vulkan_errors.h"
 #include "vulkan_test_support.h"
 
@@ -15,7 +16,7 @@ namespace {
 
 using test::VulkanTest;
 
-bvh::SceneBvh randomScene(int maxLeafSize = 8) {
+bvh::SceneBvh randomScene(int maxLeafSize = 8, glm::vec3 offset = glm::vec3(0.0f)) {
     std::mt19937 random(11);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     auto point = [&] { return glm::vec3(u(random), u(random), u(random)); };
@@ -30,6 +31,12 @@ bvh::SceneBvh randomScene(int maxLeafSize = 8) {
         groups[0].push_back({gpu::PRIM_KIND_BOX, lo, lo + glm::vec3(0.3f) + 0.2f * glm::abs(point()), {}});
     }
     for (int i = 0; i < 50; ++i) groups[1].push_back({gpu::PRIM_KIND_TRIANGLE, point(), point(), point()});
+    for (auto& group : groups)
+        for (bvh::PrimitiveInput& p : group) {
+            p.a += offset;
+            if (p.kind != gpu::PRIM_KIND_SPHERE) p.b += offset;  // a sphere's b.x is its radius
+            if (p.kind == gpu::PRIM_KIND_TRIANGLE) p.c += offset;
+        }
     const glm::mat4 a = glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(2.0f, 0.5f, -1.0f)), 0.7f, glm::vec3(0, 1, 1));
     const glm::mat4 b = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(-2.0f, -1.0f, 1.5f)), glm::vec3(0.5f, 2.0f, 1.0f));
     bvh::BuildOptions build;
@@ -40,13 +47,13 @@ bvh::SceneBvh randomScene(int maxLeafSize = 8) {
                               build);
 }
 
-std::vector<gpu::TraceRayInput> randomRays(std::size_t n, float tMax) {
+std::vector<gpu::TraceRayInput> randomRays(std::size_t n, float tMax, glm::vec3 offset = glm::vec3(0.0f)) {
     std::mt19937 random(5);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     std::vector<gpu::TraceRayInput> rays(n);
     for (auto& r : rays) {
-        const glm::vec3 origin = 6.0f * glm::vec3(u(random), u(random), u(random));
-        const glm::vec3 target = 3.0f * glm::vec3(u(random), u(random), u(random));
+        const glm::vec3 origin = offset + 6.0f * glm::vec3(u(random), u(random), u(random));
+        const glm::vec3 target = offset + 3.0f * glm::vec3(u(random), u(random), u(random));
         r.origin = glm::vec4(origin, tMax);
         r.direction = glm::vec4(glm::normalize(target - origin), 0.0f);
     }
@@ -114,6 +121,34 @@ TEST_P(RayTracerLeaves, MatchesTheCpuTraversal) {
 }
 
 INSTANTIATE_TEST_SUITE_P(LeafSizes, RayTracerLeaves, ::testing::Values(8, static_cast<int>(gpu::LEAF_ENTRY_MAX_COUNT)));
+
+// Geometry 10^4 from the origin, 100x its size: packing the nodes would loosen their boxes far
+// beyond the primitives' size (node_packing.h), so they go up exact, and the kernel's other node
+// layout must find the same hits as the CPU (tolerance as above). The offset translates the rays
+// with the geometry; with instances a and b the shapes land elsewhere, which the CPU follows too.
+TEST_F(VulkanTest, RayTracerMatchesTheCpuWithExactNodesFarFromTheOrigin) {
+    const glm::vec3 offset(1e4f, -2e4f, 1e4f);
+    const bvh::SceneBvh scene = randomScene(8, offset);
+    const GpuNodes nodes = gpuNodes(scene);
+    ASSERT_FALSE(nodes.packed) << "area growth " << nodes.areaGrowth;
+    EXPECT_EQ(nodes.texels.size(), scene.nodes.size() * gpu::GPU_EXACT_NODE_TEXELS);
+    GpuRendererOptions options;
+    options.validation = true;
+    GpuRayTracer tracer(scene, options);
+    watch(tracer.validationLog());
+    const std::vector<gpu::TraceRayInput> rays = randomRays(20000, 1e30f, offset);
+    const auto closest = tracer.trace(rays, false);
+    int disagreements = 0, hitsSeen = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        bvh::Ray ray{glm::vec3(rays[i].origin), glm::vec3(rays[i].direction), rays[i].origin.w};
+        bvh::Hit hit;
+        const bool cpuHit = bvh::intersectClosest(scene, ray, hit);
+        hitsSeen += cpuHit;
+        disagreements += cpuHit != (closest[i].hit.x != 0xffffffffu) || (cpuHit && hit.prim != closest[i].hit.y);
+    }
+    EXPECT_GT(hitsSeen, 1000);
+    EXPECT_LE(disagreements, static_cast<int>(rays.size()) / 500);
+}
 
 // traverse.glsl keeps the stack's top entries in registers and the rest in an array that only its
 // main loop touches: a push with the registers full spills one, a pop with them empty refills one,

@@ -245,8 +245,9 @@ int runGpuRaysBench(const std::vector<std::string>& argv) {
         std::fprintf(stderr, "\n");
     }
 
-    std::printf("device %s triangles %zu upload_s %.3f warmup_s %.3f\n", tracer.deviceName().c_str(), mesh.triangles.size(),
-                uploadSeconds, warmUpSeconds);
+    std::printf("device %s triangles %zu upload_s %.3f warmup_s %.3f nodes %s area_growth %.6f\n", tracer.deviceName().c_str(),
+                mesh.triangles.size(), uploadSeconds, warmUpSeconds, tracer.packedNodes() ? "packed" : "exact",
+                tracer.nodeAreaGrowth());
     for (Kind k : kKinds)  // the peer's line format, GPU figures
         std::printf("%s rays %zu Mrays_per_s %.2f\n", name(k), sets[static_cast<int>(k)].gpu.size(),
                     median(series[static_cast<int>(k)].gpu));
