@@ -12,11 +12,11 @@
 #include "gpu_scene.h"
 #include "kernel_cache.h"
 #include "kernel_source.h"
+#include "node_packing.h"
 #include "progress.h"
 #include "render_status.h"
 #include "scene_tables.h"
 #include "submission_recorder.h"
-#include "node_packing.h"
 #include "traversal_stack.h"
 
 namespace vkrt {

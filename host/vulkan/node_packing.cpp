@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "node_layout.h"
+
 namespace vkrt {
 
 namespace {
@@ -44,8 +46,8 @@ std::uint32_t roundUpWithLowBits(float value, std::uint32_t payload, unsigned bi
 }
 
 std::uint32_t childStackEntry(const gpu::BvhNode& node, int k, bool topLevel) {
-    const std::uint32_t link = node.link[k];
-    const std::uint32_t count = node.link[2 + k];
+    const std::uint32_t link = bvh::childLink(node, k);
+    const std::uint32_t count = bvh::childCount(node, k);
     if (count == 0) {
         if (link == gpu::NODE_NONE) return gpu::ENTRY_NONE;
         if ((link & (gpu::ENTRY_INSTANCE_BIT | gpu::ENTRY_LEAF_BIT)) != 0u)
@@ -75,8 +77,7 @@ std::vector<bool> topLevelNodes(const bvh::SceneBvh& bvh) {
         if (topLevel[index]) throw std::logic_error("the top-level BVH's node links form a cycle");
         topLevel[index] = true;
         for (int k = 0; k < 2; ++k)
-            if (bvh.nodes[index].link[2 + k] == 0 && bvh.nodes[index].link[k] != gpu::NODE_NONE)
-                pending.push_back(bvh.nodes[index].link[k]);
+            if (bvh::childIsInner(bvh.nodes[index], k)) pending.push_back(bvh::childLink(bvh.nodes[index], k));
     }
     return topLevel;
 }
@@ -108,11 +109,6 @@ std::vector<gpu::GpuBvhNode> packNodes(const bvh::SceneBvh& bvh) {
 
 namespace {
 
-double surfaceArea(const float lo[3], const float hi[3]) {
-    const double dx = double(hi[0]) - lo[0], dy = double(hi[1]) - lo[1], dz = double(hi[2]) - lo[2];
-    return 2.0 * (dx * dy + dy * dz + dz * dx);
-}
-
 // The packed child boxes' total surface area over the builder's, in the tree under `root`.
 double treeAreaGrowth(const bvh::SceneBvh& bvh, const std::vector<gpu::GpuBvhNode>& packed, std::uint32_t root) {
     double exactArea = 0.0, packedArea = 0.0;
@@ -123,16 +119,10 @@ double treeAreaGrowth(const bvh::SceneBvh& bvh, const std::vector<gpu::GpuBvhNod
         pending.pop_back();
         const gpu::BvhNode& node = bvh.nodes[i];
         for (int k = 0; k < 2; ++k) {
-            if (node.link[2 + k] == 0) {
-                if (node.link[k] == gpu::NODE_NONE) continue;  // empty slot
-                pending.push_back(node.link[k]);
-            }
-            const PackedChildBox p = packedChildBox(packed[i], k);
-            const glm::uvec4& xy = k == 0 ? node.xy0 : node.xy1;
-            const float lo[3] = {std::bit_cast<float>(xy[0]), std::bit_cast<float>(xy[2]), std::bit_cast<float>(node.z01[2 * k])};
-            const float hi[3] = {std::bit_cast<float>(xy[1]), std::bit_cast<float>(xy[3]), std::bit_cast<float>(node.z01[2 * k + 1])};
-            exactArea += surfaceArea(lo, hi);
-            packedArea += surfaceArea(p.lo, p.hi);
+            if (bvh::childCount(node, k) == 0 && bvh::childLink(node, k) == gpu::NODE_NONE) continue;  // empty slot
+            if (bvh::childIsInner(node, k)) pending.push_back(bvh::childLink(node, k));
+            exactArea += bvh::childBox(node, k).halfArea();
+            packedArea += packedChildBox(packed[i], k).halfArea();
         }
     }
     if (exactArea > 0.0) return packedArea / exactArea;
@@ -164,10 +154,13 @@ GpuNodes gpuNodes(const bvh::SceneBvh& bvh) {
     return out;
 }
 
-PackedChildBox packedChildBox(const gpu::GpuBvhNode& node, int k) {
+bvh::Aabb packedChildBox(const gpu::GpuBvhNode& node, int k) {
     const glm::uvec4& xy = k == 0 ? node.xy0 : node.xy1;
     auto f = [](std::uint32_t u) { return std::bit_cast<float>(u); };
-    return {{f(xy[0]), f(xy[2]), f(node.z01[2 * k])}, {f(xy[1]), f(xy[3]), f(node.z01[2 * k + 1])}};
+    bvh::Aabb box;
+    box.lo = {f(xy[0]), f(xy[2]), f(node.z01[2 * k])};
+    box.hi = {f(xy[1]), f(xy[3]), f(node.z01[2 * k + 1])};
+    return box;
 }
 
 std::uint32_t packedChildEntry(const gpu::GpuBvhNode& node, int k) {

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "aabb.h"
 #include "bvh.h"
 
 namespace vkrt {
@@ -49,11 +50,7 @@ GpuNodes gpuNodes(const bvh::SceneBvh& bvh);
 inline std::uint64_t nodeBytes(const GpuNodes& nodes) { return std::max<std::uint64_t>(1, nodes.texels.size()) * sizeof(glm::uvec4); }
 
 // The box of child k as the kernel reads it from a packed node (what packNodes rounded outward).
-struct PackedChildBox {
-    float lo[3];
-    float hi[3];
-};
-PackedChildBox packedChildBox(const gpu::GpuBvhNode& node, int k);
+bvh::Aabb packedChildBox(const gpu::GpuBvhNode& node, int k);
 // The stack entry of child k as the kernel decodes it (traverse.glsl, nodeChildEntry).
 std::uint32_t packedChildEntry(const gpu::GpuBvhNode& node, int k);
 

@@ -10,6 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include "node_layout.h"
 #include "node_packing.h"
 
 namespace vkrt {
@@ -95,7 +96,7 @@ TEST(NodePacking, PackedNodesHoldTheBuildersEntriesAndContainItsBoxes) {
             pending.pop_back();
             top[i] = true;
             for (int k = 0; k < 2; ++k)
-                if (scene.nodes[i].link[2 + k] == 0 && scene.nodes[i].link[k] != gpu::NODE_NONE) pending.push_back(scene.nodes[i].link[k]);
+                if (bvh::childIsInner(scene.nodes[i], k)) pending.push_back(bvh::childLink(scene.nodes[i], k));
         }
         for (std::size_t i = 0; i < packed.size(); ++i) {
             const gpu::BvhNode& node = scene.nodes[i];
@@ -116,16 +117,13 @@ TEST(NodePacking, PackedNodesHoldTheBuildersEntriesAndContainItsBoxes) {
                     EXPECT_EQ(entry, gpu::ENTRY_LEAF_BIT | (link << 4) | count);
                     ++leaves;
                 }
-                const glm::uvec4& xy = k == 0 ? node.xy0 : node.xy1;
-                const float lo[3] = {floatOf(xy[0]), floatOf(xy[2]), floatOf(node.z01[2 * k])};
-                const float hi[3] = {floatOf(xy[1]), floatOf(xy[3]), floatOf(node.z01[2 * k + 1])};
-                const PackedChildBox box = packedChildBox(packed[i], k);
+                const bvh::Aabb exact = bvh::childBox(node, k);
+                const bvh::Aabb box = packedChildBox(packed[i], k);
+                EXPECT_TRUE(box.contains(exact));
                 for (int axis = 0; axis < 3; ++axis) {
                     const int bits = axis < 2 ? gpu::NODE_ENTRY_XY_BITS : gpu::NODE_ENTRY_Z_BITS;
-                    EXPECT_LE(box.lo[axis], lo[axis]);
-                    EXPECT_GE(box.hi[axis], hi[axis]);
-                    EXPECT_LT(ulpsBetween(box.lo[axis], lo[axis]), 2 << bits);
-                    EXPECT_LT(ulpsBetween(box.hi[axis], hi[axis]), 2 << bits);
+                    EXPECT_LT(ulpsBetween(box.lo[axis], exact.lo[axis]), 2 << bits);
+                    EXPECT_LT(ulpsBetween(box.hi[axis], exact.hi[axis]), 2 << bits);
                 }
             }
         }
