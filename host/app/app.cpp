@@ -74,7 +74,9 @@ DeviceRender renderOnGpu(GpuRenderer& gpu, const Scene& scene, const SceneAccel&
         std::cerr << "warning: " << stats.nonFiniteSamples << " samples were NaN/Inf and were replaced by black\n";
     if (auto log = gpu.validationLog(); log && log->count() > 0)
         std::cerr << "warning: " << log->count() << " Vulkan validation message(s):\n" << log->joined();
-    return {std::move(image), stats.device, stats.renderSeconds + stats.readbackSeconds};
+    // The kernel variant that ran: what the scene needed (feature_set.h), for shader developers.
+    const std::string kernel = stats.generalKernel ? "general kernel, " + stats.features : "kernel: " + stats.features;
+    return {std::move(image), stats.device + " [" + kernel + "]", stats.renderSeconds + stats.readbackSeconds};
 }
 
 // --device auto: the GPU when a Vulkan device exists, else the CPU reference with a message.
