@@ -132,12 +132,19 @@ double treeAreaGrowth(const bvh::SceneBvh& bvh, const std::vector<gpu::GpuBvhNod
 }  // namespace
 
 GpuNodes gpuNodes(const bvh::SceneBvh& bvh) {
-    const std::vector<gpu::GpuBvhNode> packed = packNodes(bvh);
-    // Per tree: a huge top-level box must not hide a mesh whose own boxes grew.
-    double growth = treeAreaGrowth(bvh, packed, bvh.topRoot);
-    for (const bvh::GroupRange& group : bvh.groups) growth = std::max(growth, treeAreaGrowth(bvh, packed, group.rootNode));
     GpuNodes out;
-    out.areaGrowth = growth;
+    std::vector<gpu::GpuBvhNode> packed;
+    try {
+        packed = packNodes(bvh);
+        // Per tree: a huge top-level box must not hide a mesh whose own boxes grew.
+        out.areaGrowth = treeAreaGrowth(bvh, packed, bvh.topRoot);
+        for (const bvh::GroupRange& group : bvh.groups)
+            out.areaGrowth = std::max(out.areaGrowth, treeAreaGrowth(bvh, packed, group.rootNode));
+    } catch (const std::invalid_argument&) {
+        // A bound within 2^6 ulp of the largest float has no float outside it with the entry's
+        // bits: such a scene keeps the exact layout rather than failing.
+        out.areaGrowth = INFINITY;
+    }
     out.packed = out.areaGrowth <= kMaxPackedAreaGrowth;
     if (out.packed) {
         out.texels.reserve(packed.size() * gpu::GPU_NODE_TEXELS);

@@ -43,8 +43,9 @@ struct GpuNodes {
 // because a ray that reaches a mesh walks that mesh's tree.
 constexpr double kMaxPackedAreaGrowth = 1.01;
 
-// The packed nodes if their areaGrowth is at most kMaxPackedAreaGrowth, else the exact layout.
-// Leaf entries must fit, as for packNodes.
+// The packed nodes if their areaGrowth is at most kMaxPackedAreaGrowth, else the exact layout
+// (also when a bound cannot be rounded outward: areaGrowth is then infinite). Leaf entries must
+// fit, as for packNodes.
 GpuNodes gpuNodes(const bvh::SceneBvh& bvh);
 // The bytes to upload (at least one texel: an empty binding still needs a buffer).
 inline std::uint64_t nodeBytes(const GpuNodes& nodes) { return std::max<std::uint64_t>(1, nodes.texels.size()) * sizeof(glm::uvec4); }

@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "node_layout.h"
 #include "node_packing.h"
 #include "vulkan_errors.h"
 
@@ -48,8 +49,8 @@ void checkLeafEntries(const bvh::SceneBvh& bvh) {
         if (topLevel[index]) continue;
         const gpu::BvhNode& node = bvh.nodes[index];
         for (int child = 0; child < 2; ++child) {
-            const std::uint32_t link = node.link[child];
-            const std::uint32_t count = node.link[2 + child];
+            const std::uint32_t link = bvh::childLink(node, child);
+            const std::uint32_t count = bvh::childCount(node, child);
             if (count > 0 && (count > gpu::LEAF_ENTRY_MAX_COUNT || link > gpu::LEAF_ENTRY_MAX_FIRST)) {
                 throw DeviceLimitExceeded("BVH node " + std::to_string(index) + " has a leaf of " + std::to_string(count) +
                                           " primitives starting at primitive " + std::to_string(link) +

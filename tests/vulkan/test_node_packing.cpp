@@ -160,5 +160,20 @@ TEST(NodePacking, FarFromItsOriginGeometryKeepsTheExactLayout) {
     }
 }
 
+// A box reaching within 2^6 ulp of the largest float has no outward neighbour carrying the entry
+// bits: the scene goes up exact instead of failing.
+TEST(NodePacking, BoundsAtTheLargestFloatKeepTheExactLayout) {
+    std::vector<std::vector<bvh::PrimitiveInput>> groups(1);
+    groups[0].push_back({gpu::PRIM_KIND_BOX, glm::vec3(0.0f), glm::vec3(1.0f), {}});
+    groups[0].push_back({gpu::PRIM_KIND_BOX, glm::vec3(2.0f), glm::vec3(FLT_MAX), {}});
+    const bvh::SceneBvh scene = bvh::buildSceneBvh(groups, {{0, glm::mat4(1.0f), gpu::MATERIAL_NONE}}, {});
+    EXPECT_THROW(packNodes(scene), std::invalid_argument);
+    GpuNodes nodes;
+    ASSERT_NO_THROW(nodes = gpuNodes(scene));
+    EXPECT_FALSE(nodes.packed);
+    EXPECT_EQ(nodes.areaGrowth, INFINITY);
+    EXPECT_EQ(nodes.texels.size(), scene.nodes.size() * gpu::GPU_EXACT_NODE_TEXELS);
+}
+
 }  // namespace
 }  // namespace vkrt
