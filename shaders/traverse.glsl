@@ -34,7 +34,7 @@ struct Hit {
     vec2 bary;      // triangle: barycentric weights of v1 and v2
 };
 
-// Stack entries: an inner node index, a bottom-level leaf, an instance to enter (device_host.h:
+// Stack entries: an inner node (its first texel), a bottom-level leaf, an instance to enter (device_host.h:
 // the host writes these into the nodes), or the kernel's own markers: the one that returns from
 // an instance's bottom level to the top level, and a refill.
 const uint ENTRY_LEAVE_INSTANCE = 0xffffffffu;
@@ -64,10 +64,11 @@ bool hitsBox(TraceRay ray, vec3 lo, vec3 hi, float tBest, out float tNear) {
     return tNear <= tFar;
 }
 
-bool intersectPrimitive(TraceRay ray, uint prim, float tBest, out float tHit, out vec2 bary) {
+// The primitive whose first texel is `base` (prim * PRIM_TEXELS: the caller steps it, so the leaf
+// loop's fetch waits on no multiply).
+bool intersectPrimitive(TraceRay ray, int base, float tBest, out float tHit, out vec2 bary) {
     tHit = 0.0;
     bary = vec2(0.0);
-    int base = int(prim * PRIM_TEXELS);
     uvec4 a = imageLoad(primitives, base);
     uint kind = a.w & PRIM_KIND_MASK;
     if (HAS_TRIANGLES && kind == PRIM_KIND_TRIANGLE) {
@@ -96,11 +97,15 @@ TraceRay rayIntoInstance(vec3 origin, vec3 dir, uint instance) {
     return makeTraceRay(o, d);
 }
 
-// An inner node's index (leaf entries, instance entries and the leave marker have bit 30 or 31 set).
+// An inner node's first texel (leaf entries, instance entries and the leave marker have bit 30 or 31 set).
 bool isNodeEntry(uint e) { return (e & (ENTRY_INSTANCE_BIT | ENTRY_LEAF_BIT)) == 0u; }
 bool isLeafEntry(uint e) { return (e & (ENTRY_INSTANCE_BIT | ENTRY_LEAF_BIT)) == ENTRY_LEAF_BIT; }
 // An instance to enter (top bit; the markers above ENTRY_REFILL have it too).
 bool isInstanceEntry(uint e) { return (e & ENTRY_INSTANCE_BIT) != 0u && e < ENTRY_REFILL; }
+
+// The stack entry of the root node `index`: its first texel, like the entries the host writes
+// into the nodes (node_packing.h), so that the walk's fetch needs no multiply.
+uint rootEntry(uint index) { return index * (PACKED_NODES ? GPU_NODE_TEXELS : GPU_EXACT_NODE_TEXELS); }
 
 // Child K's stack entry, carried in the low bits of its box floats (device_host.h, GpuBvhNode).
 uint nodeChildEntry(uvec4 xy, uvec2 z) {
@@ -169,7 +174,7 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
     bool spilling = false;
     uint spillEntry = ENTRY_NONE;
     uint instance = 0u;
-    uint entry = HAS_INSTANCES ? frame.scene.w : instanceInfo(0u).x;
+    uint entry = rootEntry(HAS_INSTANCES ? frame.scene.w : instanceInfo(0u).x);
     bool finished = false;
     bool overflow = false;
 
@@ -196,7 +201,7 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
         // array (to spill a register entry or to refill from it), or has nothing left.
         while (!finished && !spilling && isNodeEntry(entry)) {
             if (!chargeLoop()) break;
-            int base = int(entry * (PACKED_NODES ? GPU_NODE_TEXELS : GPU_EXACT_NODE_TEXELS));
+            int base = int(entry);  // a node's entry is its first texel (node_packing.h)
             uvec4 xy0 = imageLoad(bvhNodes, base);
             uvec4 xy1 = imageLoad(bvhNodes, base + 1);
             uvec4 z01 = imageLoad(bvhNodes, base + 2);
@@ -243,7 +248,7 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             if (!spilling) {
                 instance = entry & ~ENTRY_INSTANCE_BIT;
                 ray = rayIntoInstance(origin, dir, instance);
-                entry = instanceInfo(instance).x;
+                entry = rootEntry(instanceInfo(instance).x);
                 spilling = held == REG_STACK;
                 spillEntry = r3;
                 if (!spilling) ++held;
@@ -253,11 +258,12 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             uint first = (entry & ~ENTRY_LEAF_BIT) >> 4u;
             uint count = entry & 15u;
             uint i = 0u;
-            for (; i < count; ++i) {
+            int base = int(first * PRIM_TEXELS);
+            for (; i < count; ++i, base += int(PRIM_TEXELS)) {
                 if (!chargeLoop()) break;
                 float t;
                 vec2 bary;
-                if (intersectPrimitive(ray, first + i, hit.t, t, bary)) {
+                if (intersectPrimitive(ray, base, hit.t, t, bary)) {
                     hit.t = t;
                     hit.instance = instance;
                     hit.prim = first + i;

@@ -45,14 +45,15 @@ std::uint32_t roundUpWithLowBits(float value, std::uint32_t payload, unsigned bi
     return roundDownWithLowBits(-value, payload, bits) ^ kSignBit;
 }
 
-std::uint32_t childStackEntry(const gpu::BvhNode& node, int k, bool topLevel) {
+std::uint32_t childStackEntry(const gpu::BvhNode& node, int k, bool topLevel, std::uint32_t nodeTexels) {
     const std::uint32_t link = bvh::childLink(node, k);
     const std::uint32_t count = bvh::childCount(node, k);
     if (count == 0) {
         if (link == gpu::NODE_NONE) return gpu::ENTRY_NONE;
-        if ((link & (gpu::ENTRY_INSTANCE_BIT | gpu::ENTRY_LEAF_BIT)) != 0u)
+        const std::uint64_t firstTexel = std::uint64_t{link} * nodeTexels;
+        if (firstTexel >= gpu::ENTRY_LEAF_BIT)  // bits 30 and 31 mark leaves and instances
             throw std::logic_error("BVH node index " + std::to_string(link) + " does not fit a stack entry");
-        return link;
+        return static_cast<std::uint32_t>(firstTexel);
     }
     if (topLevel) {
         // A top-level leaf is one instance (bvh_builder/top_level.cpp builds them so).
@@ -90,7 +91,7 @@ std::vector<gpu::GpuBvhNode> packNodes(const bvh::SceneBvh& bvh) {
         const gpu::BvhNode& node = bvh.nodes[i];
         gpu::GpuBvhNode& out = packed[i];
         for (int k = 0; k < 2; ++k) {
-            const std::uint32_t entry = childStackEntry(node, k, topLevel[i]);
+            const std::uint32_t entry = childStackEntry(node, k, topLevel[i], gpu::GPU_NODE_TEXELS);
             const glm::uvec4& xy = k == 0 ? node.xy0 : node.xy1;
             glm::uvec4& packedXy = k == 0 ? out.xy0 : out.xy1;
             // lo.x hi.x lo.y hi.y carry entry bits 0-23, lo.z and hi.z bits 24-31.
@@ -155,7 +156,8 @@ GpuNodes gpuNodes(const bvh::SceneBvh& bvh) {
     out.texels.reserve(bvh.nodes.size() * gpu::GPU_EXACT_NODE_TEXELS);
     for (std::size_t i = 0; i < bvh.nodes.size(); ++i) {
         const gpu::BvhNode& n = bvh.nodes[i];
-        const glm::uvec4 entries(childStackEntry(n, 0, topLevel[i]), childStackEntry(n, 1, topLevel[i]), 0u, 0u);
+        const glm::uvec4 entries(childStackEntry(n, 0, topLevel[i], gpu::GPU_EXACT_NODE_TEXELS),
+                                 childStackEntry(n, 1, topLevel[i], gpu::GPU_EXACT_NODE_TEXELS), 0u, 0u);
         out.texels.insert(out.texels.end(), {n.xy0, n.xy1, n.z01, entries});
     }
     return out;

@@ -23,8 +23,10 @@ std::uint32_t roundUpWithLowBits(float value, std::uint32_t payload, unsigned bi
 std::vector<bool> topLevelNodes(const bvh::SceneBvh& bvh);
 
 // The kernel's stack entry for child k of bvh.nodes[index], where `topLevel` says whether the
-// node belongs to the top level (whose leaves are instances) or to a bottom level.
-std::uint32_t childStackEntry(const gpu::BvhNode& node, int k, bool topLevel);
+// node belongs to the top level (whose leaves are instances) or to a bottom level. An inner
+// child's entry is its node's first texel (link * nodeTexels, the layout's texels per node), so
+// the walk fetches without a multiply (traverse.glsl).
+std::uint32_t childStackEntry(const gpu::BvhNode& node, int k, bool topLevel, std::uint32_t nodeTexels);
 
 // Every node of bvh.nodes, in the same order (indices stay valid). Leaf entries must fit
 // (checkLeafEntries, traversal_stack.h, refuses a scene whose leaves do not): one that does not

@@ -62,8 +62,8 @@ VKRT_CONST uint BINDING_HITS = 13;         // trace_rays.comp only: writeonly ui
 // child by its link, never by its box.
 VKRT_CONST uint NODE_NONE = 0xffffffffu;
 // traverse.glsl keeps a bottom-level leaf on its stack as one 32-bit entry: ENTRY_LEAF_BIT, the
-// first primitive in bits 4..29 and the count in bits 0..3 (inner nodes are plain indices below
-// 2^30). The host refuses a BVH with a leaf that does not fit (host/vulkan/traversal_stack.h);
+// first primitive in bits 4..29 and the count in bits 0..3 (an inner node's entry is its first
+// texel, below 2^30). The host refuses a BVH with a leaf that does not fit (host/vulkan/traversal_stack.h);
 // the builder's leaves hold at most 8 primitives and a 128 MiB buffer at most 2.8M primitives.
 VKRT_CONST uint ENTRY_LEAF_BIT = 0x40000000u;
 VKRT_CONST uint LEAF_ENTRY_MAX_COUNT = 15u;
@@ -77,7 +77,8 @@ struct BvhNode {
 
 // The node as the kernels read it: the builder's BvhNode above in 48 bytes = 3 RGBA32UI texels
 // (host/vulkan/node_packing.h packs it at upload). Texels 0-2 as in BvhNode, but each child's
-// link and count travel as its ready stack entry (traverse.glsl: an inner node's index,
+// link and count travel as its ready stack entry (traverse.glsl: an inner node's first texel,
+// index * GPU_NODE_TEXELS, so the walk's fetch waits on no multiply;
 // ENTRY_LEAF_BIT | first << 4 | count for a bottom-level leaf, ENTRY_INSTANCE_BIT | instance for a
 // top-level leaf, ENTRY_NONE for an empty child) in the low bits of the child's own box floats:
 // NODE_ENTRY_XY_BITS bits in each of lo.x hi.x lo.y hi.y (entry bits 0-23), NODE_ENTRY_Z_BITS in

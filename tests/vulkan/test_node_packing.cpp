@@ -108,7 +108,7 @@ TEST(NodePacking, PackedNodesHoldTheBuildersEntriesAndContainItsBoxes) {
                     continue;
                 }
                 if (count == 0) {
-                    EXPECT_EQ(entry, link);
+                    EXPECT_EQ(entry, link * gpu::GPU_NODE_TEXELS);
                     ++inner;
                 } else if (top[i]) {
                     EXPECT_EQ(entry, gpu::ENTRY_INSTANCE_BIT | link);
@@ -156,7 +156,7 @@ TEST(NodePacking, FarFromItsOriginGeometryKeepsTheExactLayout) {
         EXPECT_EQ(t[0], node.xy0);
         EXPECT_EQ(t[1], node.xy1);
         EXPECT_EQ(t[2], node.z01);
-        EXPECT_EQ(t[3], glm::uvec4(childStackEntry(node, 0, top[i]), childStackEntry(node, 1, top[i]), 0u, 0u));
+        EXPECT_EQ(t[3], glm::uvec4(childStackEntry(node, 0, top[i], gpu::GPU_EXACT_NODE_TEXELS), childStackEntry(node, 1, top[i], gpu::GPU_EXACT_NODE_TEXELS), 0u, 0u));
     }
 }
 
