@@ -83,6 +83,15 @@ std::vector<bool> topLevelNodes(const bvh::SceneBvh& bvh) {
     return topLevel;
 }
 
+void checkTopLevelLast(const bvh::SceneBvh& bvh) {
+    const std::vector<bool> topLevel = topLevelNodes(bvh);
+    for (std::size_t i = 0; i < topLevel.size(); ++i)
+        if (topLevel[i] != (i >= bvh.topRoot))
+            throw std::logic_error("BVH node " + std::to_string(i) + (topLevel[i] ? " is top-level but precedes" : " is bottom-level but follows") +
+                                   " the top-level root " + std::to_string(bvh.topRoot) +
+                                   ": the kernel needs the top level last (traverse.glsl, topLevelNode)");
+}
+
 std::vector<gpu::GpuBvhNode> packNodes(const bvh::SceneBvh& bvh) {
     const std::vector<bool> topLevel = topLevelNodes(bvh);
     constexpr unsigned xyBits = gpu::NODE_ENTRY_XY_BITS, zBits = gpu::NODE_ENTRY_Z_BITS;
@@ -133,6 +142,7 @@ double treeAreaGrowth(const bvh::SceneBvh& bvh, const std::vector<gpu::GpuBvhNod
 }  // namespace
 
 GpuNodes gpuNodes(const bvh::SceneBvh& bvh) {
+    checkTopLevelLast(bvh);
     GpuNodes out;
     std::vector<gpu::GpuBvhNode> packed;
     try {

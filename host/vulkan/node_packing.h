@@ -22,6 +22,11 @@ std::uint32_t roundUpWithLowBits(float value, std::uint32_t payload, unsigned bi
 // Every other node is bottom-level.
 std::vector<bool> topLevelNodes(const bvh::SceneBvh& bvh);
 
+// Throws std::logic_error unless the top level's nodes are exactly the last ones, from bvh.topRoot
+// on (SceneBvh::nodes promises it): the kernel tells a top-level node by its index alone
+// (traverse.glsl, topLevelNode). gpuNodes checks it.
+void checkTopLevelLast(const bvh::SceneBvh& bvh);
+
 // The kernel's stack entry for child k of bvh.nodes[index], where `topLevel` says whether the
 // node belongs to the top level (whose leaves are instances) or to a bottom level. An inner
 // child's entry is its node's first texel (link * nodeTexels, the layout's texels per node), so

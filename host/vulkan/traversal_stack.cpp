@@ -38,7 +38,7 @@ std::uint32_t traversalStackNeed(const bvh::SceneBvh& bvh, bool instancing) {
     if (!instancing) return bvh.instances.empty() ? 0 : innerDepth(bvh.nodes, bvh.instances[0].info.x);
     std::uint32_t deepestBottom = 0;
     for (const gpu::Instance& instance : bvh.instances) deepestBottom = std::max(deepestBottom, innerDepth(bvh.nodes, instance.info.x));
-    return innerDepth(bvh.nodes, bvh.topRoot) + 1 + deepestBottom;
+    return innerDepth(bvh.nodes, bvh.topRoot) + deepestBottom;
 }
 
 void checkLeafEntries(const bvh::SceneBvh& bvh) {

@@ -14,8 +14,8 @@ namespace vkrt {
 std::uint32_t innerDepth(const std::vector<gpu::BvhNode>& nodes, std::uint32_t root);
 
 // The most stack entries traverse.glsl can hold: one per inner node on the path (the far child)
-// in the top level, one marker for entering an instance, then one per inner node of the
-// deepest bottom level. Without instancing only instance 0's bottom level is traversed.
+// in the top level, then one per inner node of the deepest bottom level. Without instancing only
+// instance 0's bottom level is traversed.
 std::uint32_t traversalStackNeed(const bvh::SceneBvh& bvh, bool instancing);
 
 // Throws DeviceLimitExceeded naming the leaf when a bottom-level leaf cannot be packed into one

@@ -175,5 +175,39 @@ TEST(NodePacking, BoundsAtTheLargestFloatKeepTheExactLayout) {
     EXPECT_EQ(nodes.texels.size(), scene.nodes.size() * gpu::GPU_EXACT_NODE_TEXELS);
 }
 
+// The kernel tells a top-level node by its index (at or after the top-level root: SceneBvh keeps
+// the top level last); a BVH that broke that order would walk bottom-level nodes with the world
+// ray, so the upload refuses it.
+TEST(NodePacking, TheTopLevelMustComeLast) {
+    std::vector<std::vector<bvh::PrimitiveInput>> groups(1);
+    for (int i = 0; i < 40; ++i) {
+        const glm::vec3 c(float(i), 0.0f, 0.0f);
+        groups[0].push_back({gpu::PRIM_KIND_TRIANGLE, c, c + glm::vec3(1, 0, 0), c + glm::vec3(0, 1, 0)});
+    }
+    std::vector<bvh::InstanceInput> instances;
+    for (int i = 0; i < 6; ++i)
+        instances.push_back({0, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 5.0f * float(i), 0.0f)), gpu::MATERIAL_NONE});
+    bvh::SceneBvh scene = bvh::buildSceneBvh(groups, instances, {});
+    ASSERT_GT(scene.nodes.size() - scene.topRoot, 1u) << "the top level must have inner nodes of its own";
+    EXPECT_NO_THROW(checkTopLevelLast(scene));
+    EXPECT_NO_THROW(gpuNodes(scene));
+    // Move the top level's root to the front: nodes keep their links, the order breaks.
+    const std::uint32_t root = scene.topRoot;
+    std::swap(scene.nodes[0], scene.nodes[root]);
+    for (gpu::BvhNode& node : scene.nodes)
+        for (int k = 0; k < 2; ++k)
+            if (bvh::childIsInner(node, k)) {
+                std::uint32_t& link = node.link[k];
+                link = link == 0 ? root : (link == root ? 0 : link);
+            }
+    for (bvh::GroupRange& group : scene.groups)
+        if (group.rootNode == 0) group.rootNode = root;
+    for (gpu::Instance& instance : scene.instances)
+        if (instance.info.x == 0) instance.info.x = root;
+    scene.topRoot = 0;
+    EXPECT_THROW(checkTopLevelLast(scene), std::logic_error);
+    EXPECT_THROW(gpuNodes(scene), std::logic_error);
+}
+
 }  // namespace
 }  // namespace vkrt

@@ -151,10 +151,11 @@ TEST_F(VulkanTest, RayTracerMatchesTheCpuWithExactNodesFarFromTheOrigin) {
 }
 
 // traverse.glsl keeps the stack's top entries in registers and the rest in an array that only its
-// main loop touches: a push with the registers full spills one, a pop with them empty refills one,
-// and entering an instance pushes the marker that leaves it (spilling if need be). Many instances
-// of a deep tree, crossed by long rays, take every one of those paths at both levels: the top
-// level alone is deeper than the registers hold.
+// main loop touches: a push with the registers full spills one, a pop with them empty refills one.
+// Entering an instance pushes nothing: the walk tests each node with its own level's ray, so a
+// top-level entry popped after an instance's last one must be tested with the world ray again.
+// Many instances of a deep tree, crossed by long rays, take every one of those paths at both
+// levels: the top level alone is deeper than the registers hold.
 TEST_F(VulkanTest, RayTracerMatchesTheCpuThroughDeepStacksAndManyInstances) {
     std::mt19937 random(23);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
