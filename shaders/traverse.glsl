@@ -175,7 +175,11 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
     uint entry = rootEntry(HAS_INSTANCES ? frame.scene.w : instanceInfo(0u).x);
     // The top level's nodes come last in the node array, from its root on (bvh.h, SceneBvh::nodes;
     // the host checks it: node_packing.h), so an entry at or past the root's is a top-level node.
+    // The world group's nodes (frame.world, node_packing.h InlinedWorld: the loose shapes of
+    // instance 0, whose transform is the identity) are walked as part of the top level, with the
+    // world ray, and its leaves are tested with it: no instance step to reach them.
     uint topLevelStart = HAS_INSTANCES ? entry : 0u;
+    uvec4 world = frame.world;
     bool finished = false;
     bool overflow = false;
 
@@ -205,7 +209,7 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             int base = int(entry);  // a node's entry is its first texel (node_packing.h)
             // A top-level node tests the world ray, a bottom-level one the instance's (see the
             // instance step below: the top level follows the bottom levels in the node array).
-            bool topLevelNode = HAS_INSTANCES && entry >= topLevelStart;
+            bool topLevelNode = HAS_INSTANCES && (entry >= topLevelStart || entry - world.x < world.y);
             vec3 boxOrigin = topLevelNode ? worldRay.origin : ray.origin;
             vec3 boxInvDir = topLevelNode ? worldRay.invDir : ray.invDir;
             uvec4 xy0 = imageLoad(bvhNodes, base);
@@ -256,6 +260,13 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
         } else if (isLeafEntry(entry)) {
             uint first = (entry & ~ENTRY_LEAF_BIT) >> 4u;
             uint count = entry & 15u;
+            if (HAS_INSTANCES && first - world.z < world.w) {
+                // A world leaf: no instance's entries are on the stack (they are all popped before
+                // the top-level entries beneath them, and world entries sit among those), so the
+                // instance ray can be overwritten; the next instance entered sets it again.
+                ray = worldRay;
+                instance = 0u;
+            }
             uint i = 0u;
             int base = int(first * PRIM_TEXELS);
             for (; i < count; ++i, base += int(PRIM_TEXELS)) {

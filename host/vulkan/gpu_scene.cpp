@@ -91,7 +91,9 @@ GpuScene::GpuScene(const Context& context, Transfers& transfers, const KernelLay
     upload(gpu::BINDING_LIGHTS, tables.lights);
     upload(gpu::BINDING_TEXTURES, tables.textures);
     upload(gpu::BINDING_TEXELS, tables.texels);
-    upload(gpu::BINDING_FRAME, std::vector<gpu::FrameParams>{frame});
+    gpu::FrameParams params = frame;
+    params.world = nodes.world;  // which nodes and primitives the kernel walks as the world (node_packing.h)
+    upload(gpu::BINDING_FRAME, std::vector<gpu::FrameParams>{params});
     transfers.zero(buffers_[gpu::BINDING_ACCUM]);
     transfers.zero(buffers_[gpu::BINDING_STATUS]);
 

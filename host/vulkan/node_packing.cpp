@@ -45,20 +45,73 @@ std::uint32_t roundUpWithLowBits(float value, std::uint32_t payload, unsigned bi
     return roundDownWithLowBits(-value, payload, bits) ^ kSignBit;
 }
 
-std::uint32_t childStackEntry(const gpu::BvhNode& node, int k, bool topLevel, std::uint32_t nodeTexels) {
+namespace {
+
+std::uint32_t nodeEntry(std::uint32_t index, std::uint32_t nodeTexels) {
+    const std::uint64_t firstTexel = std::uint64_t{index} * nodeTexels;
+    if (firstTexel >= gpu::ENTRY_LEAF_BIT)  // bits 30 and 31 mark leaves and instances
+        throw std::logic_error("BVH node index " + std::to_string(index) + " does not fit a stack entry");
+    return static_cast<std::uint32_t>(firstTexel);
+}
+
+bool isIdentity(const gpu::Instance& instance) {
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c)
+            if (instance.objectToWorld[r][c] != (r == c ? 1.0f : 0.0f) || instance.worldToObject[r][c] != (r == c ? 1.0f : 0.0f))
+                return false;
+    return true;
+}
+
+}  // namespace
+
+InlinedWorld inlinedWorld(const bvh::SceneBvh& bvh) {
+    InlinedWorld world;
+    if (bvh.instances.size() < 2 || !isIdentity(bvh.instances[0])) return world;
+    const std::uint32_t group = bvh.instances[0].info.z;
+    for (std::size_t i = 1; i < bvh.instances.size(); ++i)
+        if (bvh.instances[i].info.z == group) return world;
+    if (group >= bvh.groups.size() || bvh.groups[group].primCount == 0) return world;
+    const std::uint32_t root = bvh.groups[group].rootNode;
+    if (root >= bvh.nodes.size() || root != bvh.instances[0].info.x) return world;
+    // The group's nodes, from its root: the kernel tells them by one index range.
+    std::uint32_t lo = root, hi = root, count = 0;
+    std::vector<std::uint32_t> pending{root};
+    while (!pending.empty()) {
+        const std::uint32_t i = pending.back();
+        pending.pop_back();
+        lo = std::min(lo, i);
+        hi = std::max(hi, i);
+        ++count;
+        for (int k = 0; k < 2; ++k)
+            if (bvh::childIsInner(bvh.nodes[i], k)) pending.push_back(bvh::childLink(bvh.nodes[i], k));
+    }
+    if (hi - lo + 1 != count || hi >= bvh.topRoot) return world;
+    world.inlined = true;
+    world.rootNode = root;
+    world.firstNode = lo;
+    world.nodeCount = count;
+    world.firstPrim = bvh.groups[group].firstPrim;
+    world.primCount = bvh.groups[group].primCount;
+    return world;
+}
+
+glm::uvec4 inlinedWorldParams(const InlinedWorld& world, std::uint32_t nodeTexels) {
+    if (!world.inlined) return glm::uvec4(0u);
+    return {nodeEntry(world.firstNode, nodeTexels), world.nodeCount * nodeTexels, world.firstPrim, world.primCount};
+}
+
+std::uint32_t childStackEntry(const gpu::BvhNode& node, int k, bool topLevel, std::uint32_t nodeTexels, const InlinedWorld& world) {
     const std::uint32_t link = bvh::childLink(node, k);
     const std::uint32_t count = bvh::childCount(node, k);
     if (count == 0) {
         if (link == gpu::NODE_NONE) return gpu::ENTRY_NONE;
-        const std::uint64_t firstTexel = std::uint64_t{link} * nodeTexels;
-        if (firstTexel >= gpu::ENTRY_LEAF_BIT)  // bits 30 and 31 mark leaves and instances
-            throw std::logic_error("BVH node index " + std::to_string(link) + " does not fit a stack entry");
-        return static_cast<std::uint32_t>(firstTexel);
+        return nodeEntry(link, nodeTexels);
     }
     if (topLevel) {
         // A top-level leaf is one instance (bvh_builder/top_level.cpp builds them so).
         if (count != 1u || link >= gpu::ENTRY_NONE - gpu::ENTRY_INSTANCE_BIT - 1u)
             throw std::logic_error("top-level BVH leaf of " + std::to_string(count) + " instances at " + std::to_string(link));
+        if (world.inlined && link == 0u) return nodeEntry(world.rootNode, nodeTexels);
         return gpu::ENTRY_INSTANCE_BIT | link;
     }
     if (count > gpu::LEAF_ENTRY_MAX_COUNT || link > gpu::LEAF_ENTRY_MAX_FIRST)
@@ -92,7 +145,7 @@ void checkTopLevelLast(const bvh::SceneBvh& bvh) {
                                    ": the kernel needs the top level last (traverse.glsl, topLevelNode)");
 }
 
-std::vector<gpu::GpuBvhNode> packNodes(const bvh::SceneBvh& bvh) {
+std::vector<gpu::GpuBvhNode> packNodes(const bvh::SceneBvh& bvh, const InlinedWorld& world) {
     const std::vector<bool> topLevel = topLevelNodes(bvh);
     constexpr unsigned xyBits = gpu::NODE_ENTRY_XY_BITS, zBits = gpu::NODE_ENTRY_Z_BITS;
     std::vector<gpu::GpuBvhNode> packed(bvh.nodes.size());
@@ -100,7 +153,7 @@ std::vector<gpu::GpuBvhNode> packNodes(const bvh::SceneBvh& bvh) {
         const gpu::BvhNode& node = bvh.nodes[i];
         gpu::GpuBvhNode& out = packed[i];
         for (int k = 0; k < 2; ++k) {
-            const std::uint32_t entry = childStackEntry(node, k, topLevel[i], gpu::GPU_NODE_TEXELS);
+            const std::uint32_t entry = childStackEntry(node, k, topLevel[i], gpu::GPU_NODE_TEXELS, world);
             const glm::uvec4& xy = k == 0 ? node.xy0 : node.xy1;
             glm::uvec4& packedXy = k == 0 ? out.xy0 : out.xy1;
             // lo.x hi.x lo.y hi.y carry entry bits 0-23, lo.z and hi.z bits 24-31.
@@ -143,10 +196,11 @@ double treeAreaGrowth(const bvh::SceneBvh& bvh, const std::vector<gpu::GpuBvhNod
 
 GpuNodes gpuNodes(const bvh::SceneBvh& bvh) {
     checkTopLevelLast(bvh);
+    const InlinedWorld world = inlinedWorld(bvh);
     GpuNodes out;
     std::vector<gpu::GpuBvhNode> packed;
     try {
-        packed = packNodes(bvh);
+        packed = packNodes(bvh, world);
         // Per tree: a huge top-level box must not hide a mesh whose own boxes grew.
         out.areaGrowth = treeAreaGrowth(bvh, packed, bvh.topRoot);
         for (const bvh::GroupRange& group : bvh.groups)
@@ -157,6 +211,7 @@ GpuNodes gpuNodes(const bvh::SceneBvh& bvh) {
         out.areaGrowth = INFINITY;
     }
     out.packed = out.areaGrowth <= kMaxPackedAreaGrowth;
+    out.world = inlinedWorldParams(world, out.packed ? gpu::GPU_NODE_TEXELS : gpu::GPU_EXACT_NODE_TEXELS);
     if (out.packed) {
         out.texels.reserve(packed.size() * gpu::GPU_NODE_TEXELS);
         for (const gpu::GpuBvhNode& n : packed) out.texels.insert(out.texels.end(), {n.xy0, n.xy1, n.z01});
@@ -166,8 +221,8 @@ GpuNodes gpuNodes(const bvh::SceneBvh& bvh) {
     out.texels.reserve(bvh.nodes.size() * gpu::GPU_EXACT_NODE_TEXELS);
     for (std::size_t i = 0; i < bvh.nodes.size(); ++i) {
         const gpu::BvhNode& n = bvh.nodes[i];
-        const glm::uvec4 entries(childStackEntry(n, 0, topLevel[i], gpu::GPU_EXACT_NODE_TEXELS),
-                                 childStackEntry(n, 1, topLevel[i], gpu::GPU_EXACT_NODE_TEXELS), 0u, 0u);
+        const glm::uvec4 entries(childStackEntry(n, 0, topLevel[i], gpu::GPU_EXACT_NODE_TEXELS, world),
+                                 childStackEntry(n, 1, topLevel[i], gpu::GPU_EXACT_NODE_TEXELS, world), 0u, 0u);
         out.texels.insert(out.texels.end(), {n.xy0, n.xy1, n.z01, entries});
     }
     return out;

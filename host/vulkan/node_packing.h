@@ -27,16 +27,33 @@ std::vector<bool> topLevelNodes(const bvh::SceneBvh& bvh);
 // (traverse.glsl, topLevelNode). gpuNodes checks it.
 void checkTopLevelLast(const bvh::SceneBvh& bvh);
 
+// The world group (the scene's loose shapes: instance 0, identity transform) walked as part of the
+// top level: its top-level leaf becomes an entry of its root node, so a ray reaches the loose
+// shapes without the main-loop round that entering an instance costs (traverse.glsl). Chosen when
+// the scene has a top level, instance 0 is the identity, no other instance shares its group, and
+// the group's nodes are contiguous (the kernel tells them by their index range).
+struct InlinedWorld {
+    bool inlined = false;
+    std::uint32_t rootNode = 0;
+    std::uint32_t firstNode = 0, nodeCount = 0;  // the group's nodes: [firstNode, firstNode + nodeCount)
+    std::uint32_t firstPrim = 0, primCount = 0;
+};
+InlinedWorld inlinedWorld(const bvh::SceneBvh& bvh);
+// FrameParams::world for the layout with nodeTexels texels per node (zero counts when not inlined).
+glm::uvec4 inlinedWorldParams(const InlinedWorld& world, std::uint32_t nodeTexels);
+
 // The kernel's stack entry for child k of bvh.nodes[index], where `topLevel` says whether the
 // node belongs to the top level (whose leaves are instances) or to a bottom level. An inner
 // child's entry is its node's first texel (link * nodeTexels, the layout's texels per node), so
-// the walk fetches without a multiply (traverse.glsl).
-std::uint32_t childStackEntry(const gpu::BvhNode& node, int k, bool topLevel, std::uint32_t nodeTexels);
+// the walk fetches without a multiply (traverse.glsl). The inlined world's instance (instance 0)
+// is the entry of the world group's root node.
+std::uint32_t childStackEntry(const gpu::BvhNode& node, int k, bool topLevel, std::uint32_t nodeTexels,
+                              const InlinedWorld& world = {});
 
 // Every node of bvh.nodes, in the same order (indices stay valid). Leaf entries must fit
 // (checkLeafEntries, traversal_stack.h, refuses a scene whose leaves do not): one that does not
 // is a std::logic_error here.
-std::vector<gpu::GpuBvhNode> packNodes(const bvh::SceneBvh& bvh);
+std::vector<gpu::GpuBvhNode> packNodes(const bvh::SceneBvh& bvh, const InlinedWorld& world = {});
 
 // The node texels to upload, and which layout they are in (device_host.h, SPEC_PACKED_NODES).
 struct GpuNodes {
@@ -44,6 +61,7 @@ struct GpuNodes {
     bool packed = true;
     double areaGrowth = 1.0;  // the packed child boxes' total surface area over the builder's, in the
                               // tree (a bottom level or the top level) where it grows most
+    glm::uvec4 world{0u};     // FrameParams::world (inlinedWorldParams)
 };
 // Packing pays while it adds few node visits; the expected visits of a child are proportional to
 // its box's surface area (the SAH's assumption), so the boxes' total area is the measure, per tree

@@ -220,6 +220,9 @@ struct FrameParams {
     uvec4 pixelGrid;      // SampleGrid of the rpp pixel samples (see sampling.h)
     uvec4 lightGrid;      // SampleGrid of the rpp * lightSamples area-light samples
     uvec4 glossGrid;      // SampleGrid of the rpp * glossSamples glossy directions
+    uvec4 world;          // the world group walked as part of the top level (node_packing.h,
+                          // InlinedWorld): x its first node texel, y its node texels, z its first
+                          // primitive, w its primitive count; y = w = 0 when none is
 };
 
 // Written by the kernel, read by the host after each submission.
@@ -295,7 +298,7 @@ static_assert(offsetof(Instance, info) == 144);
 static_assert(sizeof(Material) == 16 * MATERIAL_TEXELS);
 static_assert(sizeof(Light) == 16 * LIGHT_TEXELS);
 static_assert(sizeof(TextureInfo) == 16 * TEXTURE_INFO_TEXELS);
-static_assert(sizeof(FrameParams) == 176);
+static_assert(sizeof(FrameParams) == 192);
 static_assert(sizeof(RenderStatus) == 16);
 static_assert(sizeof(PassParams) == 32);
 static_assert(sizeof(TraceRayInput) == 32);

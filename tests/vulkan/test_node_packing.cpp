@@ -209,5 +209,77 @@ TEST(NodePacking, TheTopLevelMustComeLast) {
     EXPECT_THROW(gpuNodes(scene), std::logic_error);
 }
 
+// A scene as scene_accel.cpp builds it: group 0 the loose shapes under instance 0 (identity),
+// group 1 a prototype placed by two transformed instances.
+bvh::SceneBvh worldAndPrototypeScene(const glm::mat4& worldTransform, std::uint32_t secondInstanceGroup) {
+    std::vector<std::vector<bvh::PrimitiveInput>> groups(2);
+    for (int i = 0; i < 30; ++i) {
+        const glm::vec3 c(float(i), 0.0f, 0.0f);
+        groups[0].push_back({gpu::PRIM_KIND_TRIANGLE, c, c + glm::vec3(1, 0, 0), c + glm::vec3(0, 1, 0)});
+        groups[1].push_back({gpu::PRIM_KIND_TRIANGLE, c, c + glm::vec3(0, 0, 1), c + glm::vec3(0, 1, 0)});
+    }
+    std::vector<bvh::InstanceInput> instances{{0, worldTransform, gpu::MATERIAL_NONE},
+                                              {1, glm::translate(glm::mat4(1.0f), glm::vec3(0, 5, 0)), gpu::MATERIAL_NONE},
+                                              {secondInstanceGroup, glm::translate(glm::mat4(1.0f), glm::vec3(0, -5, 0)), gpu::MATERIAL_NONE}};
+    return bvh::buildSceneBvh(groups, instances, {});
+}
+
+// The loose shapes' group is walked as part of the top level (traverse.glsl): instance 0's
+// top-level leaf becomes its root node's entry, and FrameParams::world names its nodes and
+// primitives. Only for an identity instance 0 whose group no other instance uses.
+TEST(NodePacking, TheWorldGroupIsWalkedAsPartOfTheTopLevel) {
+    const bvh::SceneBvh scene = worldAndPrototypeScene(glm::mat4(1.0f), 1);
+    const InlinedWorld world = inlinedWorld(scene);
+    ASSERT_TRUE(world.inlined);
+    EXPECT_EQ(world.rootNode, scene.groups[0].rootNode);
+    EXPECT_EQ(world.firstPrim, scene.groups[0].firstPrim);
+    EXPECT_EQ(world.primCount, 30u);
+    // The range holds exactly the nodes reachable from the group's root.
+    std::vector<std::uint32_t> pending{world.rootNode};
+    std::uint32_t reached = 0;
+    while (!pending.empty()) {
+        const std::uint32_t i = pending.back();
+        pending.pop_back();
+        ++reached;
+        EXPECT_GE(i, world.firstNode);
+        EXPECT_LT(i, world.firstNode + world.nodeCount);
+        for (int k = 0; k < 2; ++k)
+            if (bvh::childIsInner(scene.nodes[i], k)) pending.push_back(bvh::childLink(scene.nodes[i], k));
+    }
+    EXPECT_EQ(reached, world.nodeCount);
+
+    const GpuNodes nodes = gpuNodes(scene);
+    ASSERT_TRUE(nodes.packed);
+    EXPECT_EQ(nodes.world, glm::uvec4(world.firstNode * gpu::GPU_NODE_TEXELS, world.nodeCount * gpu::GPU_NODE_TEXELS,
+                                      world.firstPrim, world.primCount));
+    // Among the top level's leaf entries: the world root's instead of instance 0's, and the others.
+    int worldEntries = 0, instanceEntries = 0;
+    for (std::uint32_t i = scene.topRoot; i < scene.nodes.size(); ++i) {
+        gpu::GpuBvhNode packed;
+        packed.xy0 = nodes.texels[3 * i];
+        packed.xy1 = nodes.texels[3 * i + 1];
+        packed.z01 = nodes.texels[3 * i + 2];
+        for (int k = 0; k < 2; ++k) {
+            if (bvh::childCount(scene.nodes[i], k) == 0) continue;
+            const std::uint32_t entry = packedChildEntry(packed, k), instance = bvh::childLink(scene.nodes[i], k);
+            if (instance == 0) {
+                EXPECT_EQ(entry, world.rootNode * gpu::GPU_NODE_TEXELS);
+                ++worldEntries;
+            } else {
+                EXPECT_EQ(entry, gpu::ENTRY_INSTANCE_BIT | instance);
+                ++instanceEntries;
+            }
+        }
+    }
+    EXPECT_EQ(worldEntries, 1);
+    EXPECT_EQ(instanceEntries, 2);
+
+    // Not inlined: a transformed instance 0, or a world group another instance also places.
+    EXPECT_FALSE(inlinedWorld(worldAndPrototypeScene(glm::translate(glm::mat4(1.0f), glm::vec3(1, 0, 0)), 1)).inlined);
+    const bvh::SceneBvh shared = worldAndPrototypeScene(glm::mat4(1.0f), 0);
+    EXPECT_FALSE(inlinedWorld(shared).inlined);
+    EXPECT_EQ(gpuNodes(shared).world, glm::uvec4(0u));
+}
+
 }  // namespace
 }  // namespace vkrt

@@ -211,6 +211,71 @@ TEST_F(VulkanTest, RayTracerMatchesTheCpuThroughDeepStacksAndManyInstances) {
     }
 }
 
+// The loose shapes (group 0, instance 0 with the identity transform) are walked as part of the
+// top level, their leaves tested with the world ray (node_packing.h, InlinedWorld), while other
+// instances are entered: rays that cross both, in either order, must report the CPU's hits,
+// instance indices included.
+TEST_F(VulkanTest, RayTracerMatchesTheCpuWithTheWorldGroupInTheTopLevel) {
+    std::mt19937 random(29);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    auto point = [&] { return glm::vec3(u(random), u(random), u(random)); };
+    std::vector<std::vector<bvh::PrimitiveInput>> groups(2);
+    for (int i = 0; i < 2000; ++i) {
+        const glm::vec3 c = 10.0f * point();
+        groups[0].push_back({gpu::PRIM_KIND_TRIANGLE, c + 0.3f * point(), c + 0.3f * point(), c + 0.3f * point()});
+    }
+    for (int i = 0; i < 40; ++i) {  // loose spheres and boxes too: every kind takes the world ray
+        const glm::vec3 c = 10.0f * point();
+        groups[0].push_back({gpu::PRIM_KIND_SPHERE, c, glm::vec3(0.4f, 0.0f, 0.0f), glm::vec3(0.0f)});
+        groups[0].push_back({gpu::PRIM_KIND_BOX, c + glm::vec3(0.5f), c + glm::vec3(0.9f), glm::vec3(0.0f)});
+    }
+    for (int i = 0; i < 500; ++i) {
+        const glm::vec3 c = point();
+        groups[1].push_back({gpu::PRIM_KIND_TRIANGLE, c + 0.1f * point(), c + 0.1f * point(), c + 0.1f * point()});
+    }
+    std::vector<bvh::InstanceInput> instances{{0, glm::mat4(1.0f), gpu::MATERIAL_NONE}};
+    for (int i = 0; i < 40; ++i) {
+        const glm::mat4 m = glm::rotate(glm::translate(glm::mat4(1.0f), 9.0f * point()), 3.0f * u(random), glm::normalize(point() + glm::vec3(0, 0, 1.5f)));
+        instances.push_back({1, glm::scale(m, glm::vec3(1.0f + 0.5f * u(random))), gpu::MATERIAL_NONE});
+    }
+    const bvh::SceneBvh scene = bvh::buildSceneBvh(groups, instances, {});
+    ASSERT_TRUE(inlinedWorld(scene).inlined) << "the test needs the world group inlined";
+
+    GpuRendererOptions options;
+    options.validation = true;
+    GpuRayTracer tracer(scene, options);
+    watch(tracer.validationLog());
+    std::vector<gpu::TraceRayInput> rays(20000);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const glm::vec3 origin = 14.0f * point(), target = 8.0f * point();
+        rays[i].origin = glm::vec4(origin, i % 2 ? 0.5f * glm::length(target - origin) : 1e30f);
+        rays[i].direction = glm::vec4(glm::normalize(target - origin), 0.0f);
+    }
+    for (const bool anyHit : {false, true}) {
+        const auto hits = tracer.trace(rays, anyHit);
+        int disagreements = 0, worldHits = 0, instanceHits = 0;
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            const bvh::Ray ray{glm::vec3(rays[i].origin), glm::vec3(rays[i].direction), rays[i].origin.w};
+            bvh::Hit hit;
+            const bool cpuHit = anyHit ? bvh::intersectAny(scene, ray) : bvh::intersectClosest(scene, ray, hit);
+            const bool gpuHit = hits[i].hit.x != 0xffffffffu;
+            if (cpuHit != gpuHit || (!anyHit && cpuHit && (hit.prim != hits[i].hit.y || hit.instance != hits[i].hit.z))) {
+                ++disagreements;
+            } else if (!anyHit && cpuHit) {
+                (hit.instance == 0 ? worldHits : instanceHits) += 1;
+                EXPECT_NEAR(glm::uintBitsToFloat(hits[i].hit.x), hit.t, 1e-5f * hit.t + 1e-6f * glm::length(glm::vec3(rays[i].origin)))
+                    << "ray " << i;
+            }
+        }
+        // Same tolerance as the tests above (grazing rays may go either way on FMA contraction).
+        EXPECT_LE(disagreements, static_cast<int>(rays.size()) / 500) << (anyHit ? "shadow" : "closest");
+        if (!anyHit) {
+            EXPECT_GT(worldHits, 2000);
+            EXPECT_GT(instanceHits, 500);
+        }
+    }
+}
+
 TEST_F(VulkanTest, RayTracerSplitsLargeRayListsIntoBatches) {
     const bvh::SceneBvh scene = randomScene();
     GpuRendererOptions options;
