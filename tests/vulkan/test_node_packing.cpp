@@ -211,16 +211,17 @@ TEST(NodePacking, TheTopLevelMustComeLast) {
 
 // A scene as scene_accel.cpp builds it: group 0 the loose shapes under instance 0 (identity),
 // group 1 a prototype placed by two transformed instances.
-bvh::SceneBvh worldAndPrototypeScene(const glm::mat4& worldTransform, std::uint32_t secondInstanceGroup) {
+bvh::SceneBvh worldAndPrototypeScene(const glm::mat4& worldTransform, std::uint32_t secondInstanceGroup,
+                                     glm::vec3 offset = glm::vec3(0.0f)) {
     std::vector<std::vector<bvh::PrimitiveInput>> groups(2);
     for (int i = 0; i < 30; ++i) {
-        const glm::vec3 c(float(i), 0.0f, 0.0f);
+        const glm::vec3 c = offset + glm::vec3(float(i), 0.0f, 0.0f);
         groups[0].push_back({gpu::PRIM_KIND_TRIANGLE, c, c + glm::vec3(1, 0, 0), c + glm::vec3(0, 1, 0)});
         groups[1].push_back({gpu::PRIM_KIND_TRIANGLE, c, c + glm::vec3(0, 0, 1), c + glm::vec3(0, 1, 0)});
     }
     std::vector<bvh::InstanceInput> instances{{0, worldTransform, gpu::MATERIAL_NONE},
-                                              {1, glm::translate(glm::mat4(1.0f), glm::vec3(0, 5, 0)), gpu::MATERIAL_NONE},
-                                              {secondInstanceGroup, glm::translate(glm::mat4(1.0f), glm::vec3(0, -5, 0)), gpu::MATERIAL_NONE}};
+                                              {1, glm::translate(glm::mat4(1.0f), offset + glm::vec3(0, 5, 0)), gpu::MATERIAL_NONE},
+                                              {secondInstanceGroup, glm::translate(glm::mat4(1.0f), offset + glm::vec3(0, -5, 0)), gpu::MATERIAL_NONE}};
     return bvh::buildSceneBvh(groups, instances, {});
 }
 
@@ -273,6 +274,23 @@ TEST(NodePacking, TheWorldGroupIsWalkedAsPartOfTheTopLevel) {
     }
     EXPECT_EQ(worldEntries, 1);
     EXPECT_EQ(instanceEntries, 2);
+
+    // In the exact layout (geometry far from its origin) the entry and the range count 4 texels.
+    const bvh::SceneBvh far = worldAndPrototypeScene(glm::mat4(1.0f), 1, glm::vec3(1e4f));
+    const InlinedWorld farWorld = inlinedWorld(far);
+    ASSERT_TRUE(farWorld.inlined);
+    const GpuNodes exact = gpuNodes(far);
+    ASSERT_FALSE(exact.packed);
+    EXPECT_EQ(exact.world, glm::uvec4(farWorld.firstNode * gpu::GPU_EXACT_NODE_TEXELS, farWorld.nodeCount * gpu::GPU_EXACT_NODE_TEXELS,
+                                      farWorld.firstPrim, farWorld.primCount));
+    int exactWorldEntries = 0;
+    for (std::uint32_t i = far.topRoot; i < far.nodes.size(); ++i)
+        for (int k = 0; k < 2; ++k)
+            if (bvh::childCount(far.nodes[i], k) != 0 && bvh::childLink(far.nodes[i], k) == 0) {
+                EXPECT_EQ(exact.texels[gpu::GPU_EXACT_NODE_TEXELS * i + 3][k], farWorld.rootNode * gpu::GPU_EXACT_NODE_TEXELS);
+                ++exactWorldEntries;
+            }
+    EXPECT_EQ(exactWorldEntries, 1);
 
     // Not inlined: a transformed instance 0, or a world group another instance also places.
     EXPECT_FALSE(inlinedWorld(worldAndPrototypeScene(glm::translate(glm::mat4(1.0f), glm::vec3(1, 0, 0)), 1)).inlined);
