@@ -48,6 +48,14 @@ gpu::Instance makeInstance(const InstanceInput& in, std::uint32_t bottomRoot, st
     return out;
 }
 
+bool isIdentity(const gpu::Instance& instance) {
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c)
+            if (instance.objectToWorld[r][c] != (r == c ? 1.0f : 0.0f) || instance.worldToObject[r][c] != (r == c ? 1.0f : 0.0f))
+                return false;
+    return true;
+}
+
 Aabb worldBounds(const Aabb& objectBox, const glm::mat4& objectToWorld) {
     Aabb out;
     if (objectBox.empty()) return out;

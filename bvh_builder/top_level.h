@@ -15,6 +15,10 @@ namespace vkrt::bvh {
 // or singular.
 gpu::Instance makeInstance(const InstanceInput& in, std::uint32_t bottomRoot, std::size_t index);
 
+// Whether the instance leaves rays unchanged (both 3x4 matrices exactly the identity): the kernels
+// skip the top level for a lone identity instance and walk an identity world group inline.
+bool isIdentity(const gpu::Instance& instance);
+
 // World box of an object box: the box of its 8 transformed corners, computed in double and
 // widened by a few ulps so rounding never puts an object-space hit outside it.
 Aabb worldBounds(const Aabb& objectBox, const glm::mat4& objectToWorld);

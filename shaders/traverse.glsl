@@ -3,9 +3,10 @@
 // would loosen the boxes too much: device_host.h, GpuBvhNode), so each step decides both children
 // from one contiguous fetch. Each pass of the main loop walks inner nodes (an inner loop, one
 // node's two children per pass) until the lane holds something else, then handles it: intersects
-// a bottom-level leaf's primitives (a second inner loop: "while-while", Aila & Laine 2009), enters
-// an instance or leaves one. A far leaf is pushed like a node, as a packed entry (device_host.h,
-// ENTRY_LEAF_BIT).
+// a bottom-level leaf's primitives (a second inner loop: "while-while", Aila & Laine 2009) or
+// enters an instance. Nothing marks the way back to the top level: the walk tests each node with
+// the ray of its level, told by the node's index (the top level and the inlined world group: the
+// world ray). A far leaf is pushed like a node, as a packed entry (device_host.h, ENTRY_LEAF_BIT).
 // Why this shape: lavapipe (Mesa 22.3) runs every statement of a loop body for all 8 lanes, masked,
 // whatever the branch conditions, and a loop body runs at least once (host/vulkan/README.md). So
 // the walk, the loop that runs most, holds only what every pass needs:
@@ -95,7 +96,7 @@ TraceRay rayIntoInstance(vec3 origin, vec3 dir, uint instance) {
     return makeTraceRay(o, d);
 }
 
-// An inner node's first texel (leaf entries, instance entries and the leave marker have bit 30 or 31 set).
+// An inner node's first texel (leaf entries, instance entries and the kernel's markers have bit 30 or 31 set).
 bool isNodeEntry(uint e) { return (e & (ENTRY_INSTANCE_BIT | ENTRY_LEAF_BIT)) == 0u; }
 bool isLeafEntry(uint e) { return (e & (ENTRY_INSTANCE_BIT | ENTRY_LEAF_BIT)) == ENTRY_LEAF_BIT; }
 // An instance to enter (top bit; ENTRY_REFILL and ENTRY_NONE have it too).
@@ -207,8 +208,8 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
         while (!finished && !spilling && isNodeEntry(entry)) {
             if (!chargeLoop()) break;
             int base = int(entry);  // a node's entry is its first texel (node_packing.h)
-            // A top-level node tests the world ray, a bottom-level one the instance's (see the
-            // instance step below: the top level follows the bottom levels in the node array).
+            // A top-level node (or the inlined world group's) tests the world ray, a bottom-level
+            // one the instance's (see the instance step below).
             bool topLevelNode = HAS_INSTANCES && (entry >= topLevelStart || entry - world.x < world.y);
             vec3 boxOrigin = topLevelNode ? worldRay.origin : ray.origin;
             vec3 boxInvDir = topLevelNode ? worldRay.invDir : ray.invDir;

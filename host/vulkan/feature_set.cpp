@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <set>
 
+#include "top_level.h"
+
 namespace vkrt {
 
 namespace {
@@ -22,13 +24,6 @@ std::uint32_t scenePathStack(const FeatureSet& f, const RenderOptions& options) 
     return (f.dielectric || glossFanOut) ? pathStack(f.maxDepth, options) : 0u;
 }
 
-bool isIdentity(const gpu::Instance& instance) {
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 4; ++c)
-            if (instance.objectToWorld[r][c] != (r == c ? 1.0f : 0.0f)) return false;
-    return true;
-}
-
 // Shader indices reachable from what is rendered: loose and mesh shapes, and instanced
 // prototypes under their instance's override. Unused <shader> elements switch nothing on.
 std::set<int> usedShaders(const Scene& scene) {
@@ -41,7 +36,7 @@ std::set<int> usedShaders(const Scene& scene) {
 
 }  // namespace
 
-bool needsTopLevel(const bvh::SceneBvh& bvh) { return !(bvh.instances.size() == 1 && isIdentity(bvh.instances[0])); }
+bool needsTopLevel(const bvh::SceneBvh& bvh) { return !(bvh.instances.size() == 1 && bvh::isIdentity(bvh.instances[0])); }
 
 std::array<std::uint32_t, gpu::SPEC_COUNT> FeatureSet::specializationValues() const {
     std::array<std::uint32_t, gpu::SPEC_COUNT> v{};

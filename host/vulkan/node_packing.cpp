@@ -7,6 +7,7 @@
 #include <string>
 
 #include "node_layout.h"
+#include "top_level.h"
 
 namespace vkrt {
 
@@ -54,19 +55,11 @@ std::uint32_t nodeEntry(std::uint32_t index, std::uint32_t nodeTexels) {
     return static_cast<std::uint32_t>(firstTexel);
 }
 
-bool isIdentity(const gpu::Instance& instance) {
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 4; ++c)
-            if (instance.objectToWorld[r][c] != (r == c ? 1.0f : 0.0f) || instance.worldToObject[r][c] != (r == c ? 1.0f : 0.0f))
-                return false;
-    return true;
-}
-
 }  // namespace
 
 InlinedWorld inlinedWorld(const bvh::SceneBvh& bvh) {
     InlinedWorld world;
-    if (bvh.instances.size() < 2 || !isIdentity(bvh.instances[0])) return world;
+    if (bvh.instances.size() < 2 || !bvh::isIdentity(bvh.instances[0])) return world;
     const std::uint32_t group = bvh.instances[0].info.z;
     for (std::size_t i = 1; i < bvh.instances.size(); ++i)
         if (bvh.instances[i].info.z == group) return world;
