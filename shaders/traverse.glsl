@@ -96,7 +96,7 @@ TraceRay rayIntoInstance(vec3 origin, vec3 dir, uint instance) {
     return makeTraceRay(o, d);
 }
 
-// An inner node's first texel (leaf entries, instance entries and the kernel's markers have bit 30 or 31 set).
+// An inner node's first texel (leaf entries, instance entries and the kernel's marker have bit 30 or 31 set).
 bool isNodeEntry(uint e) { return (e & (ENTRY_INSTANCE_BIT | ENTRY_LEAF_BIT)) == 0u; }
 bool isLeafEntry(uint e) { return (e & (ENTRY_INSTANCE_BIT | ENTRY_LEAF_BIT)) == ENTRY_LEAF_BIT; }
 // An instance to enter (top bit; ENTRY_REFILL and ENTRY_NONE have it too).
@@ -203,7 +203,7 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
                 held = 1u;
             }
         }
-        // 1. Walk the tree until this lane holds a leaf, an instance to enter or leave, needs the
+        // 1. Walk the tree until this lane holds a leaf, an instance to enter, needs the
         // array (to spill a register entry or to refill from it), or has nothing left.
         while (!finished && !spilling && isNodeEntry(entry)) {
             if (!chargeLoop()) break;
