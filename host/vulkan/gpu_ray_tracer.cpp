@@ -150,7 +150,8 @@ GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& opt
     transfers.upload(prims, bytesOf(bvh.prims));
     transfers.upload(instances, bytesOf(bvh.instances));
     gpu::FrameParams params{};
-    params.scene.w = bvh.topRoot;  // with world, the only fields traversal reads
+    // The only fields traversal reads: the top-level root and the inlined world's ranges.
+    params.scene.w = bvh.topRoot;
     params.world = nodeData.world;
     transfers.upload(frame, std::as_bytes(std::span(&params, 1)));
     transfers.zero(status);
