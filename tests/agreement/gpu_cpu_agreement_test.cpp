@@ -23,6 +23,7 @@
 #include "gpu_renderer.h"
 #include "image.h"
 #include "image_compare.h"
+#include "node_packing.h"
 #include "scene_accel.h"
 #include "test_paths.h"
 #include "xml_loader.h"
@@ -111,6 +112,23 @@ TEST(GpuCpuAgreement, EveryUpstreamAndBundledSceneAt64x64) {
             ADD_FAILURE() << path << ": " << e.what();
         }
     }
+}
+
+// The agreement above exercises the inlined world group (node_packing.h, InlinedWorld) on every
+// upstream scene that has both loose shapes and instances: scene_accel.cpp builds each such scene
+// in the shape the inlining needs, and a change there would silently fall back to the instance step.
+TEST(GpuCpuAgreement, UpstreamScenesWithLooseShapesAndInstancesWalkTheirWorldInline) {
+    int mixed = 0;
+    for (const std::string& path : scenesIn(test::upstreamDir())) {
+        Diagnostics diagnostics;
+        const Scene scene = loadScene(path, LoadOptions{}, diagnostics);
+        bool loose = false;
+        for (const Shape& shape : scene.shapes) loose |= shape.type != ShapeType::Mesh;
+        if (!loose || scene.instances.empty()) continue;
+        ++mixed;
+        EXPECT_TRUE(inlinedWorld(buildSceneAccel(scene).bvh).inlined) << path;
+    }
+    EXPECT_EQ(mixed, 13);
 }
 
 // `vkrt --general-kernel`: every feature compiled in, whatever the scene uses. Its untaken paths
