@@ -11,6 +11,7 @@ packages=(
   libglm-dev libtinyobjloader-dev libopenimageio-dev openimageio-tools libpugixml-dev libcli11-dev
   libgtest-dev libgmock-dev
   gnuplot-nox
+  python3
 )
 
 missing=()

@@ -113,7 +113,7 @@ int runRender(CommandLine& cl) {
     }
     writeImage(result.image, cl.outputPath);
     if (!cl.render.quiet)
-        std::fprintf(stderr, "%s: %dx%d, %d rpp on %s: render %.2fs, total %.2fs -> %s\n", cl.scenePath.c_str(),
+        std::fprintf(stderr, "%s: %dx%d, %d rpp on %s: render %.3fs, total %.3fs -> %s\n", cl.scenePath.c_str(),
                      cl.render.width, cl.render.height, cl.render.samplesPerPixel, result.device.c_str(),
                      result.seconds, secondsSince(start), cl.outputPath.c_str());
     return 0;
