@@ -210,12 +210,12 @@ GpuNodes gpuNodes(const bvh::SceneBvh& bvh) {
         for (const gpu::GpuBvhNode& n : packed) out.texels.insert(out.texels.end(), {n.xy0, n.xy1, n.z01});
         return out;
     }
-    const std::vector<bool> topLevel = topLevelNodes(bvh);
     out.texels.reserve(bvh.nodes.size() * gpu::GPU_EXACT_NODE_TEXELS);
     for (std::size_t i = 0; i < bvh.nodes.size(); ++i) {
         const gpu::BvhNode& n = bvh.nodes[i];
-        const glm::uvec4 entries(childStackEntry(n, 0, topLevel[i], gpu::GPU_EXACT_NODE_TEXELS, world),
-                                 childStackEntry(n, 1, topLevel[i], gpu::GPU_EXACT_NODE_TEXELS, world), 0u, 0u);
+        const bool topLevel = i >= bvh.topRoot;  // checkTopLevelLast above: no second walk of the top level
+        const glm::uvec4 entries(childStackEntry(n, 0, topLevel, gpu::GPU_EXACT_NODE_TEXELS, world),
+                                 childStackEntry(n, 1, topLevel, gpu::GPU_EXACT_NODE_TEXELS, world), 0u, 0u);
         out.texels.insert(out.texels.end(), {n.xy0, n.xy1, n.z01, entries});
     }
     return out;

@@ -16,15 +16,23 @@ namespace {
 
 using test::VulkanTest;
 
+// n triangles, each with its corners within `size` of a centre drawn from a cube of half-side
+// `spread` (same draws in the same order as spelling the loop out, so scenes stay as they were).
+void addRandomTriangles(std::mt19937& random, std::vector<bvh::PrimitiveInput>& group, int n, float spread, float size) {
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    auto point = [&] { return glm::vec3(u(random), u(random), u(random)); };
+    for (int i = 0; i < n; ++i) {
+        const glm::vec3 c = spread * point();
+        group.push_back({gpu::PRIM_KIND_TRIANGLE, c + size * point(), c + size * point(), c + size * point()});
+    }
+}
+
 bvh::SceneBvh randomScene(int maxLeafSize = 8, glm::vec3 offset = glm::vec3(0.0f)) {
     std::mt19937 random(11);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     auto point = [&] { return glm::vec3(u(random), u(random), u(random)); };
     std::vector<std::vector<bvh::PrimitiveInput>> groups(2);
-    for (int i = 0; i < 300; ++i) {
-        const glm::vec3 c = 4.0f * point();
-        groups[0].push_back({gpu::PRIM_KIND_TRIANGLE, c + 0.3f * point(), c + 0.3f * point(), c + 0.3f * point()});
-    }
+    addRandomTriangles(random, groups[0], 300, 4.0f, 0.3f);
     for (int i = 0; i < 40; ++i) groups[0].push_back({gpu::PRIM_KIND_SPHERE, 4.0f * point(), glm::vec3(0.1f + 0.2f * std::abs(u(random)), 0, 0), {}});
     for (int i = 0; i < 40; ++i) {
         const glm::vec3 lo = 4.0f * point();
@@ -205,10 +213,7 @@ TEST_F(VulkanTest, RayTracerMatchesTheCpuThroughDeepStacksAndManyInstances) {
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     auto point = [&] { return glm::vec3(u(random), u(random), u(random)); };
     std::vector<std::vector<bvh::PrimitiveInput>> groups(1);
-    for (int i = 0; i < 3000; ++i) {
-        const glm::vec3 c = point();
-        groups[0].push_back({gpu::PRIM_KIND_TRIANGLE, c + 0.05f * point(), c + 0.05f * point(), c + 0.05f * point()});
-    }
+    addRandomTriangles(random, groups[0], 3000, 1.0f, 0.05f);
     std::vector<bvh::InstanceInput> instances;
     for (int i = 0; i < 300; ++i) {
         const glm::mat4 m = glm::rotate(glm::translate(glm::mat4(1.0f), 12.0f * point()), 3.0f * u(random), glm::normalize(point() + glm::vec3(0.0f, 0.0f, 1.5f)));
@@ -241,19 +246,13 @@ TEST_F(VulkanTest, RayTracerMatchesTheCpuWithTheWorldGroupInTheTopLevel) {
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     auto point = [&] { return glm::vec3(u(random), u(random), u(random)); };
     std::vector<std::vector<bvh::PrimitiveInput>> groups(2);
-    for (int i = 0; i < 2000; ++i) {
-        const glm::vec3 c = 10.0f * point();
-        groups[0].push_back({gpu::PRIM_KIND_TRIANGLE, c + 0.3f * point(), c + 0.3f * point(), c + 0.3f * point()});
-    }
+    addRandomTriangles(random, groups[0], 2000, 10.0f, 0.3f);
     for (int i = 0; i < 40; ++i) {  // loose spheres and boxes too: every kind takes the world ray
         const glm::vec3 c = 10.0f * point();
         groups[0].push_back({gpu::PRIM_KIND_SPHERE, c, glm::vec3(0.4f, 0.0f, 0.0f), glm::vec3(0.0f)});
         groups[0].push_back({gpu::PRIM_KIND_BOX, c + glm::vec3(0.5f), c + glm::vec3(0.9f), glm::vec3(0.0f)});
     }
-    for (int i = 0; i < 500; ++i) {
-        const glm::vec3 c = point();
-        groups[1].push_back({gpu::PRIM_KIND_TRIANGLE, c + 0.1f * point(), c + 0.1f * point(), c + 0.1f * point()});
-    }
+    addRandomTriangles(random, groups[1], 500, 1.0f, 0.1f);
     std::vector<bvh::InstanceInput> instances{{0, glm::mat4(1.0f), gpu::MATERIAL_NONE}};
     for (int i = 0; i < 40; ++i) {
         const glm::mat4 m = glm::rotate(glm::translate(glm::mat4(1.0f), 9.0f * point()), 3.0f * u(random), glm::normalize(point() + glm::vec3(0, 0, 1.5f)));
