@@ -18,6 +18,7 @@ layout(constant_id = SPEC_HAS_COOL_TO_WARM) const bool HAS_COOL_TO_WARM = true;
 layout(constant_id = SPEC_MAX_DEPTH) const uint MAX_DEPTH = 4u;
 layout(constant_id = SPEC_PATH_STACK_SIZE) const uint PATH_STACK_SIZE = 8u;
 layout(constant_id = SPEC_PACKED_NODES) const bool PACKED_NODES = true;  // node layout: device_host.h
+layout(constant_id = SPEC_SAMPLER) const uint SAMPLER_KIND = SAMPLER_FROM_FRAME;  // device_host.h
 // 0: nothing in the scene pushes (feature_set.cpp), and the path stack's code is compiled out.
 const bool HAS_PATH_STACK = PATH_STACK_SIZE > 0u;
 const uint PATH_STACK_ENTRIES = HAS_PATH_STACK ? PATH_STACK_SIZE : 1u;  // an array needs one
@@ -46,6 +47,10 @@ layout(set = 0, binding = BINDING_TEXELS, r32ui) uniform readonly uimageBuffer t
 #define VKRT_UNIFORM_INDEX (gl_NumWorkGroups.z - 1u)
 layout(std140, set = 0, binding = BINDING_FRAME) uniform FrameBuffer { FrameParams frames[1]; };
 #define frame frames[VKRT_UNIFORM_INDEX]
+
+// The render's sampler (SAMPLER_*): the specialization constant, or for the general kernel the
+// frame's value. Every sample2D call takes it from here.
+uint samplerKind() { return SAMPLER_KIND == SAMPLER_FROM_FRAME ? frame.sampling.x : SAMPLER_KIND; }
 // The per-pixel sums, a texel buffer rather than an SSBO: on lavapipe an SSBO load at per-lane
 // addresses is a loop over the lanes, one scalar load (and cache miss) at a time, while imageLoad
 // is a gather (host/vulkan/README.md).

@@ -87,8 +87,8 @@ void emitReflection(inout PathQueue q, PathRay ray, Surface s, vec3 N, float rou
     uint j = 0u;
     for (; j < g; ++j) {
         if (!chargeLoop()) break;
-        vec2 u = fanOut ? sample2D(frame.sampling.x, frame.glossGrid, key.pixel, key.index * g + j, dimGloss(0u), key.seed)
-                        : sample2D(frame.sampling.x, frame.pixelGrid, key.pixel, key.index, dimGloss(ray.depth), key.seed);
+        vec2 u = fanOut ? sample2D(samplerKind(), frame.glossGrid, key.pixel, key.index * g + j, dimGloss(0u), key.seed)
+                        : sample2D(samplerKind(), frame.pixelGrid, key.pixel, key.index, dimGloss(ray.depth), key.seed);
         vec3 rg = glossyDirection(r, roughness, u);
         if (dot(rg, s.geomNormal) > 0.0) emitRay(q, offsetTowards(s, rg), rg, w, ray.depth + 1u);
         flushQueue(q);

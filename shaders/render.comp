@@ -46,7 +46,7 @@ void main() {
     key.pixel = y * frame.image.x + x;
     key.index = pass.pass.x;
     key.seed = frame.scene.x;
-    vec2 subPixel = sample2D(frame.sampling.x, frame.pixelGrid, key.pixel, key.index, DIM_CAMERA, key.seed);
+    vec2 subPixel = sample2D(samplerKind(), frame.pixelGrid, key.pixel, key.index, DIM_CAMERA, key.seed);
     CameraRay camera = cameraRay(x, y, subPixel);
     vec3 radiance = cameraSampleRadiance(camera.origin, camera.dir, key);
 

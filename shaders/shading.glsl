@@ -64,7 +64,7 @@ vec3 directLighting(Surface s, vec3 N, vec3 V, uint type, vec3 kd, vec3 ks, floa
             if (!chargeLoop()) break;
             vec3 q = light.position.xyz;
             if (area) {
-                vec2 u = sample2D(frame.sampling.x, frame.lightGrid, key.pixel, key.index * k + j,
+                vec2 u = sample2D(samplerKind(), frame.lightGrid, key.pixel, key.index * k + j,
                                   dimLight(depth, light.info.y), key.seed);
                 q += (u.x - 0.5) * light.edgeU.xyz + (u.y - 0.5) * light.edgeV.xyz;
             }

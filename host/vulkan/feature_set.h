@@ -31,12 +31,15 @@ struct FeatureSet {
                                        // nothing pushes (no dielectric, no gloss fan-out): no stack code
     bool packedNodes = true;           // the BVH nodes' layout, not a feature: set from the upload's
                                        // GpuNodes::packed (node_packing.h) before choosing a kernel
+    std::uint32_t sampler = gpu::SAMPLER_FROM_FRAME;  // the render's SamplerKind, compiled in; the
+                                                      // general kernel reads it from the frame
 
     auto operator<=>(const FeatureSet&) const = default;
 
     // Values indexed by SPEC_* id.
     std::array<std::uint32_t, gpu::SPEC_COUNT> specializationValues() const;
-    // "triangles spheres area-lights reflection depth=4 stack=5", for logs and benchmark tables.
+    // "triangles spheres area-lights reflection sampler=jittered depth=4 stack=5", for logs and
+    // benchmark tables (no sampler= when the kernel reads it from the frame).
     std::string describe() const;
 };
 
@@ -49,7 +52,7 @@ bool needsTopLevel(const bvh::SceneBvh& bvh);
 FeatureSet deriveFeatureSet(const Scene& scene, const SceneAccel& accel, const RenderOptions& options);
 
 // Every feature on (the general kernel of the specialisation benchmark), at the depth and
-// gloss-sample count of `options`.
+// gloss-sample count of `options`; the sampler is read from the frame.
 FeatureSet generalFeatureSet(const RenderOptions& options);
 
 }  // namespace vkrt

@@ -208,6 +208,11 @@ VKRT_CONST uint SAMPLER_JITTERED = 0u;
 VKRT_CONST uint SAMPLER_REGULAR = 1u;
 VKRT_CONST uint SAMPLER_RANDOM = 2u;
 VKRT_CONST uint SAMPLER_SOBOL = 3u;
+// SPEC_SAMPLER's value for "any": the kernel reads the sampler from FrameParams::sampling.x (the
+// general kernel). A specialised kernel gets the render's sampler as a constant instead, so only
+// that sampler's code is compiled: sample2D's branches on the kind are not skipped on lavapipe,
+// which runs every path for all 8 lanes (host/vulkan/README.md).
+VKRT_CONST uint SAMPLER_FROM_FRAME = 0xffffffffu;
 struct FrameParams {
     vec4 cameraPosition;  // xyz eye, w unused
     vec4 cameraU;         // xyz unit right vector, w = image plane width
@@ -271,7 +276,8 @@ VKRT_CONST uint SPEC_HAS_COOL_TO_WARM = 10;
 VKRT_CONST uint SPEC_MAX_DEPTH = 11;        // recursion depth the scene can use
 VKRT_CONST uint SPEC_PATH_STACK_SIZE = 12;   // pending reflection/refraction rays (maxDepth + glossSamples)
 VKRT_CONST uint SPEC_PACKED_NODES = 13;     // the nodes are GpuBvhNode (3 texels), else GpuExactBvhNode (4)
-VKRT_CONST uint SPEC_COUNT = 14;
+VKRT_CONST uint SPEC_SAMPLER = 14;          // SAMPLER_*, or SAMPLER_FROM_FRAME
+VKRT_CONST uint SPEC_COUNT = 15;
 
 // Entries of the kernel's BVH traversal stack. The host refuses a BVH whose top-level depth plus
 // deepest bottom-level depth exceeds it, so the stack can never overflow at run time.

@@ -66,7 +66,7 @@ Agreement renderBothAndCompare(const std::string& path, RenderOptions options,
     GpuRenderStats gpuStats;
     const Image cpu = renderCpu(scene, accel, options, &cpuStats);
     const std::size_t messagesBefore = gpu().validationLog()->count();
-    const Image gpuImage = gpu().render(scene, accel, options, &gpuStats, {.variant = variant});
+    const Image gpuImage = gpu().render(scene, accel, options, &gpuStats, {.variant = variant, .tiling = {}});
     EXPECT_EQ(gpu().validationLog()->count(), messagesBefore) << gpu().validationLog()->joined();
     EXPECT_EQ(cpuStats.nonFiniteSamples, 0u);
     EXPECT_EQ(gpuStats.nonFiniteSamples, 0u);

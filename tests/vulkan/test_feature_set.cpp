@@ -24,7 +24,27 @@ TEST(FeatureSet, TinySceneUsesOnlySpheresAndLambert) {
     EXPECT_FALSE(f.specular || f.reflection || f.gloss || f.dielectric || f.textures || f.coolToWarm);
     EXPECT_EQ(f.maxDepth, 0u);  // nothing reflects: the kernel needs no secondary rays
     EXPECT_EQ(f.pathStackSize, 0u);  // nothing emits a second ray: no path stack, whatever glossSamples
-    EXPECT_EQ(f.describe(), "spheres depth=0 stack=0");
+    EXPECT_EQ(f.sampler, gpu::SAMPLER_JITTERED);  // the default sampler, compiled in
+    EXPECT_EQ(f.describe(), "spheres sampler=jittered depth=0 stack=0");
+}
+
+TEST(FeatureSet, TheRendersSamplerIsCompiledIn) {
+    TinyScene tiny;
+    RenderOptions options = test::smallRender(8, 8, 1);
+    for (SamplerKind kind : {SamplerKind::Jittered, SamplerKind::Regular, SamplerKind::Random, SamplerKind::Sobol}) {
+        options.sampler = kind;
+        const FeatureSet f = deriveFeatureSet(tiny.scene, tiny.accel, options);
+        EXPECT_EQ(f.specializationValues()[gpu::SPEC_SAMPLER], static_cast<std::uint32_t>(kind));
+    }
+    options.sampler = SamplerKind::Sobol;
+    EXPECT_EQ(deriveFeatureSet(tiny.scene, tiny.accel, options).describe(), "spheres sampler=sobol depth=0 stack=0");
+    // The general kernel reads the sampler from the frame, whatever the options.
+    EXPECT_EQ(generalFeatureSet(options).specializationValues()[gpu::SPEC_SAMPLER], gpu::SAMPLER_FROM_FRAME);
+    // Two renders that differ only in the sampler need two pipelines.
+    options.sampler = SamplerKind::Random;
+    const FeatureSet random = deriveFeatureSet(tiny.scene, tiny.accel, options);
+    options.sampler = SamplerKind::Regular;
+    EXPECT_NE(random, deriveFeatureSet(tiny.scene, tiny.accel, options));
 }
 
 TEST(FeatureSet, UnusedShadersSwitchNothingOn) {
@@ -130,6 +150,8 @@ float expectedMask(const FeatureSet& f) {
     const auto values = f.specializationValues();
     std::uint32_t mask = 0;
     for (std::uint32_t id = 0; id <= gpu::SPEC_HAS_COOL_TO_WARM; ++id) mask |= values[id] << id;
+    const std::uint32_t sampler = values[gpu::SPEC_SAMPLER];
+    mask |= (sampler == gpu::SAMPLER_FROM_FRAME ? 0u : sampler + 1u) << 11u;  // spec_probe.comp
     return static_cast<float>(mask);
 }
 
@@ -143,11 +165,13 @@ TEST_F(VulkanTest, SpecializationConstantsReachTheKernelAndPipelinesAreCached) {
     RenderOptions options = test::smallRender(16, 8, 1);
     options.maxDepth = 3;
     options.glossSamples = 2;
+    options.sampler = SamplerKind::Sobol;
 
     GpuRenderStats stats;
     const FeatureSet plainFeatures = deriveFeatureSet(plain.scene, plain.accel, options);
     const glm::vec3 a = probe(gpu, plain.scene, plain.accel, options, KernelVariant::Specialised, &stats);
     EXPECT_EQ(a, glm::vec3(expectedMask(plainFeatures), 0.0f, 0.0f));
+    EXPECT_EQ(static_cast<std::uint32_t>(a.x) >> 11u, gpu::SAMPLER_SOBOL + 1u);  // the sampler reached it too
     EXPECT_GT(stats.pipelineSeconds, 0.0);
     std::cout << "pipeline creation (spec_probe): " << stats.pipelineSeconds << " s\n";
 
@@ -158,7 +182,7 @@ TEST_F(VulkanTest, SpecializationConstantsReachTheKernelAndPipelinesAreCached) {
     EXPECT_EQ(gpu.pipelineCount(), 2u);
 
     const glm::vec3 c = probe(gpu, plain.scene, plain.accel, options, KernelVariant::General, &stats);
-    EXPECT_EQ(c, glm::vec3(2047.0f, 3.0f, 5.0f));  // all eleven flags
+    EXPECT_EQ(c, glm::vec3(2047.0f, 3.0f, 5.0f));  // all eleven flags, the sampler read from the frame
     EXPECT_TRUE(stats.generalKernel);
     EXPECT_EQ(gpu.pipelineCount(), 3u);
 

@@ -17,6 +17,7 @@ layout(constant_id = SPEC_HAS_TEXTURES) const bool HAS_TEXTURES = true;
 layout(constant_id = SPEC_HAS_COOL_TO_WARM) const bool HAS_COOL_TO_WARM = true;
 layout(constant_id = SPEC_MAX_DEPTH) const uint MAX_DEPTH = 99u;
 layout(constant_id = SPEC_PATH_STACK_SIZE) const uint PATH_STACK_SIZE = 99u;
+layout(constant_id = SPEC_SAMPLER) const uint SAMPLER_KIND = 99u;
 
 layout(set = 0, binding = BINDING_NODES, rgba32ui) uniform readonly uimageBuffer bvhNodes;
 layout(set = 0, binding = BINDING_PRIMS, rgba32ui) uniform readonly uimageBuffer primitives;
