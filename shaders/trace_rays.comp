@@ -13,7 +13,7 @@
 // Rays through a texel buffer, like the BVH (bindings.glsl): on lavapipe an SSBO load at a
 // per-lane address is a scalar loop over the lanes (host/vulkan/README.md).
 layout(set = 0, binding = BINDING_RAYS, rgba32ui) uniform readonly uimageBuffer rays;
-layout(set = 0, binding = BINDING_HITS, rgba32ui) uniform writeonly uimageBuffer hits;
+layout(set = 0, binding = BINDING_HITS, r32ui) uniform writeonly uimageBuffer hits;  // device_host.h: TRACE_HIT_WORDS
 layout(push_constant) uniform TracePush { TraceParams traces[1]; };
 #define trace traces[VKRT_UNIFORM_INDEX]  // bindings.glsl: why not a plain member
 
@@ -26,9 +26,15 @@ void main() {
     vec3 direction = uintBitsToFloat(imageLoad(rays, int(2u * i + 1u)).xyz);
     Hit hit;
     bool found = traceScene(origin.xyz, direction, origin.w, trace.rays.y != 0u, hit);
-    // Failures travel in the hit's w (STATUS_* bits), read by the host with the hits: no atomics,
-    // which would be a per-lane loop for every ray on lavapipe.
+    // Failures travel in the hit's words (TRACE_FAILED and the STATUS_* bits), read by the host
+    // with the hits: no atomics, which would be a per-lane loop for every ray on lavapipe. Each
+    // word stored is such a loop too, so a BVH without a top level stores no instance.
     uint failures = failureFlags();
-    imageStore(hits, int(i), found ? uvec4(floatBitsToUint(hit.t), hit.prim, hit.instance, failures)
-                                   : uvec4(0xffffffffu, 0u, 0u, failures));
+    uint word0 = failures != 0u ? TRACE_FAILED : found ? floatBitsToUint(hit.t) : TRACE_MISS;
+    uint word1 = failures != 0u ? failures : hit.prim;
+    uint words = HAS_INSTANCES ? TRACE_HIT_WORDS_INSTANCED : TRACE_HIT_WORDS;
+    int base = int(i * words);
+    imageStore(hits, base, uvec4(word0));
+    imageStore(hits, base + 1, uvec4(word1));
+    if (HAS_INSTANCES) imageStore(hits, base + 2, uvec4(hit.instance));
 }

@@ -95,7 +95,11 @@ KernelSource traceSource(const GpuRendererOptions& o) {
 
 // The ray texel buffer of one batch, sized off the lengths that change lavapipe's JIT key.
 std::uint64_t rayBytes(std::uint64_t batch) { return stableTexelBufferBytes(batch * sizeof(gpu::TraceRayInput)); }
-std::uint64_t hitBytes(std::uint64_t batch) { return stableTexelBufferBytes(batch * sizeof(gpu::TraceHitOutput)); }
+// The hit words of one batch (device_host.h, TRACE_HIT_WORDS): room for the instanced layout,
+// whichever the BVH needs.
+std::uint64_t hitBytes(std::uint64_t batch) {
+    return stableTexelBufferBytes(batch * gpu::TRACE_HIT_WORDS_INSTANCED * sizeof(std::uint32_t));
+}
 
 // Rays per submission: what the ray and hit texel buffers and one dispatch can hold, in whole
 // workgroups.
@@ -104,7 +108,9 @@ std::uint32_t batchRays(const Context& context) {
     const std::uint64_t byRays = std::uint64_t{limits.maxTexelBufferElements} * 16 / sizeof(gpu::TraceRayInput);
     const std::uint64_t byDispatch = static_cast<std::uint64_t>(std::min(context.info().maxWorkGroupCountX, 65535u)) * kLocalSize;
     std::uint64_t batch = std::min({byRays, byDispatch, std::uint64_t{kBatchRays}}) / kLocalSize * kLocalSize;
-    while (batch > kLocalSize && rayBytes(batch) / 16 > limits.maxTexelBufferElements) batch -= kLocalSize;
+    while (batch > kLocalSize && (rayBytes(batch) / 16 > limits.maxTexelBufferElements ||
+                                  hitBytes(batch) / sizeof(std::uint32_t) > limits.maxTexelBufferElements))
+        batch -= kLocalSize;
     return static_cast<std::uint32_t>(std::max<std::uint64_t>(kLocalSize, batch));
 }
 
@@ -159,7 +165,7 @@ GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& opt
     primView = makeTexelView(context, prims);
     instanceView = makeTexelView(context, instances);
     rayView = makeTexelView(context, rays);
-    hitView = makeTexelView(context, hits);
+    hitView = makeTexelView(context, hits, sizeof(std::uint32_t));  // R32UI words
 
     const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eStorageTexelBuffer, 5),
                               vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 1),
@@ -199,6 +205,8 @@ std::vector<gpu::TraceHitOutput> GpuRayTracer::trace(std::span<const gpu::TraceR
     GpuTraceStats stats;
     const vk::raii::Pipeline& pipeline = m.kernels.pipeline(m.features, &stats.pipelineSeconds);
     std::vector<gpu::TraceHitOutput> hits(rays.size());
+    const std::uint32_t wordsPerRay = m.features.instances ? gpu::TRACE_HIT_WORDS_INSTANCED : gpu::TRACE_HIT_WORDS;
+    std::vector<std::uint32_t> words(std::size_t{m.batch} * wordsPerRay);
     for (std::size_t first = 0; first < rays.size(); first += m.batch) {
         const auto count = static_cast<std::uint32_t>(std::min<std::size_t>(m.batch, rays.size() - first));
         m.transfers.upload(m.rays, std::as_bytes(rays.subspan(first, count)));
@@ -213,14 +221,21 @@ std::vector<gpu::TraceHitOutput> GpuRayTracer::trace(std::span<const gpu::TraceR
             computeToHostBarrier(commands);
         });
         ++stats.submissions;
-        m.transfers.download(m.hits, std::as_writable_bytes(std::span(hits).subspan(first, count)));
-        // The kernel reports failures per ray in hit.w (trace_rays.comp), not through atomics, so
-        // the error can name the first ray that failed.
+        m.transfers.download(m.hits, std::as_writable_bytes(std::span(words).first(std::size_t{count} * wordsPerRay)));
+        // The kernel reports failures per ray in its words (trace_rays.comp), not through atomics,
+        // so the error can name the first ray that failed.
         std::uint32_t failures = 0;
         std::size_t failed = rays.size();
         for (std::size_t i = first; i < first + count; ++i) {
-            if (hits[i].hit.w != 0 && failed == rays.size()) failed = i;
-            failures |= hits[i].hit.w;
+            const std::uint32_t* w = &words[(i - first) * wordsPerRay];
+            const std::uint32_t instance = m.features.instances ? w[2] : 0u;
+            if (w[0] == gpu::TRACE_FAILED) {
+                hits[i].hit = glm::uvec4(gpu::TRACE_MISS, 0u, 0u, w[1]);
+                if (failed == rays.size()) failed = i;
+                failures |= w[1];
+            } else {
+                hits[i].hit = glm::uvec4(w[0], w[0] == gpu::TRACE_MISS ? 0u : w[1], w[0] == gpu::TRACE_MISS ? 0u : instance, 0u);
+            }
         }
         if (failures == 0) continue;
         const glm::vec4 o = rays[failed].origin, d = rays[failed].direction;

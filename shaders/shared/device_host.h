@@ -44,7 +44,7 @@ VKRT_CONST uint BINDING_FRAME = 9;         // UBO FrameParams
 VKRT_CONST uint BINDING_ACCUM = 10;        // uimageBuffer RGBA32UI: per-pixel radiance sum (rgb float bits), w unused
 VKRT_CONST uint BINDING_STATUS = 11;       // SSBO RenderStatus
 VKRT_CONST uint BINDING_RAYS = 12;         // trace_rays.comp only: readonly uimageBuffer RGBA32UI, TraceRayInput = 2 texels
-VKRT_CONST uint BINDING_HITS = 13;         // trace_rays.comp only: writeonly uimageBuffer RGBA32UI, TraceHitOutput = 1 texel
+VKRT_CONST uint BINDING_HITS = 13;         // trace_rays.comp only: writeonly uimageBuffer R32UI, TRACE_HIT_WORDS(_INSTANCED) per ray
 
 // ---------------------------------------------------------------------------------------------
 // BVH node as the builder writes it (SceneBvh::nodes; the CPU traversal's 4-wide copy is made from
@@ -254,9 +254,21 @@ struct TraceRayInput {
     vec4 origin;     // xyz origin, w = tMax (hits need 0 < t < tMax, t in units of |dir|)
     vec4 direction;  // xyz direction, w unused
 };
+// A traced ray's outcome as GpuRayTracer::trace returns it (the host expands the kernel's words
+// into it).
 struct TraceHitOutput {
-    uvec4 hit;       // x = floatBits(t) or 0xffffffff for a miss, y = primitive, z = instance, w = STATUS_* failures
+    uvec4 hit;       // x = floatBits(t) or TRACE_MISS, y = primitive, z = instance, w = STATUS_* failures
 };
+// What trace_rays.comp writes per ray: 32-bit words in an R32UI texel buffer, as few as the BVH
+// needs, because lavapipe stores a texel one component at a time, each a loop over the 8 lanes
+// (profile_jit.py: the four-word hit was 5% of a primary-ray trace on buddha).
+//   word 0: floatBits(t), TRACE_MISS, or TRACE_FAILED (never a t: both are negative NaNs)
+//   word 1: the primitive, or for TRACE_FAILED the STATUS_* failure bits
+//   word 2: the instance, only when the BVH has a top level (SPEC_HAS_INSTANCES; else instance 0)
+VKRT_CONST uint TRACE_MISS = 0xffffffffu;
+VKRT_CONST uint TRACE_FAILED = 0xfffffffeu;
+VKRT_CONST uint TRACE_HIT_WORDS = 2u;            // BVHs without a top level
+VKRT_CONST uint TRACE_HIT_WORDS_INSTANCED = 3u;  // with one
 struct TraceParams {
     uvec4 rays;      // x = ray count, y = 1 for any-hit (shadow) queries, 0 for closest hit, z, w unused
 };

@@ -281,9 +281,11 @@ TEST_F(VulkanTest, RayTracerSplitsLargeRayListsIntoBatches) {
     const bvh::SceneBvh scene = randomScene();
     GpuRendererOptions options;
     options.validation = true;
-    // Batches of 4096 rays, to keep the test quick; 512 bytes spare for the ray buffer's padding
+    // Batches of 4096 rays, to keep the test quick. The hit buffer binds first: its view has one
+    // R32UI texel per word and room for TRACE_HIT_WORDS_INSTANCED words per ray, and the cap allows
+    // maxBytes / 16 texels per view (capLimits); 128 texels spare for the padding
     // (stableTexelBufferBytes), or the batch would shrink by a workgroup.
-    options.maxBufferBytes = 4096 * sizeof(gpu::TraceRayInput) + 512;
+    options.maxBufferBytes = 16 * (4096 * gpu::TRACE_HIT_WORDS_INSTANCED + 128);
     GpuRayTracer tracer(scene, options);
     watch(tracer.validationLog());
     ASSERT_EQ(tracer.maxRaysPerSubmission(), 4096u);
