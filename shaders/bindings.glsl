@@ -19,6 +19,7 @@ layout(constant_id = SPEC_MAX_DEPTH) const uint MAX_DEPTH = 4u;
 layout(constant_id = SPEC_PATH_STACK_SIZE) const uint PATH_STACK_SIZE = 8u;
 layout(constant_id = SPEC_PACKED_NODES) const bool PACKED_NODES = true;  // node layout: device_host.h
 layout(constant_id = SPEC_SAMPLER) const uint SAMPLER_KIND = SAMPLER_FROM_FRAME;  // device_host.h
+layout(constant_id = SPEC_SAMPLES_PER_DISPATCH) const uint SAMPLES_PER_DISPATCH = 1u;  // render.comp
 // 0: nothing in the scene pushes (feature_set.cpp), and the path stack's code is compiled out.
 const bool HAS_PATH_STACK = PATH_STACK_SIZE > 0u;
 const uint PATH_STACK_ENTRIES = HAS_PATH_STACK ? PATH_STACK_SIZE : 1u;  // an array needs one
@@ -59,11 +60,10 @@ layout(std430, set = 0, binding = BINDING_STATUS) coherent buffer StatusBuffer {
 
 uvec4 loadPrimInfo(uint i) { return imageLoad(primInfoTexels, int(i)); }
 
-// Adds one sample's radiance to a pixel's sum (one invocation per pixel per pass: no race).
-void accumulate(uint pixel, vec3 radiance) {
-    vec4 sum = uintBitsToFloat(imageLoad(accumTexels, int(pixel)));
-    imageStore(accumTexels, int(pixel), floatBitsToUint(vec4(sum.rgb + radiance, sum.w)));
-}
+// A pixel's running sum (rgb; w unused), read and written by the one invocation that computes the
+// pixel's samples of a pass: no race.
+vec4 loadPixelSum(uint pixel) { return uintBitsToFloat(imageLoad(accumTexels, int(pixel))); }
+void storePixelSum(uint pixel, vec4 sum) { imageStore(accumTexels, int(pixel), floatBitsToUint(sum)); }
 
 VertexAttrib loadVertexAttrib(uint i) {
     int t = int(i * VERTEX_ATTRIB_TEXELS);

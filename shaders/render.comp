@@ -1,7 +1,8 @@
 #version 460
-// The render kernel: one invocation computes one sample of one pixel and adds it to the pixel's
-// running sum. One dispatch = one sample pass over one tile, which keeps each invocation far below
-// lavapipe's loop limit and each submission short (host/vulkan dispatches tiles x passes).
+// The render kernel: one invocation computes pass.w consecutive samples of one pixel and adds
+// them to the pixel's running sum. One dispatch = one pass of samples over one tile; the host
+// sizes the pass so that an invocation stays far below lavapipe's loop limit and each submission
+// short (host/vulkan: sample_batching.h, tile_planner.h).
 #extension GL_GOOGLE_include_directive : require
 
 #include "device_host.h"
@@ -22,6 +23,23 @@ layout(push_constant) uniform PushConstants { PassParams passes[1]; };  // read 
 // 64 invocations = one 8x8 pixel block; each group of 8 lanes (lavapipe's subgroup) is a 4x2
 // patch, so lanes that run in lockstep trace neighbouring, coherent rays.
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
+
+const uint NO_SAMPLE = 0xffffffffu;
+
+// Sample `index` of pixel (x, y), added to the pixel's running sum; a NaN or Inf sample is counted
+// and added as black, and the first sample with a failure is remembered for the host's message.
+void addSample(uint x, uint y, uint index, inout SampleKey key, inout vec4 sum, inout uint nonFinite, inout uint failedSample) {
+    key.index = index;
+    vec2 subPixel = sample2D(samplerKind(), frame.pixelGrid, key.pixel, key.index, DIM_CAMERA, key.seed);
+    CameraRay camera = cameraRay(x, y, subPixel);
+    vec3 radiance = cameraSampleRadiance(camera.origin, camera.dir, key);
+    if (failedSample == NO_SAMPLE && failureFlags() != 0u) failedSample = index;
+    if (any(isnan(radiance)) || any(isinf(radiance))) {
+        ++nonFinite;
+        radiance = vec3(0.0);
+    }
+    sum.rgb += radiance;
+}
 
 void main() {
     PassParams pass = passes[VKRT_UNIFORM_INDEX];
@@ -44,22 +62,33 @@ void main() {
 
     SampleKey key;
     key.pixel = y * frame.image.x + x;
-    key.index = pass.pass.x;
     key.seed = frame.scene.x;
-    vec2 subPixel = sample2D(samplerKind(), frame.pixelGrid, key.pixel, key.index, DIM_CAMERA, key.seed);
-    CameraRay camera = cameraRay(x, y, subPixel);
-    vec3 radiance = cameraSampleRadiance(camera.origin, camera.dir, key);
+    // The pixel's sum is loaded once and stored once per pass (each stored word is a loop over
+    // the lanes on lavapipe); the samples are added to it one by one in sample order, so the image
+    // does not depend on the pass size (sample_batching.h).
+    vec4 sum = loadPixelSum(key.pixel);
+    uint nonFinite = 0u;
+    uint failedSample = NO_SAMPLE;
+    if (SAMPLES_PER_DISPATCH == 1u) {
+        // No loop: a loop around the path, even of one pass, made happyBuddha_100K 28% slower.
+        addSample(x, y, pass.pass.x, key, sum, nonFinite, failedSample);
+    } else {
+        uint j = 0u;
+        for (; j < pass.pass.w; ++j) {
+            if (!chargeLoop()) break;
+            addSample(x, y, pass.pass.x + j, key, sum, nonFinite, failedSample);
+        }
+        if (j < pass.pass.w) markLoopCutOff();
+    }
 
     // One atomic site for every failure (each inlined atomic is a per-lane loop that runs whether
     // or not a lane takes it); the first failing pixel and sample are recorded for the message.
     uint failures = failureFlags();
     if (failures != 0u) {
         atomicOr(status.flags.x, failures);
-        if (atomicCompSwap(status.flags.y, 0u, key.pixel + 1u) == 0u) status.flags.z = key.index;
+        if (atomicCompSwap(status.flags.y, 0u, key.pixel + 1u) == 0u)
+            status.flags.z = failedSample != NO_SAMPLE ? failedSample : pass.pass.x;
     }
-    if (any(isnan(radiance)) || any(isinf(radiance))) {
-        atomicAdd(status.flags.w, 1u);
-        radiance = vec3(0.0);
-    }
-    accumulate(key.pixel, radiance);
+    if (nonFinite != 0u) atomicAdd(status.flags.w, nonFinite);
+    storePixelSum(key.pixel, sum);
 }

@@ -74,8 +74,10 @@ DeviceRender renderOnGpu(GpuRenderer& gpu, const Scene& scene, const SceneAccel&
         std::cerr << "warning: " << stats.nonFiniteSamples << " samples were NaN/Inf and were replaced by black\n";
     if (auto log = gpu.validationLog(); log && log->count() > 0)
         std::cerr << "warning: " << log->count() << " Vulkan validation message(s):\n" << log->joined();
-    // The kernel variant that ran: what the scene needed (feature_set.h), for shader developers.
-    const std::string kernel = stats.generalKernel ? "general kernel, " + stats.features : "kernel: " + stats.features;
+    // The kernel variant that ran: what the scene needed (feature_set.h), and the samples each
+    // invocation computed (sample_batching.h), for shader developers.
+    const std::string kernel = (stats.generalKernel ? "general kernel, " + stats.features : "kernel: " + stats.features) +
+                               "; samples/dispatch=" + std::to_string(stats.samplesPerDispatch);
     return {std::move(image), stats.device + " [" + kernel + "]", stats.renderSeconds + stats.readbackSeconds};
 }
 

@@ -65,6 +65,7 @@ std::array<std::uint32_t, gpu::SPEC_COUNT> FeatureSet::specializationValues() co
     v[gpu::SPEC_PATH_STACK_SIZE] = pathStackSize;
     v[gpu::SPEC_PACKED_NODES] = packedNodes;
     v[gpu::SPEC_SAMPLER] = sampler;
+    v[gpu::SPEC_SAMPLES_PER_DISPATCH] = samplesPerDispatch;
     return v;
 }
 

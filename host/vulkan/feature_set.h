@@ -33,6 +33,8 @@ struct FeatureSet {
                                        // GpuNodes::packed (node_packing.h) before choosing a kernel
     std::uint32_t sampler = gpu::SAMPLER_FROM_FRAME;  // the render's SamplerKind, compiled in; the
                                                       // general kernel reads it from the frame
+    std::uint32_t samplesPerDispatch = 1;  // not a feature: the render's k (sample_batching.h), set by the
+                                           // renderer; 1 compiles render.comp without its sample loop
 
     auto operator<=>(const FeatureSet&) const = default;
 

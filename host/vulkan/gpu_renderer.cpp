@@ -15,6 +15,7 @@
 #include "node_packing.h"
 #include "progress.h"
 #include "render_status.h"
+#include "sample_batching.h"
 #include "scene_tables.h"
 #include "submission_recorder.h"
 #include "traversal_stack.h"
@@ -90,6 +91,11 @@ Image GpuRenderer::render(const Scene& scene, const SceneAccel& accel, const Ren
     stats.generalKernel = general;
     const double packSeconds = secondsSince(start);
 
+    const auto samples = static_cast<std::uint32_t>(options.samplesPerPixel);
+    const SampleBatching batching{samples, samplesPerDispatch(sampleLoopBound(scene, accel.bvh, features, options), samples,
+                                                              settings.samplesPerDispatch)};
+    features.samplesPerDispatch = batching.perDispatch;
+    stats.samplesPerDispatch = batching.perDispatch;
     const vk::raii::Pipeline& pipeline = impl_->kernels.pipeline(features, &stats.pipelineSeconds);
 
     start = Clock::now();
@@ -104,7 +110,7 @@ Image GpuRenderer::render(const Scene& scene, const SceneAccel& accel, const Ren
     TilingPolicy tiling = settings.tiling;
     tiling.maxWorkgroups = std::min(tiling.maxWorkgroups, impl_->context.info().maxWorkGroupCountX);
     const auto width = static_cast<std::uint32_t>(options.width);
-    TilePlanner planner(width, static_cast<std::uint32_t>(options.height), static_cast<std::uint32_t>(options.samplesPerPixel), tiling);
+    TilePlanner planner(width, static_cast<std::uint32_t>(options.height), batching.passes(), tiling);
     Progress progress("GPU render", options.quiet);
     start = Clock::now();
     while (!planner.done()) {
@@ -114,7 +120,7 @@ Image GpuRenderer::render(const Scene& scene, const SceneAccel& accel, const Ren
         }
         const Submission submission = planner.next();
         const double seconds = impl_->runner.run([&](const vk::raii::CommandBuffer& commands) {
-            recordSubmission(commands, *pipeline, impl_->layout.pipelineLayout(), gpuScene.descriptorSet(), submission);
+            recordSubmission(commands, *pipeline, impl_->layout.pipelineLayout(), gpuScene.descriptorSet(), submission, batching);
         });
         planner.reportSeconds(seconds);
         ++stats.submissions;

@@ -42,6 +42,8 @@ enum class KernelVariant {
 struct GpuRenderSettings {
     KernelVariant variant = KernelVariant::Specialised;
     TilingPolicy tiling;  // submission target time, or fixed tiles for tests
+    std::uint32_t samplesPerDispatch = 0;  // samples per pixel per dispatch; 0: the scene's bound decides
+                                           // (sample_batching.h), tests force one
 };
 
 struct GpuRenderStats {
@@ -56,6 +58,7 @@ struct GpuRenderStats {
     double readbackSeconds = 0.0;
     std::uint32_t submissions = 0;
     std::uint32_t dispatches = 0;
+    std::uint32_t samplesPerDispatch = 1;  // each dispatch's samples per pixel (sample_batching.h)
     double maxSubmissionSeconds = 0.0;
     std::uint64_t sceneBytes = 0;        // device memory of the scene's buffers
     std::uint32_t nonFiniteSamples = 0;  // NaN/Inf radiance samples the kernel replaced by black

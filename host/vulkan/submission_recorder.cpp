@@ -4,18 +4,18 @@
 
 namespace vkrt {
 
-gpu::PassParams passParams(const TileRect& tile, std::uint32_t sample) {
+gpu::PassParams passParams(const TileRect& tile, std::uint32_t firstSample, std::uint32_t count) {
     const std::uint32_t workgroups = tile.workgroups();
     gpu::PassParams p{};
     p.tile = glm::uvec4(tile.x, tile.y, tile.width, tile.height);
-    p.pass = glm::uvec4(sample, interleaveStride(workgroups), workgroups, 0u);
+    p.pass = glm::uvec4(firstSample, interleaveStride(workgroups), workgroups, count);
     return p;
 }
 
 void recordWarmUp(const vk::raii::CommandBuffer& commands, vk::Pipeline pipeline, vk::PipelineLayout layout,
                   vk::DescriptorSet set) {
     gpu::PassParams params{};
-    params.pass = glm::uvec4(0u, 1u, 1u, 0u);  // sample 0, stride 1, one workgroup; tile 0x0 at (0, 0)
+    params.pass = glm::uvec4(0u, 1u, 1u, 1u);  // sample 0, stride 1, one workgroup, one sample; tile 0x0 at (0, 0)
     computeToComputeBarrier(commands);
     commands.bindPipeline(vk::PipelineBindPoint::eCompute, pipeline);
     commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, layout, 0, set, {});
@@ -25,14 +25,15 @@ void recordWarmUp(const vk::raii::CommandBuffer& commands, vk::Pipeline pipeline
 }
 
 void recordSubmission(const vk::raii::CommandBuffer& commands, vk::Pipeline pipeline, vk::PipelineLayout layout,
-                      vk::DescriptorSet set, const Submission& submission) {
+                      vk::DescriptorSet set, const Submission& submission, const SampleBatching& batching) {
     // The previous submission's additions to the accumulation buffer come first (in-order
     // sample sums), and the host's writes (status reset, uploads) are covered by the submit.
     computeToComputeBarrier(commands);
     commands.bindPipeline(vk::PipelineBindPoint::eCompute, pipeline);
     commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, layout, 0, set, {});
     for (std::uint32_t s = 0; s < submission.sampleCount; ++s) {
-        const gpu::PassParams params = passParams(submission.tile, submission.firstSample + s);
+        const std::uint32_t pass = submission.firstSample + s;  // the planner counts passes, not samples
+        const gpu::PassParams params = passParams(submission.tile, batching.first(pass), batching.count(pass));
         if (s > 0) computeToComputeBarrier(commands);  // pass s adds to the sums pass s-1 wrote
         commands.pushConstants<gpu::PassParams>(layout, vk::ShaderStageFlagBits::eCompute, 0, params);
         // The base offsets gl_WorkGroupID, so render.comp's block mapping sees workgroups

@@ -1,17 +1,20 @@
 // Records one submission of the render: a run of workgroups of a tile for a run of sample passes,
-// one dispatch per pass, with the barriers that keep a pixel's samples accumulating in order.
+// one dispatch per pass (each pass k samples: sample_batching.h), with the barriers that keep a
+// pixel's samples accumulating in order.
 // The pipeline must be created with VK_PIPELINE_CREATE_DISPATCH_BASE_BIT.
 #pragma once
 
 #include <vulkan/vulkan_raii.hpp>
 
 #include "device_host.h"
+#include "sample_batching.h"
 #include "tile_planner.h"
 
 namespace vkrt {
 
-// PassParams for sample `sample` of `tile` (device_host.h; render.comp's block mapping).
-gpu::PassParams passParams(const TileRect& tile, std::uint32_t sample);
+// PassParams for `count` samples from `firstSample` over `tile` (device_host.h; render.comp's
+// block mapping).
+gpu::PassParams passParams(const TileRect& tile, std::uint32_t firstSample, std::uint32_t count = 1);
 
 // One workgroup over an empty tile: computes nothing, but lavapipe JIT-compiles the pipeline for
 // the bound resources at its first dispatch, so this keeps compile time out of the first
@@ -19,7 +22,8 @@ gpu::PassParams passParams(const TileRect& tile, std::uint32_t sample);
 void recordWarmUp(const vk::raii::CommandBuffer& commands, vk::Pipeline pipeline, vk::PipelineLayout layout,
                   vk::DescriptorSet set);
 
+// The submission's sample passes are TilePlanner's passes over `batching.passes()`.
 void recordSubmission(const vk::raii::CommandBuffer& commands, vk::Pipeline pipeline, vk::PipelineLayout layout,
-                      vk::DescriptorSet set, const Submission& submission);
+                      vk::DescriptorSet set, const Submission& submission, const SampleBatching& batching);
 
 }  // namespace vkrt

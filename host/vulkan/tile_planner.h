@@ -31,7 +31,8 @@ struct Submission {
     TileRect tile;
     std::uint32_t firstWorkgroup = 0;  // workgroups [first, first + count) of the tile's interleaved order
     std::uint32_t workgroupCount = 0;
-    std::uint32_t firstSample = 0;     // sample passes [first, first + count), one dispatch each
+    std::uint32_t firstSample = 0;     // sample passes [first, first + count), one dispatch each (a pass
+                                       // computes k samples per pixel: sample_batching.h)
     std::uint32_t sampleCount = 0;
 };
 

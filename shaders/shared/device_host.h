@@ -239,13 +239,14 @@ struct RenderStatus {
                        // w: number of samples whose radiance was NaN/Inf (replaced by black)
 };
 
-// Push constants: which pixels and which sample this dispatch computes.
+// Push constants: which pixels and which samples this dispatch computes.
 // Dispatches may cover a run of the tile's workgroups only (vkCmdDispatchBase offsets
 // gl_WorkGroupID). A tile of width 0 (z = 0, pass.z = 1) must compute nothing: the host's
 // warm-up dispatch, which makes lavapipe compile the kernel before the first timed submission.
 struct PassParams {
     uvec4 tile;        // x, y origin, z width, w height (pixels)
-    uvec4 pass;        // x sample index, y workgroup interleave stride, z workgroups, w unused
+    uvec4 pass;        // x first sample index, y workgroup interleave stride, z workgroups,
+                       // w samples per pixel this dispatch computes (x .. x + w - 1; sample_batching.h)
 };
 
 // Ray-throughput benchmark (shaders/trace_rays.comp, tools/bench): rays in, hits out, so the GPU
@@ -289,7 +290,8 @@ VKRT_CONST uint SPEC_MAX_DEPTH = 11;        // recursion depth the scene can use
 VKRT_CONST uint SPEC_PATH_STACK_SIZE = 12;   // pending reflection/refraction rays (maxDepth + glossSamples)
 VKRT_CONST uint SPEC_PACKED_NODES = 13;     // the nodes are GpuBvhNode (3 texels), else GpuExactBvhNode (4)
 VKRT_CONST uint SPEC_SAMPLER = 14;          // SAMPLER_*, or SAMPLER_FROM_FRAME
-VKRT_CONST uint SPEC_COUNT = 15;
+VKRT_CONST uint SPEC_SAMPLES_PER_DISPATCH = 15;  // a render's k (sample_batching.h): 1 compiles no sample loop
+VKRT_CONST uint SPEC_COUNT = 16;
 
 // Entries of the kernel's BVH traversal stack. The host refuses a BVH whose top-level depth plus
 // deepest bottom-level depth exceeds it, so the stack can never overflow at run time.

@@ -202,6 +202,7 @@ GpuRenderSettings fixedTiling(std::uint32_t tileWidth, std::uint32_t tileHeight,
     s.tiling.fixedTileHeight = tileHeight;
     s.tiling.fixedWorkgroups = workgroups;
     s.tiling.fixedSamples = samples;
+    s.samplesPerDispatch = 1;  // the counts below are of one-sample passes (test_sample_batching.cpp: k > 1)
     return s;
 }
 

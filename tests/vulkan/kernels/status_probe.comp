@@ -11,9 +11,12 @@ void main() {
     uint x, y;
     if (!tilePixel(x, y)) return;
     uint pixel = y * frame.image.x + x;
-    if (x == 5u && y == 3u && pass.pass.x == 1u) {
-        atomicOr(status.flags.x, HAS_GLOSS ? STATUS_RAY_STACK_OVERFLOW : STATUS_LOOP_BUDGET_EXCEEDED);
-        if (atomicCompSwap(status.flags.y, 0u, pixel + 1u) == 0u) status.flags.z = pass.pass.x;
+    for (uint j = 0u; j < pass.pass.w; ++j) {  // the pass's samples (device_host.h PassParams)
+        uint sampleIndex = pass.pass.x + j;
+        if (x == 5u && y == 3u && sampleIndex == 1u) {
+            atomicOr(status.flags.x, HAS_GLOSS ? STATUS_RAY_STACK_OVERFLOW : STATUS_LOOP_BUDGET_EXCEEDED);
+            if (atomicCompSwap(status.flags.y, 0u, pixel + 1u) == 0u) status.flags.z = sampleIndex;
+        }
+        addToPixel(pixel, vec3(1.0));
     }
-    addToPixel(pixel, vec3(1.0));
 }

@@ -1,0 +1,49 @@
+#include "sample_batching.h"
+
+#include <algorithm>
+
+#include "device_host.h"
+
+namespace vkrt {
+
+namespace {
+
+// Passes of one traversal (shaders/traverse.glsl) through a tree of `prims` primitives: at most
+// one walk pass per node (fewer nodes than primitives), one main-loop round and one leaf-loop
+// pass per leaf and primitive, and the loops' exit passes.
+std::uint64_t treePasses(std::uint64_t prims) { return 3 * prims + 4; }
+
+}  // namespace
+
+std::uint64_t sampleLoopBound(const Scene& scene, const bvh::SceneBvh& bvh, const FeatureSet& features,
+                              const RenderOptions& options) {
+    // One traversal: the top level (one leaf per instance), then each instance's group whole.
+    std::uint64_t traversal = treePasses(bvh.instances.size());
+    for (const gpu::Instance& instance : bvh.instances) traversal += treePasses(bvh.groups.at(instance.info.z).primCount);
+
+    // Shadow rays per hit: one per point light, lightSamples per area light.
+    const auto lightSamples = static_cast<std::uint64_t>(std::max(options.lightSamples, 1));
+    std::uint64_t shadowRays = 0;
+    for (const Light& light : scene.lights) shadowRays += light.type == LightType::Area ? lightSamples : 1;
+    const auto glossSamples = static_cast<std::uint64_t>(std::max(options.glossSamples, 1));
+
+    // Rays per sample: the camera ray alone, or a tree in which every hit emits at most two rays
+    // (dielectrics), maxDepth levels deep, for each of the primary hit's gloss samples.
+    std::uint64_t rays = 1;
+    if (features.maxDepth > 0) rays = glossSamples << std::min<std::uint32_t>(features.maxDepth + 1, 40);
+
+    // Per ray: its traversals, the light and gloss loops, and the sample grid's cycle walks
+    // (sampling.h permuteIndex: fewer than two rounds expected; 8 allowed per sample drawn).
+    const std::uint64_t samplesDrawn = shadowRays + glossSamples + 1;
+    const std::uint64_t perRay = (1 + shadowRays) * traversal + shadowRays + glossSamples + 8 * samplesDrawn + 8;
+    return rays * perRay + 8;
+}
+
+std::uint32_t samplesPerDispatch(std::uint64_t sampleBound, std::uint32_t samplesPerPixel, std::uint32_t forced) {
+    const std::uint32_t most = std::max<std::uint32_t>(1, samplesPerPixel);
+    if (forced > 0) return std::min(forced, most);
+    const std::uint64_t fit = gpu::LOOP_BUDGET / (std::max<std::uint64_t>(sampleBound, 1) * kLockstepFactor);
+    return static_cast<std::uint32_t>(std::clamp<std::uint64_t>(fit, 1, std::min(kMaxSamplesPerDispatch, most)));
+}
+
+}  // namespace vkrt
