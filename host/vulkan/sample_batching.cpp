@@ -27,10 +27,13 @@ std::uint64_t sampleLoopBound(const Scene& scene, const bvh::SceneBvh& bvh, cons
     for (const Light& light : scene.lights) shadowRays += light.type == LightType::Area ? lightSamples : 1;
     const auto glossSamples = static_cast<std::uint64_t>(std::max(options.glossSamples, 1));
 
-    // Rays per sample: the camera ray alone, or a tree in which every hit emits at most two rays
-    // (dielectrics), maxDepth levels deep, for each of the primary hit's gloss samples.
+    // Rays per sample: the camera ray alone; or, for each of the primary hit's gloss samples, a
+    // chain of maxDepth reflections (mirrors, glazes: one ray per hit), or a tree in which every
+    // hit emits at most two rays (dielectrics), maxDepth levels deep.
     std::uint64_t rays = 1;
-    if (features.maxDepth > 0) rays = glossSamples << std::min<std::uint32_t>(features.maxDepth + 1, 40);
+    if (features.maxDepth > 0)
+        rays = features.dielectric ? glossSamples << std::min<std::uint32_t>(features.maxDepth + 1, 40)
+                                   : glossSamples * (features.maxDepth + 1);
 
     // Per ray: its traversals, the light and gloss loops, and the sample grid's cycle walks
     // (sampling.h permuteIndex: fewer than two rounds expected; 8 allowed per sample drawn).
@@ -43,7 +46,8 @@ std::uint32_t samplesPerDispatch(std::uint64_t sampleBound, std::uint32_t sample
     const std::uint32_t most = std::max<std::uint32_t>(1, samplesPerPixel);
     if (forced > 0) return std::min(forced, most);
     const std::uint64_t fit = gpu::LOOP_BUDGET / (std::max<std::uint64_t>(sampleBound, 1) * kLockstepFactor);
-    return static_cast<std::uint32_t>(std::clamp<std::uint64_t>(fit, 1, std::min(kMaxSamplesPerDispatch, most)));
+    if (fit < kMinSamplesPerDispatch) return 1;
+    return static_cast<std::uint32_t>(std::min<std::uint64_t>(fit, std::min(kMaxSamplesPerDispatch, most)));
 }
 
 }  // namespace vkrt

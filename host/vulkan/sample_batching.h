@@ -9,7 +9,7 @@
 // samples) and cuts the invocation off at 65,535: k is the largest count (at most
 // kMaxSamplesPerDispatch) whose worst case, from sampleLoopBound, stays under LOOP_BUDGET with a
 // factor for lockstep (a group of 8 lanes runs a loop while any lane needs it). Scenes whose bound
-// is large (meshes, reflection) keep k = 1.
+// is large (meshes, dielectrics, many lights) keep k = 1.
 #pragma once
 
 #include <cstdint>
@@ -26,19 +26,26 @@ namespace vkrt {
 // test_oneBox_00 x1.14), while a dispatch stays short enough for the planner's submissions.
 constexpr std::uint32_t kMaxSamplesPerDispatch = 8;
 
+// Below this k, one sample per dispatch: the loop around the path costs about what a few samples
+// save (400x400x16, k = 2 on threeEggs_SoftShadows 0.641 -> 0.657 s, k = 3 on glossinessTest
+// 0.601 -> 0.655 s; k = 4 on bneumann_00_2011 0.506 -> 0.423 s, k = 5 on mirrorTest 0.331 -> 0.258 s).
+constexpr std::uint32_t kMinSamplesPerDispatch = 4;
+
 // A group of 8 lanes may pass a loop more often than its busiest lane (each of its passes has at
 // least one lane working, plus one exit pass per loop entry): at most 8 lanes' sum, doubled.
 constexpr std::uint64_t kLockstepFactor = 16;
 
 // An upper bound on the loop passes (every loop of render.comp, budget-charged or not) of one
-// lane for one sample: camera and secondary rays (a dielectric tree of maxDepth levels, times the
-// gloss fan-out), each a closest-hit traversal plus one shadow traversal per light sample, and
+// lane for one sample: camera and secondary rays (a reflection chain or a dielectric tree of
+// maxDepth levels, times the gloss fan-out), each a closest-hit traversal plus one shadow
+// traversal per light sample, and
 // every traversal at most three passes per node and primitive it could meet (the top level, and
 // every instance's whole group).
 std::uint64_t sampleLoopBound(const Scene& scene, const bvh::SceneBvh& bvh, const FeatureSet& features,
                               const RenderOptions& options);
 
-// k for a render: the bound's k, or `forced` (tests) when non-zero; never more than the samples.
+// k for a render: the bound's k (1 below kMinSamplesPerDispatch), or `forced` (tests) when
+// non-zero; never more than the samples.
 std::uint32_t samplesPerDispatch(std::uint64_t sampleBound, std::uint32_t samplesPerPixel, std::uint32_t forced = 0);
 
 // A render's samples in dispatch passes of k: pass p computes samples [first(p), first(p) + count(p)).

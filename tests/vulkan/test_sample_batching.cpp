@@ -37,7 +37,8 @@ TEST(SampleBatching, PassesCoverEverySampleOnceInOrder) {
 TEST(SampleBatching, KFitsTheLoopBudget) {
     // k * bound * kLockstepFactor must stay within the kernel's loop budget.
     const std::uint64_t perK = gpu::LOOP_BUDGET / kLockstepFactor;
-    EXPECT_EQ(samplesPerDispatch(perK / 3, 64), 3u);
+    EXPECT_EQ(samplesPerDispatch(perK / 5, 64), 5u);
+    EXPECT_EQ(samplesPerDispatch(perK / 3, 64), 1u);  // below kMinSamplesPerDispatch: not worth a loop
     EXPECT_EQ(samplesPerDispatch(perK, 64), 1u);
     EXPECT_EQ(samplesPerDispatch(perK * 100, 64), 1u);  // never 0
     EXPECT_EQ(samplesPerDispatch(1, 64), kMaxSamplesPerDispatch);
@@ -53,6 +54,17 @@ TEST(SampleBatching, TheBoundKeepsHeavyScenesAtOneSample) {
     const std::uint64_t cheap = sampleLoopBound(tiny.scene, tiny.accel.bvh, plain, options);
     EXPECT_EQ(samplesPerDispatch(cheap, 16), kMaxSamplesPerDispatch);
 
+    // A mirror at depth 4 reflects a chain of at most 5 rays per sample.
+    tiny.scene.shaders[0].type = ShaderType::Mirror;
+    const FeatureSet mirror = deriveFeatureSet(tiny.scene, tiny.accel, options);
+    EXPECT_EQ(sampleLoopBound(tiny.scene, tiny.accel.bvh, mirror, options), 5 * (cheap - 8) + 8);
+    // With 3 gloss samples fanning out at the primary hit, three such chains.
+    tiny.scene.shaders[0].roughness = 0.3f;
+    options.glossSamples = 3;
+    const FeatureSet glossy = deriveFeatureSet(tiny.scene, tiny.accel, options);
+    EXPECT_GT(sampleLoopBound(tiny.scene, tiny.accel.bvh, glossy, options), 15 * (cheap - 8));
+    options.glossSamples = 1;
+    tiny.scene.shaders[0].roughness = 0.0f;
     // A dielectric at depth 4 can spawn a tree of 31 rays per sample: the bound grows 32-fold.
     tiny.scene.shaders[0].type = ShaderType::Dielectric;
     const FeatureSet glass = deriveFeatureSet(tiny.scene, tiny.accel, options);
