@@ -8,10 +8,12 @@ namespace vkrt {
 
 namespace {
 
-// Passes of one traversal (shaders/traverse.glsl) through a tree of `prims` primitives: at most
-// one walk pass per node (fewer nodes than primitives), one main-loop round and one leaf-loop
-// pass per leaf and primitive, and the loops' exit passes.
-std::uint64_t treePasses(std::uint64_t prims) { return 3 * prims + 4; }
+// Passes of one traversal (shaders/traverse.glsl) through a tree of P primitives, every loop's
+// exit pass included: walk passes <= P (one per inner node, and there are fewer inner nodes than
+// primitives); main-loop rounds <= 3P + 2 (a leaf, a spill or a refill each, and the last), each
+// with one walk exit; leaf passes <= P, plus an exit per leaf (<= P + 1); the main loop's exit.
+// In all 9P + 6.
+std::uint64_t treePasses(std::uint64_t prims) { return 9 * prims + 6; }
 
 }  // namespace
 

@@ -31,9 +31,9 @@ constexpr std::uint32_t kMaxSamplesPerDispatch = 8;
 // 0.601 -> 0.655 s; k = 4 on bneumann_00_2011 0.506 -> 0.423 s, k = 5 on mirrorTest 0.331 -> 0.258 s).
 constexpr std::uint32_t kMinSamplesPerDispatch = 4;
 
-// A group of 8 lanes may pass a loop more often than its busiest lane (each of its passes has at
-// least one lane working, plus one exit pass per loop entry): at most 8 lanes' sum, doubled.
-constexpr std::uint64_t kLockstepFactor = 16;
+// A group of 8 lanes may pass a loop more often than its busiest lane, but each of its passes is
+// a pass (an iteration or the exit) of at least one of its lanes: at most the 8 lanes' sum.
+constexpr std::uint64_t kLockstepFactor = 8;
 
 // An upper bound on the loop passes (every loop of render.comp, budget-charged or not) of one
 // lane for one sample: camera and secondary rays (a reflection chain or a dielectric tree of
