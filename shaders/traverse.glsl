@@ -202,8 +202,9 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
                 held = 1u;
             }
         }
-        // 1. Walk the tree until this lane holds a leaf, an instance to enter, needs the
-        // array (to spill a register entry or to refill from it), or has nothing left.
+        // 1. Walk the tree until this lane holds a leaf, an instance to enter, or needs the array:
+        // to spill a register entry, or because its registers are empty (ENTRY_REFILL: a refill
+        // from the array, or the end of the ray when the array is empty too, told right after).
         while (!spilling && isNodeEntry(entry)) {
             if (!chargeLoop()) break;
             int base = int(entry);  // a node's entry is its first texel (node_packing.h)
