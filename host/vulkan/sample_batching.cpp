@@ -1,6 +1,7 @@
 #include "sample_batching.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "device_host.h"
 
@@ -14,6 +15,17 @@ namespace {
 // with one walk exit; leaf passes <= P, plus an exit per leaf (<= P + 1); the main loop's exit.
 // In all 9P + 6.
 std::uint64_t treePasses(std::uint64_t prims) { return 9 * prims + 6; }
+
+// a * b, or the largest value when it would not fit: deep dielectric trees, many light samples
+// and large meshes multiply up, and a product that wrapped around would look small and batch.
+std::uint64_t saturatingProduct(std::uint64_t a, std::uint64_t b) {
+    constexpr std::uint64_t kMax = std::numeric_limits<std::uint64_t>::max();
+    return (b != 0 && a > kMax / b) ? kMax : a * b;
+}
+std::uint64_t saturatingSum(std::uint64_t a, std::uint64_t b) {
+    constexpr std::uint64_t kMax = std::numeric_limits<std::uint64_t>::max();
+    return a > kMax - b ? kMax : a + b;
+}
 
 }  // namespace
 
@@ -33,15 +45,21 @@ std::uint64_t sampleLoopBound(const Scene& scene, const bvh::SceneBvh& bvh, cons
     // chain of maxDepth reflections (mirrors, glazes: one ray per hit), or a tree in which every
     // hit emits at most two rays (dielectrics), maxDepth levels deep.
     std::uint64_t rays = 1;
-    if (features.maxDepth > 0)
-        rays = features.dielectric ? glossSamples << std::min<std::uint32_t>(features.maxDepth + 1, 40)
-                                   : glossSamples * (features.maxDepth + 1);
+    if (features.maxDepth > 0) {
+        const std::uint64_t perGlossSample =
+            features.dielectric ? (features.maxDepth + 1 >= 63 ? std::numeric_limits<std::uint64_t>::max()
+                                                                 : std::uint64_t{1} << (features.maxDepth + 1))
+                                : std::uint64_t{features.maxDepth} + 1;
+        rays = saturatingProduct(glossSamples, perGlossSample);
+    }
 
     // Per ray: its traversals, the light and gloss loops, and the sample grid's cycle walks
     // (sampling.h permuteIndex: fewer than two rounds expected; 8 allowed per sample drawn).
+    // Scene sizes keep these sums far from overflow; the products with `rays` may not be.
     const std::uint64_t samplesDrawn = shadowRays + glossSamples + 1;
-    const std::uint64_t perRay = (1 + shadowRays) * traversal + shadowRays + glossSamples + 8 * samplesDrawn + 8;
-    return rays * perRay + 8;
+    const std::uint64_t perRay = saturatingSum(saturatingProduct(1 + shadowRays, traversal),
+                                               shadowRays + glossSamples + 8 * samplesDrawn + 8);
+    return saturatingSum(saturatingProduct(rays, perRay), 8);
 }
 
 std::uint32_t samplesPerDispatch(std::uint64_t sampleBound, std::uint32_t samplesPerPixel, std::uint32_t forced) {

@@ -1,6 +1,7 @@
 // Several samples per dispatch (sample_batching.h): the passes cover every sample once in order,
 // the bound keeps k = 1 where a pass of k samples could reach the driver's loop limit, and on the
 // device the render kernel's image does not depend on k, bit for bit.
+#include <limits>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -75,6 +76,17 @@ TEST(SampleBatching, TheBoundKeepsHeavyScenesAtOneSample) {
     options.lightSamples = 64;
     EXPECT_GT(sampleLoopBound(tiny.scene, tiny.accel.bvh, glass, options), 20 * deep);
     EXPECT_EQ(samplesPerDispatch(sampleLoopBound(tiny.scene, tiny.accel.bvh, glass, options), 16), 1u);
+
+    // A tree too deep to count saturates instead of wrapping around to a small bound.
+    options.maxDepth = 70;
+    options.glossSamples = 64;
+    const FeatureSet abyss = deriveFeatureSet(tiny.scene, tiny.accel, options);
+    EXPECT_EQ(sampleLoopBound(tiny.scene, tiny.accel.bvh, abyss, options), std::numeric_limits<std::uint64_t>::max());
+    options.maxDepth = 40;
+    options.glossSamples = 1 << 24;  // 2^24 * 2^41 rays of thousands of passes: past 2^64 as a plain product
+    const FeatureSet deep40 = deriveFeatureSet(tiny.scene, tiny.accel, options);
+    EXPECT_EQ(sampleLoopBound(tiny.scene, tiny.accel.bvh, deep40, options), std::numeric_limits<std::uint64_t>::max());
+    EXPECT_EQ(samplesPerDispatch(sampleLoopBound(tiny.scene, tiny.accel.bvh, deep40, options), 16), 1u);
 }
 
 // render.comp on the tiny scene with an area light (camera, light and shuffle samples all drawn):
