@@ -9,6 +9,7 @@
 #include "command_line.h"
 #include "cpu_renderer.h"
 #include "device_list.h"
+#include "gpu_build_options.h"
 #include "gpu_renderer.h"
 #include "image_compare.h"
 #include "interrupt.h"
@@ -97,11 +98,9 @@ int runRender(CommandLine& cl) {
     const auto start = std::chrono::steady_clock::now();
     const Scene scene = loadWithWarnings(cl);
     std::unique_ptr<GpuRenderer> gpu = openGpu(cl);
-    // The GPU kernels never read the CPU traversal's 4-wide copy of the BVH: skip it (4-11% of the
-    // build at 256K-1M triangles, docs/BVH.md §4) unless the CPU renders.
-    bvh::BuildOptions build;
-    build.cpuTraversal = gpu == nullptr;
-    const SceneAccel accel = buildSceneAccel(scene, build);
+    // Each device gets the tree its traversal is fastest with (gpu_build_options.h); the GPU's
+    // skips the CPU traversal's 4-wide copy (4-11% of the build at 256K-1M triangles, docs/BVH.md §4).
+    const SceneAccel accel = buildSceneAccel(scene, gpu ? gpuBuildOptions() : bvh::BuildOptions{});
     DeviceRender result;
     try {
         result = gpu ? renderOnGpu(*gpu, scene, accel, cl.render, cl.general) : renderOnCpu(scene, accel, cl.render);
@@ -163,10 +162,11 @@ int runSweep(CommandLine& cl) {
 int runCompare(CommandLine& cl) {
     if (cl.statistical) return runStatisticalCompare(cl);
     const Scene scene = loadWithWarnings(cl);
-    const SceneAccel accel = buildSceneAccel(scene);
+    // Each device renders from its own tree, as `vkrt scene.xml` would: the times are the ones a
+    // user gets, and the images must agree although the trees differ.
     GpuRenderer gpu(gpuOptions(cl));
-    const DeviceRender onGpu = renderOnGpu(gpu, scene, accel, cl.render, cl.general);
-    const DeviceRender onCpu = renderOnCpu(scene, accel, cl.render);
+    const DeviceRender onGpu = renderOnGpu(gpu, scene, buildSceneAccel(scene, gpuBuildOptions()), cl.render, cl.general);
+    const DeviceRender onCpu = renderOnCpu(scene, buildSceneAccel(scene), cl.render);
     const ImageDifference diff = compareImages(onGpu.image, onCpu.image);
     writeImage(diff.heatMap, cl.heatMapPath);
     std::printf("scene            %s (%dx%d, %d rpp, seed %u)\n", cl.scenePath.c_str(), cl.render.width,

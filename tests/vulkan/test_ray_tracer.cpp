@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include "gpu_build_options.h"
 #include "gpu_ray_tracer.h"
 #include "node_packing.h"
 #include "vulkan_errors.h"
@@ -27,7 +28,7 @@ void addRandomTriangles(std::mt19937& random, std::vector<bvh::PrimitiveInput>& 
     }
 }
 
-bvh::SceneBvh randomScene(int maxLeafSize = 8, glm::vec3 offset = glm::vec3(0.0f)) {
+bvh::SceneBvh randomScene(int maxLeafSize = 8, glm::vec3 offset = glm::vec3(0.0f), bvh::BuildOptions build = {}) {
     std::mt19937 random(11);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     auto point = [&] { return glm::vec3(u(random), u(random), u(random)); };
@@ -47,7 +48,6 @@ bvh::SceneBvh randomScene(int maxLeafSize = 8, glm::vec3 offset = glm::vec3(0.0f
         }
     const glm::mat4 a = glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(2.0f, 0.5f, -1.0f)), 0.7f, glm::vec3(0, 1, 1));
     const glm::mat4 b = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(-2.0f, -1.0f, 1.5f)), glm::vec3(0.5f, 2.0f, 1.0f));
-    bvh::BuildOptions build;
     build.maxLeafSize = maxLeafSize;
     // A leaf cost far below a node's makes the SAH keep leaves as large as allowed.
     if (maxLeafSize > 8) build.intersectionCost = 0.05f;
@@ -336,6 +336,49 @@ TEST(GpuRayTracer, RefusesABvhOverTheLimit) {
     } catch (const DeviceLimitExceeded& e) {
         EXPECT_NE(std::string(e.what()).find("BVH nodes"), std::string::npos) << e.what();
     }
+}
+
+// `vkrt` renders on the GPU from a tree built with the kernel's SAH constants (gpu_build_options.h)
+// and on the CPU from one built with the CPU's, so the two trees must find the same surfaces. Each
+// tree orders the primitives its own way: a hit is compared by its instance and its input
+// primitive (SceneBvh::primSource). Tolerances as in MatchesTheCpuTraversal.
+TEST_F(VulkanTest, TheGpuTreeFindsTheHitsOfTheCpuTree) {
+    const bvh::SceneBvh cpuScene = randomScene();
+    const bvh::SceneBvh gpuScene = randomScene(8, glm::vec3(0.0f), gpuBuildOptions());
+    ASSERT_LT(gpuScene.nodes.size(), cpuScene.nodes.size()) << "the GPU's constants should give another, smaller tree";
+    GpuRendererOptions options;
+    options.validation = true;
+    GpuRayTracer tracer(gpuScene, options);
+    watch(tracer.validationLog());
+    const std::vector<gpu::TraceRayInput> rays = randomRays(20000, 1e30f);
+    const auto closest = tracer.trace(rays, false);
+    int disagreements = 0, hitsSeen = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const bvh::Ray ray{glm::vec3(rays[i].origin), glm::vec3(rays[i].direction), rays[i].origin.w};
+        bvh::Hit hit;
+        const bool cpuHit = bvh::intersectClosest(cpuScene, ray, hit);
+        const bool gpuHit = closest[i].hit.x != gpu::TRACE_MISS;
+        hitsSeen += cpuHit;
+        if (cpuHit != gpuHit || (cpuHit && (hit.instance != closest[i].hit.z ||
+                                            cpuScene.primSource[hit.prim] != gpuScene.primSource[closest[i].hit.y]))) {
+            ++disagreements;
+        } else if (cpuHit) {
+            EXPECT_NEAR(glm::uintBitsToFloat(closest[i].hit.x), hit.t, 1e-5f * hit.t) << "ray " << i;
+        }
+    }
+    EXPECT_GT(hitsSeen, 2000);
+    EXPECT_LE(disagreements, static_cast<int>(rays.size()) / 500);
+
+    const std::vector<gpu::TraceRayInput> shadows = randomRays(20000, 4.0f);
+    const auto any = tracer.trace(shadows, true);
+    int anyDisagreements = 0, blocked = 0;
+    for (std::size_t i = 0; i < shadows.size(); ++i) {
+        const bool cpu = bvh::intersectAny(cpuScene, {glm::vec3(shadows[i].origin), glm::vec3(shadows[i].direction), shadows[i].origin.w});
+        blocked += cpu;
+        anyDisagreements += cpu != (any[i].hit.x != gpu::TRACE_MISS);
+    }
+    EXPECT_GT(blocked, 500);
+    EXPECT_LE(anyDisagreements, static_cast<int>(shadows.size()) / 500);
 }
 
 }  // namespace

@@ -21,6 +21,7 @@
 #include "bench_gpu.h"
 #include "bench_mesh.h"
 #include "bench_timing.h"
+#include "gpu_build_options.h"
 #include "gpu_ray_tracer.h"
 #include "peer_rays.h"
 #include "peer_runner.h"
@@ -46,7 +47,9 @@ struct Args {
     // GPU and CPU traversal share algorithms, not arithmetic (the device may fuse multiply-adds),
     // so grazing rays may go either way; tests/vulkan/test_ray_tracer.cpp allows 0.2%.
     double maxMismatchFraction = 0.002;
-    bvh::BuildOptions build;  // --ctrav, --cisect, --max-leaf: the SAH constants, measured for the GPU kernel
+    // The GPU kernel's tree (--ctrav, --cisect, --max-leaf: its SAH constants, for measuring them);
+    // the CPU traces its own tree, built with the CPU's constants, as each renderer would.
+    bvh::BuildOptions build = gpuBuildOptions();
 };
 
 Args parseArgs(const std::vector<std::string>& args) {
@@ -158,11 +161,16 @@ std::vector<RaySet> makeRays(const bvh::SceneBvh& scene, const PeerCamera& cam, 
     return sets;
 }
 
-std::size_t mismatches(const std::vector<Outcome>& cpu, const std::vector<gpu::TraceHitOutput>& gpu, bool any) {
+// The two trees order the primitives differently: a hit is compared by the mesh triangle it
+// names (SceneBvh::primSource), not by its place in either array.
+std::size_t mismatches(const bvh::SceneBvh& cpuScene, const std::vector<Outcome>& cpu, const bvh::SceneBvh& gpuScene,
+                       const std::vector<gpu::TraceHitOutput>& gpu, bool any) {
     std::size_t count = 0;
     for (std::size_t i = 0; i < cpu.size(); ++i) {
         const bool gpuHit = gpu[i].hit.x != kMiss, cpuHit = cpu[i].prim != kMiss;
-        if (gpuHit != cpuHit || (!any && gpuHit && gpu[i].hit.y != cpu[i].prim)) ++count;
+        if (gpuHit != cpuHit ||
+            (!any && gpuHit && gpuScene.primSource[gpu[i].hit.y] != cpuScene.primSource[cpu[i].prim]))
+            ++count;
     }
     return count;
 }
@@ -187,15 +195,20 @@ int runGpuRaysBench(const std::vector<std::string>& argv) {
         std::fprintf(stderr, "no Embree peer (--peer PATH, $VKRT_EMBREE_PEER, --build-peer or %s): GPU and CPU only\n",
                      kDefaultPeer);
 
-    bvh::BuildOptions build = a.build;
-    build.threads = a.threads;
-    const bvh::SceneBvh scene = bvh::buildSceneBvh({toPrimitives(mesh)}, {{0, glm::mat4(1.0f), gpu::MATERIAL_NONE}}, build);
+    const std::vector<std::vector<bvh::PrimitiveInput>> groups = {toPrimitives(mesh)};
+    const std::vector<bvh::InstanceInput> instances = {{0, glm::mat4(1.0f), gpu::MATERIAL_NONE}};
+    bvh::BuildOptions cpuBuild;
+    cpuBuild.threads = a.threads;
+    const bvh::SceneBvh scene = bvh::buildSceneBvh(groups, instances, cpuBuild);
+    bvh::BuildOptions gpuBuild = a.build;
+    gpuBuild.threads = a.threads;
+    const bvh::SceneBvh gpuScene = bvh::buildSceneBvh(groups, instances, gpuBuild);
     const std::vector<RaySet> sets = makeRays(scene, cam, a);
 
     const auto uploadStart = std::chrono::steady_clock::now();
     GpuRendererOptions gpuOptions;
     if (!a.shaderDir.empty()) gpuOptions.shaderDir = a.shaderDir;
-    GpuRayTracer tracer(scene, gpuOptions);
+    GpuRayTracer tracer(gpuScene, gpuOptions);
     const double uploadSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - uploadStart).count();
 
     // Warm-up: creates the pipeline and lets lavapipe JIT it at its first dispatch; its hits are
@@ -207,7 +220,7 @@ int runGpuRaysBench(const std::vector<std::string>& argv) {
         const RaySet& set = sets[static_cast<int>(k)];
         const auto hits = tracer.trace(set.gpu, anyHit(k), &warmUp);
         warmUpSeconds += warmUp.pipelineSeconds + warmUp.traceSeconds;
-        wrong[static_cast<int>(k)] = mismatches(set.reference, hits, anyHit(k));
+        wrong[static_cast<int>(k)] = mismatches(scene, set.reference, gpuScene, hits, anyHit(k));
     }
 
     std::vector<Series> series(3);
@@ -248,6 +261,9 @@ int runGpuRaysBench(const std::vector<std::string>& argv) {
     std::printf("device %s triangles %zu upload_s %.3f warmup_s %.3f nodes %s area_growth %.6f\n", tracer.deviceName().c_str(),
                 mesh.triangles.size(), uploadSeconds, warmUpSeconds, tracer.packedNodes() ? "packed" : "exact",
                 tracer.nodeAreaGrowth());
+    std::printf("trees gpu ctrav %.2f cisect %.2f nodes %zu cpu ctrav %.2f cisect %.2f nodes %zu\n", gpuBuild.traversalCost,
+                gpuBuild.intersectionCost, gpuScene.nodes.size(), cpuBuild.traversalCost, cpuBuild.intersectionCost,
+                scene.nodes.size());
     for (Kind k : kKinds)  // the peer's line format, GPU figures
         std::printf("%s rays %zu Mrays_per_s %.2f\n", name(k), sets[static_cast<int>(k)].gpu.size(),
                     median(series[static_cast<int>(k)].gpu));

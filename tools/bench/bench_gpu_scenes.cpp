@@ -15,6 +15,7 @@
 #include "bench_gpu.h"
 #include "bench_timing.h"
 #include "cpu_renderer.h"
+#include "gpu_build_options.h"
 #include "gpu_renderer.h"
 #include "image_compare.h"
 #include "scene_accel.h"
@@ -132,13 +133,15 @@ int runGpuScenesBench(const std::vector<std::string>& argv) {
         try {
             Diagnostics diagnostics;  // warnings of real course files are expected; not this tool's concern
             const Scene scene = loadScene(file.string(), LoadOptions{}, diagnostics);
-            const SceneAccel accel = buildSceneAccel(scene);
+            // Each device's own tree (gpu_build_options.h), as `vkrt scene.xml` builds it.
+            const SceneAccel gpuAccel = buildSceneAccel(scene, gpuBuildOptions());
+            const SceneAccel cpuAccel = buildSceneAccel(scene);
             RenderOptions options = a.render;
             options.camera = scene.defaultCamera;
             Image spec, general, cpu;
-            const double s = gpuSeconds(gpu, scene, accel, options, KernelVariant::Specialised, a.repeat, &spec);
-            const double g = gpuSeconds(gpu, scene, accel, options, KernelVariant::General, a.repeat, &general);
-            const double c = cpuSeconds(scene, accel, options, a.repeat, &cpu);
+            const double s = gpuSeconds(gpu, scene, gpuAccel, options, KernelVariant::Specialised, a.repeat, &spec);
+            const double g = gpuSeconds(gpu, scene, gpuAccel, options, KernelVariant::General, a.repeat, &general);
+            const double c = cpuSeconds(scene, cpuAccel, options, a.repeat, &cpu);
             const double diff = compareImages(spec, cpu).meanAbs;
             std::printf("%-42s %10.4f %10.4f %8.2f %10.4f %8.2f %10.5f\n", label.c_str(), s, g, g / s, c, s / c, diff);
             generalOverSpec.push_back(g / s);
