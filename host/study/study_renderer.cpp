@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "cpu_renderer.h"
+#include "gpu_build_options.h"
 
 namespace vkrt::study {
 
@@ -44,15 +45,18 @@ TimedRender StudyRenderer::render(Device device, const Scene& scene, const Scene
     }
     if (!gpu_) throw std::invalid_argument("study: a GPU render was asked for, but no GPU renderer is open");
     if (sampleVariance) throw std::invalid_argument("study: the GPU renderer has no per-pixel variance output");
+    // Built for every render, untimed: a cache keyed on the scene's address would hand a later
+    // scene at the same address (a loop's local) the previous scene's tree.
+    const SceneAccel gpuAccel = buildSceneAccel(scene, gpuBuildOptions());
     if (warmedScene_ != &scene) {
         RenderOptions warmUp = options;
         warmUp.samplesPerPixel = 1;
         warmUp.quiet = true;
-        gpu_->render(scene, accel, warmUp);
+        gpu_->render(scene, gpuAccel, warmUp);
         warmedScene_ = &scene;
     }
     const auto start = std::chrono::steady_clock::now();
-    out.image = gpu_->render(scene, accel, options);
+    out.image = gpu_->render(scene, gpuAccel, options);
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
 }

@@ -40,6 +40,8 @@ public:
     // One render. `sampleVariance` (CPU only, else std::invalid_argument): the per-pixel sample
     // variance (cpu_renderer.h). GPU renders are timed after the kernel variant for the scene has
     // been created once (an untimed 1-rpp warm-up), so pipeline compilation is not counted.
+    // `accel` is the CPU's tree; a GPU render builds (untimed) and uses the tree `vkrt` builds for
+    // the GPU (gpu_build_options.h), so study times are the times a user gets.
     TimedRender render(Device device, const Scene& scene, const SceneAccel& accel, const RenderOptions& options,
                        Image* sampleVariance = nullptr);
 
