@@ -138,10 +138,7 @@ TEST_P(RayTracerLeaves, MatchesTheCpuTraversal) {
     if (GetParam() > 8) {
         EXPECT_EQ(largestLeaf, static_cast<std::uint32_t>(GetParam()));
     }
-    GpuRendererOptions options;
-    options.validation = true;
-    GpuRayTracer tracer(scene, options);
-    watch(tracer.validationLog());
+    GpuRayTracer& tracer = rayTracer(scene);
     const std::vector<gpu::TraceRayInput> rays = randomRays(20000, 1e30f);
 
     GpuTraceStats stats;
@@ -192,10 +189,7 @@ TEST_F(VulkanTest, RayTracerMatchesTheCpuWithExactNodesFarFromTheOrigin) {
     const GpuNodes nodes = gpuNodes(scene);
     ASSERT_FALSE(nodes.packed) << "area growth " << nodes.areaGrowth;
     EXPECT_EQ(nodes.texels.size(), scene.nodes.size() * gpu::GPU_EXACT_NODE_TEXELS);
-    GpuRendererOptions options;
-    options.validation = true;
-    GpuRayTracer tracer(scene, options);
-    watch(tracer.validationLog());
+    GpuRayTracer& tracer = rayTracer(scene);
     const std::vector<gpu::TraceRayInput> rays = randomRays(20000, 1e30f, offset);
     const auto closest = tracer.trace(rays, false);
     int disagreements = 0, hitsSeen = 0;
@@ -231,10 +225,7 @@ TEST_F(VulkanTest, RayTracerMatchesTheCpuThroughDeepStacksAndManyInstances) {
     ASSERT_GE(scene.stats.topDepth, 8) << "the top level must be deeper than the 4 register entries";
     ASSERT_GE(scene.stats.bottomDepth, 8);
 
-    GpuRendererOptions options;
-    options.validation = true;
-    GpuRayTracer tracer(scene, options);
-    watch(tracer.validationLog());
+    GpuRayTracer& tracer = rayTracer(scene);
     const std::vector<gpu::TraceRayInput> rays = raysAcross(random, 20000, 16.0f, 10.0f);
     // Same tolerance as RayTracerLeaves (grazing rays may go either way on FMA contraction).
     for (const bool anyHit : {false, true}) {
@@ -269,10 +260,7 @@ TEST_F(VulkanTest, RayTracerMatchesTheCpuWithTheWorldGroupInTheTopLevel) {
     const bvh::SceneBvh scene = bvh::buildSceneBvh(groups, instances, {});
     ASSERT_TRUE(inlinedWorld(scene).inlined) << "the test needs the world group inlined";
 
-    GpuRendererOptions options;
-    options.validation = true;
-    GpuRayTracer tracer(scene, options);
-    watch(tracer.validationLog());
+    GpuRayTracer& tracer = rayTracer(scene);
     const std::vector<gpu::TraceRayInput> rays = raysAcross(random, 20000, 14.0f, 8.0f);
     for (const bool anyHit : {false, true}) {
         const CpuComparison c = compareWithCpu(scene, rays, tracer.trace(rays, anyHit), anyHit);
@@ -288,14 +276,12 @@ TEST_F(VulkanTest, RayTracerMatchesTheCpuWithTheWorldGroupInTheTopLevel) {
 TEST_F(VulkanTest, RayTracerSplitsLargeRayListsIntoBatches) {
     const bvh::SceneBvh scene = randomScene();
     GpuRendererOptions options;
-    options.validation = true;
     // Batches of 4096 rays, to keep the test quick. The hit buffer binds first: its view has one
     // R32UI texel per word and room for TRACE_HIT_WORDS_INSTANCED words per ray, and the cap allows
     // maxBytes / 16 texels per view (capLimits); 128 texels spare for the padding
     // (stableTexelBufferBytes), or the batch would shrink by a workgroup.
     options.maxBufferBytes = 16 * (4096 * gpu::TRACE_HIT_WORDS_INSTANCED + 128);
-    GpuRayTracer tracer(scene, options);
-    watch(tracer.validationLog());
+    GpuRayTracer& tracer = rayTracer(scene, options);
     ASSERT_EQ(tracer.maxRaysPerSubmission(), 4096u);
     const std::vector<gpu::TraceRayInput> rays = randomRays(tracer.maxRaysPerSubmission() + 1000, 1e30f);
     GpuTraceStats stats;
@@ -317,10 +303,7 @@ TEST_F(VulkanTest, RayTracerReportsARayOverTheLoopBudget) {
     for (int i = 0; i < 80000; ++i)
         groups[0].push_back({gpu::PRIM_KIND_TRIANGLE, glm::vec3(-1, -1, 0), glm::vec3(1, -1, 0), glm::vec3(0, 1, 0)});
     const bvh::SceneBvh scene = bvh::buildSceneBvh(groups, {{0, glm::mat4(1.0f), gpu::MATERIAL_NONE}}, {});
-    GpuRendererOptions options;
-    options.validation = true;
-    GpuRayTracer tracer(scene, options);
-    watch(tracer.validationLog());
+    GpuRayTracer& tracer = rayTracer(scene);
     const std::vector<gpu::TraceRayInput> rays{{glm::vec4(0.0f, 0.0f, -1.0f, 1e30f), glm::vec4(0.0f, 0.0f, 1.0f, 0.0f)}};
     try {
         tracer.trace(rays, false);
@@ -354,10 +337,7 @@ TEST_F(VulkanTest, TheGpuTreeFindsTheHitsOfTheCpuTree) {
     const bvh::SceneBvh cpuScene = randomScene();
     const bvh::SceneBvh gpuScene = randomScene(8, glm::vec3(0.0f), gpuBuildOptions());
     ASSERT_LT(gpuScene.nodes.size(), cpuScene.nodes.size()) << "the GPU's constants should give another, smaller tree";
-    GpuRendererOptions options;
-    options.validation = true;
-    GpuRayTracer tracer(gpuScene, options);
-    watch(tracer.validationLog());
+    GpuRayTracer& tracer = rayTracer(gpuScene);
     const std::vector<gpu::TraceRayInput> rays = randomRays(20000, 1e30f);
     const CpuComparison closest = compareWithCpu(cpuScene, gpuScene, rays, tracer.trace(rays, false), false);
     EXPECT_GT(closest.cpuHits, 2000);

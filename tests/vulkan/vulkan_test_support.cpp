@@ -25,7 +25,15 @@ GpuRenderer& VulkanTest::renderer(GpuRendererOptions options) {
     return *renderer_;
 }
 
+GpuRayTracer& VulkanTest::rayTracer(const bvh::SceneBvh& scene, GpuRendererOptions options) {
+    options.validation = true;
+    rayTracer_ = std::make_unique<GpuRayTracer>(scene, options);
+    watch(rayTracer_->validationLog());
+    return *rayTracer_;
+}
+
 void VulkanTest::TearDown() {
+    rayTracer_.reset();
     renderer_.reset();
     context_.reset();
     for (const auto& log : logs_) {

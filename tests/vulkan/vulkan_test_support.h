@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "context.h"
+#include "gpu_ray_tracer.h"
 #include "gpu_renderer.h"
 #include "render_options.h"
 #include "scene.h"
@@ -25,6 +26,9 @@ class VulkanTest : public ::testing::Test {
 protected:
     Context& context(const ContextOptions& options = {});
     GpuRenderer& renderer(GpuRendererOptions options = {});
+    // A ray tracer over `scene` with validation on, its log watched; one per test (a second call
+    // replaces the first).
+    GpuRayTracer& rayTracer(const bvh::SceneBvh& scene, GpuRendererOptions options = {});
     // Checks this log too in TearDown (objects the test owns itself must be gone by then).
     void watch(std::shared_ptr<const ValidationLog> log) { logs_.push_back(std::move(log)); }
     void TearDown() override;
@@ -32,6 +36,7 @@ protected:
 private:
     std::unique_ptr<Context> context_;
     std::unique_ptr<GpuRenderer> renderer_;
+    std::unique_ptr<GpuRayTracer> rayTracer_;
     std::vector<std::shared_ptr<const ValidationLog>> logs_;
 };
 
