@@ -1,7 +1,6 @@
 #include "command_line.h"
 
 #include <filesystem>
-#include <map>
 #include <sstream>
 
 #include <CLI/CLI.hpp>
@@ -142,10 +141,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
         }
         if (cl.scenePath.empty()) throw CLI::RequiredError("a scene file (vkrt scene.xml)");
         if (!bg.empty()) cl.render.background = parseColour(bg);
-        static const std::map<std::string, SamplerKind> samplers = {
-            {"jittered", SamplerKind::Jittered}, {"regular", SamplerKind::Regular}, {"random", SamplerKind::Random},
-            {"sobol", SamplerKind::Sobol}};
-        cl.render.sampler = samplers.at(sampler);
+        cl.render.sampler = parseSampler(sampler);  // CLI11 checked the name
         cl.device = device == "cpu" ? DeviceChoice::Cpu : device == "gpu" ? DeviceChoice::Gpu : DeviceChoice::Auto;
         if (sweep) {
             study::SweepOptions& sw = cl.sweep;
@@ -153,7 +149,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
             sw.outDir = sweepText.out;
             sw.cacheDir = sweepText.cache;
             sw.samplers.clear();
-            for (const std::string& name : sweepText.samplers) sw.samplers.push_back(samplers.at(name));
+            for (const std::string& name : sweepText.samplers) sw.samplers.push_back(parseSampler(name));
             sw.devices.clear();
             if (sweepText.device != "cpu") sw.devices.push_back(study::Device::Gpu);
             if (sweepText.device != "gpu") sw.devices.push_back(study::Device::Cpu);

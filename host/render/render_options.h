@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include <glm/glm.hpp>
 
@@ -12,6 +13,10 @@ namespace vkrt {
 
 // Values match gpu::SAMPLER_* in shaders/shared/device_host.h.
 enum class SamplerKind : std::uint32_t { Jittered = 0, Regular = 1, Random = 2, Sobol = 3 };
+
+std::string samplerName(SamplerKind sampler);  // "jittered", "regular", "random", "sobol"
+// Throws std::invalid_argument naming the text when it is not a sampler's name.
+SamplerKind parseSampler(const std::string& name);
 
 struct RenderOptions {
     int width = 250;             // the instructor's reference renders are 250x250

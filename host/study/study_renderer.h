@@ -17,9 +17,8 @@ namespace vkrt::study {
 enum class Device { Gpu, Cpu };
 
 std::string deviceName(Device device);             // "gpu", "cpu"
-std::string samplerName(SamplerKind sampler);      // "jittered", "regular", "random", "sobol"
-// Throws std::invalid_argument naming the text when it is not a sampler's name.
-SamplerKind parseSampler(const std::string& name);
+using vkrt::parseSampler;  // render_options.h
+using vkrt::samplerName;
 
 struct TimedRender {
     Image image;

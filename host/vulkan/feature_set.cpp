@@ -34,16 +34,6 @@ std::set<int> usedShaders(const Scene& scene) {
     return used;
 }
 
-const char* samplerName(std::uint32_t sampler) {
-    switch (sampler) {
-    case gpu::SAMPLER_JITTERED: return "jittered";
-    case gpu::SAMPLER_REGULAR: return "regular";
-    case gpu::SAMPLER_RANDOM: return "random";
-    case gpu::SAMPLER_SOBOL: return "sobol";
-    }
-    return "unknown";
-}
-
 }  // namespace
 
 bool needsTopLevel(const bvh::SceneBvh& bvh) { return !(bvh.instances.size() == 1 && bvh::isIdentity(bvh.instances[0])); }
@@ -88,7 +78,7 @@ std::string FeatureSet::describe() const {
     add(textures, "textures");
     add(coolToWarm, "cool-to-warm");
     add(!packedNodes, "exact-nodes");
-    add(sampler != gpu::SAMPLER_FROM_FRAME, (std::string("sampler=") + samplerName(sampler)).c_str());
+    add(sampler != gpu::SAMPLER_FROM_FRAME, ("sampler=" + samplerName(static_cast<SamplerKind>(sampler))).c_str());
     add(true, ("depth=" + std::to_string(maxDepth) + " stack=" + std::to_string(pathStackSize)).c_str());
     return s;
 }
