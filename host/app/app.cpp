@@ -9,11 +9,9 @@
 #include "command_line.h"
 #include "cpu_renderer.h"
 #include "device_list.h"
-#include "gpu_build_options.h"
 #include "gpu_renderer.h"
 #include "image_compare.h"
 #include "interrupt.h"
-#include "scene_accel.h"
 #include "statistical_compare.h"
 #include "sweep.h"
 #include "vulkan_errors.h"
@@ -54,23 +52,30 @@ GpuRendererOptions gpuOptions(const CommandLine& cl) {
 struct DeviceRender {
     Image image;
     std::string device;
-    double seconds = 0.0;
+    double prepareSeconds = 0.0;  // the renderer's own tree and tables
+    double seconds = 0.0;         // the render itself
 };
 
-DeviceRender renderOnCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions& options) {
+// Each renderer prepares the scene its own way (its own tree) and renders it.
+DeviceRender renderOnCpu(const Scene& scene, const RenderOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    const SceneAccel accel = prepareCpuScene(scene);
+    const double prepareSeconds = secondsSince(start);
     RenderStats stats;
     Image image = renderCpu(scene, accel, options, &stats);
     if (stats.nonFiniteSamples > 0)
         std::cerr << "warning: " << stats.nonFiniteSamples << " samples were NaN/Inf and were replaced by black\n";
-    return {std::move(image), "cpu (" + std::to_string(stats.threads) + " threads)", stats.seconds};
+    return {std::move(image), "cpu (" + std::to_string(stats.threads) + " threads)", prepareSeconds, stats.seconds};
 }
 
-DeviceRender renderOnGpu(GpuRenderer& gpu, const Scene& scene, const SceneAccel& accel, const RenderOptions& options,
-                         bool general) {
+DeviceRender renderOnGpu(GpuRenderer& gpu, const Scene& scene, const RenderOptions& options, bool general) {
+    const auto start = std::chrono::steady_clock::now();
+    const GpuSceneData data = GpuRenderer::prepare(scene);
+    const double prepareSeconds = secondsSince(start);
     GpuRenderStats stats;
     GpuRenderSettings settings;
     settings.variant = general ? KernelVariant::General : KernelVariant::Specialised;
-    Image image = gpu.render(scene, accel, options, &stats, settings);
+    Image image = gpu.render(data, options, &stats, settings);
     if (stats.nonFiniteSamples > 0)
         std::cerr << "warning: " << stats.nonFiniteSamples << " samples were NaN/Inf and were replaced by black\n";
     if (auto log = gpu.validationLog(); log && log->count() > 0)
@@ -79,8 +84,14 @@ DeviceRender renderOnGpu(GpuRenderer& gpu, const Scene& scene, const SceneAccel&
     // invocation computed (sample_batching.h), for shader developers.
     const std::string kernel = (stats.generalKernel ? "general kernel, " + stats.features : "kernel: " + stats.features) +
                                "; samples/dispatch=" + std::to_string(stats.samplesPerDispatch);
-    return {std::move(image), stats.device + " [" + kernel + "]", stats.renderSeconds + stats.readbackSeconds};
+    return {std::move(image), stats.device + " [" + kernel + "]", prepareSeconds, stats.renderSeconds + stats.readbackSeconds};
 }
+
+// compare writes its heat map only where -o asks, so that it never litters the working folder.
+void writeHeatMap(const Image& map, const std::string& path) {
+    if (!path.empty()) writeImage(map, path);
+}
+std::string heatMapLine(const std::string& path) { return path.empty() ? "not written (-o FILE.png writes it)" : path; }
 
 // --device auto: the GPU when a Vulkan device exists, else the CPU reference with a message.
 std::unique_ptr<GpuRenderer> openGpu(const CommandLine& cl) {
@@ -98,19 +109,15 @@ int runRender(CommandLine& cl) {
     const auto start = std::chrono::steady_clock::now();
     const Scene scene = loadWithWarnings(cl);
     std::unique_ptr<GpuRenderer> gpu = openGpu(cl);
-    // Each device gets the tree its traversal is fastest with (gpu_build_options.h); the GPU's
-    // skips the CPU traversal's 4-wide copy (4-11% of the build at 256K-1M triangles, docs/BVH.md §4).
-    const SceneAccel accel = buildSceneAccel(scene, gpu ? gpuBuildOptions() : bvh::BuildOptions{});
     DeviceRender result;
     try {
-        result = gpu ? renderOnGpu(*gpu, scene, accel, cl.render, cl.general) : renderOnCpu(scene, accel, cl.render);
+        result = gpu ? renderOnGpu(*gpu, scene, cl.render, cl.general) : renderOnCpu(scene, cl.render);
     } catch (const GpuKernelError& e) {
         // The kernel refused this scene (e.g. lavapipe's loop limiter): with --device auto the
-        // CPU reference computes the same image (from a BVH with its CPU copy); with --device gpu
-        // the error stands.
+        // CPU reference computes the same image; with --device gpu the error stands.
         if (cl.device != DeviceChoice::Auto) throw;
         std::cerr << "note: " << e.what() << "\nnote: rendering on the CPU reference instead\n";
-        result = renderOnCpu(scene, buildSceneAccel(scene), cl.render);
+        result = renderOnCpu(scene, cl.render);
     }
     writeImage(result.image, cl.outputPath);
     if (!cl.render.quiet)
@@ -123,14 +130,13 @@ int runRender(CommandLine& cl) {
 // compare --stat: GPU and CPU with different seeds, judged by a z-test (host/study/z_test.h).
 int runStatisticalCompare(CommandLine& cl) {
     const Scene scene = loadWithWarnings(cl);
-    const SceneAccel accel = buildSceneAccel(scene);
     study::StudyRenderer renderer(gpuOptions(cl));
     RenderOptions options = cl.render;
     options.quiet = true;
-    const study::StatisticalComparison c = study::compareDevicesStatistically(renderer, scene, accel, options);
+    const study::StatisticalComparison c = study::compareDevicesStatistically(renderer, renderer.prepare(scene), options);
     if (auto log = renderer.validationLog(); log && log->count() > 0)
         std::cerr << "warning: " << log->count() << " Vulkan validation message(s):\n" << log->joined();
-    writeImage(c.test.map, cl.heatMapPath);
+    writeHeatMap(c.test.map, cl.heatMapPath);
     const study::ZTestResult& z = c.test;
     std::printf("scene            %s (%dx%d, %s sampler)\n", cl.scenePath.c_str(), cl.render.width, cl.render.height,
                 study::samplerName(cl.render.sampler).c_str());
@@ -141,7 +147,7 @@ int runStatisticalCompare(CommandLine& cl) {
     std::printf("z-test           |z| limit %.2f (alpha 0.01, Sidak over %zu values), max |z| %.2f\n", z.zLimit, z.values,
                 z.maxAbsZ);
     std::printf("values passing   %.3f%% (needs >= 99.75%%)\n", 100.0 * z.passedFraction());
-    std::printf("z map            %s\n", cl.heatMapPath.c_str());
+    std::printf("z map            %s\n", heatMapLine(cl.heatMapPath).c_str());
     std::printf("result           %s\n", z.pass ? "PASS: the images agree up to their noise" : "FAIL: the images differ");
     return z.pass ? 0 : kExitStatisticallyDifferent;
 }
@@ -162,23 +168,25 @@ int runSweep(CommandLine& cl) {
 int runCompare(CommandLine& cl) {
     if (cl.statistical) return runStatisticalCompare(cl);
     const Scene scene = loadWithWarnings(cl);
-    // Each device renders from its own tree, as `vkrt scene.xml` would: the times are the ones a
-    // user gets, and the images must agree although the trees differ.
+    // Each device prepares and renders as `vkrt scene.xml` would, from its own tree: the times are
+    // the ones a user gets, and the images must agree although the trees differ.
     GpuRenderer gpu(gpuOptions(cl));
-    const DeviceRender onGpu = renderOnGpu(gpu, scene, buildSceneAccel(scene, gpuBuildOptions()), cl.render, cl.general);
-    const DeviceRender onCpu = renderOnCpu(scene, buildSceneAccel(scene), cl.render);
+    const DeviceRender onGpu = renderOnGpu(gpu, scene, cl.render, cl.general);
+    const DeviceRender onCpu = renderOnCpu(scene, cl.render);
     const ImageDifference diff = compareImages(onGpu.image, onCpu.image);
-    writeImage(diff.heatMap, cl.heatMapPath);
+    writeHeatMap(diff.heatMap, cl.heatMapPath);
     std::printf("scene            %s (%dx%d, %d rpp, seed %u)\n", cl.scenePath.c_str(), cl.render.width,
                 cl.render.height, cl.render.samplesPerPixel, cl.render.seed);
-    std::printf("gpu              %s, %.3f s\n", onGpu.device.c_str(), onGpu.seconds);
-    std::printf("cpu              %s, %.3f s\n", onCpu.device.c_str(), onCpu.seconds);
+    std::printf("gpu              %s, prepare %.3f s, render %.3f s\n", onGpu.device.c_str(), onGpu.prepareSeconds,
+                onGpu.seconds);
+    std::printf("cpu              %s, prepare %.3f s, render %.3f s\n", onCpu.device.c_str(), onCpu.prepareSeconds,
+                onCpu.seconds);
     std::printf("max abs diff     %.4f (%d/255)\n", diff.maxAbs, static_cast<int>(diff.maxAbs * 255.0 + 0.5));
     std::printf("mean abs diff    %.6f (%.3f/255)\n", diff.meanAbs, diff.meanAbs * 255.0);
     std::printf("pixels > 1/255   %.3f%%\n", 100.0 * diff.fractionOver1);
     std::printf("pixels > 2/255   %.3f%%\n", 100.0 * diff.fractionOver2);
     std::printf("psnr             %.2f dB\n", diff.psnr);
-    std::printf("heat map         %s\n", cl.heatMapPath.c_str());
+    std::printf("heat map         %s\n", heatMapLine(cl.heatMapPath).c_str());
     return 0;
 }
 

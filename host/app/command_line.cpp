@@ -122,7 +122,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
     bool listDevices = false;
     if (compare) {
         app.add_option("-o,--output", cl.heatMapPath,
-                       "Difference heat map image (default <scene>_diff.png; with --stat the z map)");
+                       "Difference heat map image (with --stat the z map); none is written without -o");
         app.add_flag("--stat", cl.statistical,
                      "Statistical comparison: GPU (seed + 1, -r rpp) vs a CPU reference (seed, 16x the rpp, at least "
                      "256) by a per-pixel z-test against the CPU's sample variance (alpha 0.01, Sidak; pass when "
@@ -163,7 +163,6 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
 
     const std::string stem = std::filesystem::path(cl.scenePath).stem().string();
     if (cl.outputPath.empty()) cl.outputPath = stem + ".png";
-    if (compare && cl.heatMapPath.empty()) cl.heatMapPath = stem + "_diff.png";
     return {cl, 0};
 }
 

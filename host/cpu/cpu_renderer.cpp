@@ -64,6 +64,8 @@ int threadCount(int requested, int tiles) {
 
 }  // namespace
 
+SceneAccel prepareCpuScene(const Scene& scene) { return buildSceneAccel(scene); }
+
 Image renderCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions& options, RenderStats* stats,
                 Image* sampleVariance) {
     const auto start = std::chrono::steady_clock::now();

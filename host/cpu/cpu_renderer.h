@@ -21,6 +21,10 @@ struct RenderStats {
     std::uint64_t nonFiniteSamples = 0;    // samples replaced by black; any is a bug (RENDERING.md §8)
 };
 
+// The reference's acceleration structure: the scene's BVH with the CPU traversal's SAH constants
+// and its 4-wide copy (bvh::BuildOptions' defaults). The scene must outlive the result.
+SceneAccel prepareCpuScene(const Scene& scene);
+
 // Renders options.width x options.height linear radiance. Bit-identical for any thread count.
 // Throws std::invalid_argument for bad options, RenderCancelled when *options.cancel becomes true.
 // sampleVariance (optional, for statistical tests, host/study): per pixel and channel, the unbiased

@@ -67,7 +67,7 @@ std::string referenceKey(const std::string& sceneText, const ReferenceSpec& spec
     return buf;
 }
 
-Reference loadOrRenderReference(StudyRenderer& renderer, const Scene& scene, const SceneAccel& accel,
+Reference loadOrRenderReference(StudyRenderer& renderer, const PreparedScene& scene,
                                 const std::string& sceneText, const ReferenceSpec& spec,
                                 const std::filesystem::path& cacheDir, std::ostream& log) {
     if (spec.rpp < 2) throw std::invalid_argument("reference rpp must be at least 2 (two halves), not " + std::to_string(spec.rpp));
@@ -87,7 +87,7 @@ Reference loadOrRenderReference(StudyRenderer& renderer, const Scene& scene, con
             return;
         }
         const auto start = std::chrono::steady_clock::now();
-        ref.masks = findRegions(scene, accel, spec.options, probe);
+        ref.masks = findRegions(*scene.scene, scene.cpu, spec.options, probe);
         writeAtomically(masksToImage(ref.masks), masksPath);
         log << "reference: region masks in "
             << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
@@ -119,9 +119,9 @@ Reference loadOrRenderReference(StudyRenderer& renderer, const Scene& scene, con
     half.sampler = spec.sampler;
     half.samplesPerPixel = spec.rpp / 2;
     half.seed = kReferenceSeedA;
-    const TimedRender a = renderer.render(spec.device, scene, accel, half);
+    const TimedRender a = renderer.render(spec.device, scene, half);
     half.seed = kReferenceSeedB;
-    const TimedRender b = renderer.render(spec.device, scene, accel, half);
+    const TimedRender b = renderer.render(spec.device, scene, half);
     ref.seconds = a.seconds + b.seconds;
 
     ref.image = Image(a.image.width, a.image.height);

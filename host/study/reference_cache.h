@@ -16,7 +16,6 @@
 #include "region_masks.h"
 #include "render_options.h"
 #include "scene.h"
-#include "scene_accel.h"
 #include "study_renderer.h"
 
 namespace vkrt::study {
@@ -50,7 +49,7 @@ std::filesystem::path defaultCacheDir();
 std::string referenceKey(const std::string& sceneText, const ReferenceSpec& spec);
 
 // Loads the cached reference, or renders (and caches) it; progress lines go to `log`.
-Reference loadOrRenderReference(StudyRenderer& renderer, const Scene& scene, const SceneAccel& accel,
+Reference loadOrRenderReference(StudyRenderer& renderer, const PreparedScene& scene,
                                 const std::string& sceneText, const ReferenceSpec& spec,
                                 const std::filesystem::path& cacheDir, std::ostream& log);
 

@@ -4,7 +4,7 @@
 
 namespace vkrt::study {
 
-StatisticalComparison compareDevicesStatistically(StudyRenderer& renderer, const Scene& scene, const SceneAccel& accel,
+StatisticalComparison compareDevicesStatistically(StudyRenderer& renderer, const PreparedScene& scene,
                                                   const RenderOptions& options, const ZTestOptions& test) {
     StatisticalComparison out;
     out.cpuSeed = options.seed;
@@ -16,11 +16,11 @@ StatisticalComparison compareDevicesStatistically(StudyRenderer& renderer, const
     cpuOptions.seed = out.cpuSeed;
     cpuOptions.samplesPerPixel = out.cpuRpp;
     Image sampleVariance;
-    const TimedRender cpu = renderer.render(Device::Cpu, scene, accel, cpuOptions, &sampleVariance);
+    const TimedRender cpu = renderer.render(Device::Cpu, scene, cpuOptions, &sampleVariance);
 
     RenderOptions gpuOptions = options;
     gpuOptions.seed = out.gpuSeed;
-    const TimedRender gpu = renderer.render(Device::Gpu, scene, accel, gpuOptions);
+    const TimedRender gpu = renderer.render(Device::Gpu, scene, gpuOptions);
 
     out.test = zTest(gpu.image, cpu.image,
                      sumImages(varianceOfMean(sampleVariance, out.gpuRpp), varianceOfMean(sampleVariance, out.cpuRpp)), test);

@@ -7,7 +7,6 @@
 
 #include "render_options.h"
 #include "scene.h"
-#include "scene_accel.h"
 #include "study_renderer.h"
 #include "z_test.h"
 
@@ -34,7 +33,7 @@ struct StatisticalComparison {
 // over-estimates the variance of a mean, which only makes the test more lenient. The regular
 // sampler is a fixed pattern, not an unbiased estimator: at two different rpp it converges to
 // different values near edges, and the test may rightly reject it. `renderer` must have a GPU.
-StatisticalComparison compareDevicesStatistically(StudyRenderer& renderer, const Scene& scene, const SceneAccel& accel,
+StatisticalComparison compareDevicesStatistically(StudyRenderer& renderer, const PreparedScene& scene,
                                                   const RenderOptions& options, const ZTestOptions& test = {});
 
 }  // namespace vkrt::study

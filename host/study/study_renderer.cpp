@@ -1,10 +1,10 @@
 #include "study_renderer.h"
 
+#include <atomic>
 #include <chrono>
 #include <stdexcept>
 
 #include "cpu_renderer.h"
-#include "gpu_build_options.h"
 
 namespace vkrt::study {
 
@@ -18,29 +18,36 @@ std::string StudyRenderer::gpuDeviceName() const { return gpu_ ? gpu_->deviceNam
 
 std::shared_ptr<const ValidationLog> StudyRenderer::validationLog() const { return gpu_ ? gpu_->validationLog() : nullptr; }
 
-TimedRender StudyRenderer::render(Device device, const Scene& scene, const SceneAccel& accel, const RenderOptions& options,
+PreparedScene StudyRenderer::prepare(const Scene& scene) const {
+    static std::atomic<std::uint64_t> prepared{0};
+    PreparedScene p;
+    p.scene = &scene;
+    p.cpu = prepareCpuScene(scene);
+    if (gpu_) p.gpu = GpuRenderer::prepare(scene);
+    p.id = ++prepared;
+    return p;
+}
+
+TimedRender StudyRenderer::render(Device device, const PreparedScene& scene, const RenderOptions& options,
                                   Image* sampleVariance) {
     TimedRender out;
     if (device == Device::Cpu) {
         const auto start = std::chrono::steady_clock::now();
-        out.image = renderCpu(scene, accel, options, nullptr, sampleVariance);
+        out.image = renderCpu(*scene.scene, scene.cpu, options, nullptr, sampleVariance);
         out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return out;
     }
-    if (!gpu_) throw std::invalid_argument("study: a GPU render was asked for, but no GPU renderer is open");
+    if (!gpu_ || !scene.gpu) throw std::invalid_argument("study: a GPU render was asked for, but no GPU renderer is open");
     if (sampleVariance) throw std::invalid_argument("study: the GPU renderer has no per-pixel variance output");
-    // Built for every render, untimed: a cache keyed on the scene's address would hand a later
-    // scene at the same address (a loop's local) the previous scene's tree.
-    const SceneAccel gpuAccel = buildSceneAccel(scene, gpuBuildOptions());
-    if (warmedScene_ != &scene) {
+    if (warmedScene_ != scene.id) {
         RenderOptions warmUp = options;
         warmUp.samplesPerPixel = 1;
         warmUp.quiet = true;
-        gpu_->render(scene, gpuAccel, warmUp);
-        warmedScene_ = &scene;
+        gpu_->render(*scene.gpu, warmUp);
+        warmedScene_ = scene.id;
     }
     const auto start = std::chrono::steady_clock::now();
-    out.image = gpu_->render(scene, gpuAccel, options);
+    out.image = gpu_->render(*scene.gpu, options);
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
 }

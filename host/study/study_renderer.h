@@ -1,7 +1,8 @@
 // Renders for studies: one interface over the GPU renderer and the CPU reference, timing each
-// render the same way (wall time of the render call, scene and BVH already built).
+// render the same way (wall time of the render call, the scene prepared once for both devices).
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,6 +21,15 @@ std::string deviceName(Device device);             // "gpu", "cpu"
 using vkrt::parseSampler;  // render_options.h
 using vkrt::samplerName;
 
+// A scene prepared for every open device, each with its own tree (as `vkrt` renders it), so that
+// study times are the times a user gets. Render it as often as needed. The scene must outlive it.
+struct PreparedScene {
+    const Scene* scene = nullptr;
+    SceneAccel cpu;                  // prepareCpuScene: also what region masks probe
+    std::optional<GpuSceneData> gpu; // GpuRenderer::prepare, when a GPU renderer is open
+    std::uint64_t id = 0;            // unique per prepare: the GPU warm-up is once per prepared scene
+};
+
 struct TimedRender {
     Image image;
     double seconds = 0.0;  // wall time of the render call
@@ -31,22 +41,22 @@ public:
     // device); nullopt: CPU only.
     explicit StudyRenderer(const std::optional<GpuRendererOptions>& gpu);
 
-    bool hasGpu() const { return gpu_ != nullptr; }
     std::string gpuDeviceName() const;
     // The GPU renderer's validation log (nullptr without GPU or validation).
     std::shared_ptr<const ValidationLog> validationLog() const;
 
+    // Both trees (the GPU's only when a GPU renderer is open), untimed.
+    PreparedScene prepare(const Scene& scene) const;
+
     // One render. `sampleVariance` (CPU only, else std::invalid_argument): the per-pixel sample
     // variance (cpu_renderer.h). GPU renders are timed after the kernel variant for the scene has
     // been created once (an untimed 1-rpp warm-up), so pipeline compilation is not counted.
-    // `accel` is the CPU's tree; a GPU render builds (untimed) and uses the tree `vkrt` builds for
-    // the GPU (gpu_build_options.h), so study times are the times a user gets.
-    TimedRender render(Device device, const Scene& scene, const SceneAccel& accel, const RenderOptions& options,
+    TimedRender render(Device device, const PreparedScene& scene, const RenderOptions& options,
                        Image* sampleVariance = nullptr);
 
 private:
     std::unique_ptr<GpuRenderer> gpu_;
-    const Scene* warmedScene_ = nullptr;
+    std::uint64_t warmedScene_ = 0;  // PreparedScene::id of the last warm-up
 };
 
 }  // namespace vkrt::study

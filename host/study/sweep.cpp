@@ -9,7 +9,6 @@
 #include <string>
 #include <system_error>
 
-#include "scene_accel.h"
 #include "sweep_csv.h"
 #include "sweep_report.h"
 #include "vulkan_errors.h"
@@ -87,7 +86,7 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
     std::unique_ptr<StudyRenderer> renderer = openRenderer(options, result.devices, referenceDevice, log);
 
     const std::string sceneText = readText(options.scenePath);
-    const SceneAccel accel = buildSceneAccel(scene);
+    const PreparedScene prepared = renderer->prepare(scene);  // once: every render below reuses it
     std::error_code ec;
     std::filesystem::create_directories(options.outDir, ec);
     if (ec) throw std::runtime_error("sweep: cannot create the output directory " + options.outDir.string() + ": " + ec.message());
@@ -99,7 +98,7 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
     spec.sampler = options.referenceSampler;
     spec.device = *referenceDevice;
     const std::filesystem::path cacheDir = options.cacheDir.empty() ? defaultCacheDir() : options.cacheDir;
-    result.reference = loadOrRenderReference(*renderer, scene, accel, sceneText, spec, cacheDir, log);
+    result.reference = loadOrRenderReference(*renderer, prepared, sceneText, spec, cacheDir, log);
     const Reference& ref = result.reference;
 
     // Interleaved (seed, rpp, sampler, device) order: the machine's speed drifts, and interleaving
@@ -113,7 +112,7 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
                     o.samplesPerPixel = rpp;
                     o.sampler = sampler;
                     o.seed = options.render.seed + static_cast<std::uint32_t>(s);
-                    const TimedRender r = renderer->render(device, scene, accel, o);
+                    const TimedRender r = renderer->render(device, prepared, o);
                     SweepRow row{device, sampler, rpp, o.seed, r.seconds, measureError(r.image, ref.image, ref.masks)};
                     result.rows.push_back(row);
                     if (!options.render.quiet) {

@@ -1,9 +1,5 @@
 #include "compute_pipeline.h"
 
-#include <array>
-
-#include "device_host.h"
-
 namespace vkrt {
 
 vk::raii::ShaderModule makeShaderModule(const Context& context, std::span<const std::uint32_t> spirv) {
@@ -29,11 +25,11 @@ vk::raii::Pipeline makeComputePipeline(const Context& context, const vk::raii::P
     return vk::raii::Pipeline(context.device(), cache ? vk::Optional<const vk::raii::PipelineCache>(*cache) : nullptr, info);
 }
 
-namespace {
-
 vk::DescriptorSetLayoutBinding computeBinding(std::uint32_t binding, vk::DescriptorType type) {
     return vk::DescriptorSetLayoutBinding(binding, type, 1, vk::ShaderStageFlagBits::eCompute);
 }
+
+namespace {
 
 vk::raii::PipelineLayout makePipelineLayout(const Context& context, const vk::raii::DescriptorSetLayout& setLayout,
                                             std::uint32_t pushBytes) {
@@ -47,38 +43,5 @@ vk::raii::PipelineLayout makePipelineLayout(const Context& context, const vk::ra
 KernelLayout::KernelLayout(const Context& context, std::span<const vk::DescriptorSetLayoutBinding> bindings, std::uint32_t pushBytes)
     : setLayout_(context.device(), vk::DescriptorSetLayoutCreateInfo({}, bindings)),
       pipelineLayout_(makePipelineLayout(context, setLayout_, pushBytes)) {}
-
-KernelLayout renderLayout(const Context& context) {
-    using T = vk::DescriptorType;
-    const std::array bindings = {
-        computeBinding(gpu::BINDING_NODES, T::eStorageTexelBuffer),
-        computeBinding(gpu::BINDING_PRIMS, T::eStorageTexelBuffer),
-        computeBinding(gpu::BINDING_PRIM_INFO, T::eStorageTexelBuffer),
-        computeBinding(gpu::BINDING_VERTEX_ATTRIBS, T::eStorageTexelBuffer),
-        computeBinding(gpu::BINDING_INSTANCES, T::eStorageTexelBuffer),
-        computeBinding(gpu::BINDING_SHADERS, T::eStorageTexelBuffer),
-        computeBinding(gpu::BINDING_LIGHTS, T::eStorageTexelBuffer),
-        computeBinding(gpu::BINDING_TEXTURES, T::eStorageTexelBuffer),
-        computeBinding(gpu::BINDING_TEXELS, T::eStorageTexelBuffer),
-        computeBinding(gpu::BINDING_FRAME, T::eUniformBuffer),
-        computeBinding(gpu::BINDING_ACCUM, T::eStorageTexelBuffer),
-        computeBinding(gpu::BINDING_STATUS, T::eStorageBuffer),
-    };
-    return KernelLayout(context, bindings, sizeof(gpu::PassParams));
-}
-
-KernelLayout traceLayout(const Context& context) {
-    using T = vk::DescriptorType;
-    const std::array bindings = {
-        computeBinding(gpu::BINDING_NODES, T::eStorageTexelBuffer),
-        computeBinding(gpu::BINDING_PRIMS, T::eStorageTexelBuffer),
-        computeBinding(gpu::BINDING_INSTANCES, T::eStorageTexelBuffer),
-        computeBinding(gpu::BINDING_FRAME, T::eUniformBuffer),
-        computeBinding(gpu::BINDING_STATUS, T::eStorageBuffer),
-        computeBinding(gpu::BINDING_RAYS, T::eStorageTexelBuffer),
-        computeBinding(gpu::BINDING_HITS, T::eStorageTexelBuffer),
-    };
-    return KernelLayout(context, bindings, sizeof(gpu::TraceParams));
-}
 
 }  // namespace vkrt

@@ -1,5 +1,5 @@
-// Compute pipelines from SPIR-V with specialization constants, and the descriptor and pipeline
-// layout every render kernel shares (the bindings of shaders/shared/device_host.h).
+// Compute pipelines from SPIR-V with specialization constants, and a kernel's descriptor and
+// pipeline layout (one descriptor set, one push-constant range).
 #pragma once
 
 #include <cstdint>
@@ -25,6 +25,9 @@ vk::raii::Pipeline makeComputePipeline(const Context& context, const vk::raii::P
                                        vk::PipelineLayout layout, vk::ShaderModule module,
                                        std::span<const SpecConstant> constants, vk::PipelineCreateFlags flags = {});
 
+// One compute-stage binding of descriptor set 0.
+vk::DescriptorSetLayoutBinding computeBinding(std::uint32_t binding, vk::DescriptorType type);
+
 // A kernel's interface: descriptor set 0 and one push-constant range.
 class KernelLayout {
 public:
@@ -36,10 +39,5 @@ private:
     vk::raii::DescriptorSetLayout setLayout_;
     vk::raii::PipelineLayout pipelineLayout_;
 };
-
-// render.comp: the twelve bindings of device_host.h (BINDING_NODES .. BINDING_STATUS), PassParams.
-KernelLayout renderLayout(const Context& context);
-// trace_rays.comp: nodes, primitives, instances, frame, status, rays, hits; TraceParams.
-KernelLayout traceLayout(const Context& context);
 
 }  // namespace vkrt

@@ -1,4 +1,4 @@
-// The failures of the GPU path that callers treat differently from a plain std::runtime_error.
+// The failures of the Vulkan plumbing that callers treat differently from a plain std::runtime_error.
 #pragma once
 
 #include <stdexcept>
@@ -22,13 +22,6 @@ public:
 
 // GLSL that glslang rejects; the message carries glslang's "file:line: error" lines.
 class ShaderCompileError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
-
-// The kernel reported that it could not compute a sample correctly (RenderStatus flags): the
-// message names the pixel, the sample and what to reduce.
-class GpuKernelError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };

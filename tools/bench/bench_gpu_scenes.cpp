@@ -1,9 +1,11 @@
 // `vkrt-bench gpu scenes [DIR] [-w W -h H -r RPP] [--shader-dir DIR]`: every .xml under DIR (default the upstream
 // course scenes in ../shared, $VKRT_SHARED overriding as in the tests) rendered by the GPU kernel
 // specialised to the scene, by the general kernel (every feature on), and by the CPU reference,
-// all with the same options. One row per scene with both time ratios, then their median and range.
+// all with the same options, each device from the scene it prepared itself (its own tree). One row
+// per scene with both prepare times and both time ratios, then their median and range.
 // The mean difference GPU vs CPU is printed too, so a broken render cannot pass as a fast one.
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -15,10 +17,8 @@
 #include "bench_gpu.h"
 #include "bench_timing.h"
 #include "cpu_renderer.h"
-#include "gpu_build_options.h"
 #include "gpu_renderer.h"
 #include "image_compare.h"
-#include "scene_accel.h"
 #include "xml_loader.h"
 
 namespace vkrt::bench {
@@ -72,18 +72,18 @@ std::vector<std::filesystem::path> sceneFiles(const std::string& dir) {
 // Submission time of one GPU render of `variant`, median of `repeat`, after a small warm-up render
 // of the same variant: the pipeline then exists and lavapipe has compiled it, so neither weighs in
 // (GpuRenderStats::renderSeconds excludes them anyway; the warm-up also settles first-touch costs).
-double gpuSeconds(GpuRenderer& gpu, const Scene& scene, const SceneAccel& accel, const RenderOptions& options,
-                  KernelVariant variant, int repeat, Image* image) {
+double gpuSeconds(GpuRenderer& gpu, const GpuSceneData& data, const RenderOptions& options, KernelVariant variant,
+                  int repeat, Image* image) {
     GpuRenderSettings settings;
     settings.variant = variant;
     RenderOptions warm = options;
     warm.width = std::min(options.width, 16);
     warm.height = std::min(options.height, 16);
-    gpu.render(scene, accel, warm, nullptr, settings);
+    gpu.render(data, warm, nullptr, settings);
     std::vector<double> seconds;
     for (int r = 0; r < repeat; ++r) {
         GpuRenderStats stats;
-        *image = gpu.render(scene, accel, options, &stats, settings);
+        *image = gpu.render(data, options, &stats, settings);
         seconds.push_back(stats.renderSeconds);
     }
     return median(seconds);
@@ -97,6 +97,15 @@ double cpuSeconds(const Scene& scene, const SceneAccel& accel, const RenderOptio
         seconds.push_back(stats.seconds);
     }
     return median(seconds);
+}
+
+// Wall time of one prepare (each device's tree and tables).
+template <class Prepare>
+auto timedPrepare(Prepare prepare, double* seconds) {
+    const auto start = std::chrono::steady_clock::now();
+    auto prepared = prepare();
+    *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return prepared;
 }
 
 void printSummary(const char* what, std::vector<double> v) {
@@ -122,8 +131,9 @@ int runGpuScenesBench(const std::vector<std::string>& argv) {
                 "#   RenderStats::seconds (the render loop). Ratios are of times: general/spec > 1 means specialising pays,\n"
                 "#   gpu/cpu > 1 means the GPU path (specialised) is slower. mean_diff = mean |GPU - CPU| of the 8-bit images.\n");
     if (a.repeat > 1) std::printf("# each time is the median of %d renders\n", a.repeat);
-    std::printf("%-42s %10s %10s %8s %10s %8s %10s\n", "scene", "spec_s", "general_s", "gen/spec", "cpu_s", "gpu/cpu",
-                "mean_diff");
+    std::printf("#   gpu_prep_s / cpu_prep_s: each device's prepare (its own BVH, and for the GPU the kernel's tables).\n");
+    std::printf("%-42s %10s %10s %10s %8s %10s %10s %8s %10s\n", "scene", "gpu_prep_s", "spec_s", "general_s", "gen/spec",
+                "cpu_prep_s", "cpu_s", "gpu/cpu", "mean_diff");
 
     std::vector<double> generalOverSpec, gpuOverCpu;
     int failed = 0;
@@ -133,17 +143,18 @@ int runGpuScenesBench(const std::vector<std::string>& argv) {
         try {
             Diagnostics diagnostics;  // warnings of real course files are expected; not this tool's concern
             const Scene scene = loadScene(file.string(), LoadOptions{}, diagnostics);
-            // Each device's own tree (gpu_build_options.h), as `vkrt scene.xml` builds it.
-            const SceneAccel gpuAccel = buildSceneAccel(scene, gpuBuildOptions());
-            const SceneAccel cpuAccel = buildSceneAccel(scene);
+            double gpuPrepare = 0.0, cpuPrepare = 0.0;
+            const GpuSceneData gpuData = timedPrepare([&] { return GpuRenderer::prepare(scene); }, &gpuPrepare);
+            const SceneAccel cpuAccel = timedPrepare([&] { return prepareCpuScene(scene); }, &cpuPrepare);
             RenderOptions options = a.render;
             options.camera = scene.defaultCamera;
             Image spec, general, cpu;
-            const double s = gpuSeconds(gpu, scene, gpuAccel, options, KernelVariant::Specialised, a.repeat, &spec);
-            const double g = gpuSeconds(gpu, scene, gpuAccel, options, KernelVariant::General, a.repeat, &general);
+            const double s = gpuSeconds(gpu, gpuData, options, KernelVariant::Specialised, a.repeat, &spec);
+            const double g = gpuSeconds(gpu, gpuData, options, KernelVariant::General, a.repeat, &general);
             const double c = cpuSeconds(scene, cpuAccel, options, a.repeat, &cpu);
             const double diff = compareImages(spec, cpu).meanAbs;
-            std::printf("%-42s %10.4f %10.4f %8.2f %10.4f %8.2f %10.5f\n", label.c_str(), s, g, g / s, c, s / c, diff);
+            std::printf("%-42s %10.4f %10.4f %10.4f %8.2f %10.4f %10.4f %8.2f %10.5f\n", label.c_str(), gpuPrepare, s, g,
+                        g / s, cpuPrepare, c, s / c, diff);
             generalOverSpec.push_back(g / s);
             gpuOverCpu.push_back(s / c);
         } catch (const std::exception& e) {

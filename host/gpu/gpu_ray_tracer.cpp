@@ -10,6 +10,8 @@
 #include "device_limits.h"
 #include "feature_set.h"
 #include "kernel_cache.h"
+#include "kernel_error.h"
+#include "kernel_layouts.h"
 #include "kernel_source.h"
 #include "node_packing.h"
 #include "traversal_stack.h"
@@ -23,23 +25,6 @@ constexpr std::uint32_t kLocalSize = 64;  // trace_rays.comp's local_size_x
 // Rays per submission: one dispatch of at most 65535 workgroups; 1M rays keep a submission
 // well under a second on lavapipe even for incoherent shadow rays (~3 Mrays/s).
 constexpr std::uint32_t kBatchRays = 1u << 20;
-
-// Traversal only: primitive kinds and instancing from the BVH, no shading paths.
-FeatureSet traversalFeatures(const bvh::SceneBvh& bvh) {
-    FeatureSet f;
-    f.triangles = f.spheres = f.boxes = false;
-    for (const gpu::Primitive& p : bvh.prims) {
-        const std::uint32_t kind = p.a.w & gpu::PRIM_KIND_MASK;
-        f.triangles |= kind == gpu::PRIM_KIND_TRIANGLE;
-        f.spheres |= kind == gpu::PRIM_KIND_SPHERE;
-        f.boxes |= kind == gpu::PRIM_KIND_BOX;
-    }
-    f.instances = needsTopLevel(bvh);  // the render kernel's shortcut for one identity instance
-    f.areaLights = f.specular = f.reflection = f.gloss = f.dielectric = f.textures = f.coolToWarm = false;
-    f.maxDepth = 0;
-    f.pathStackSize = 1;
-    return f;
-}
 
 template <class T>
 std::span<const std::byte> bytesOf(const std::vector<T>& items) {
@@ -58,16 +43,16 @@ std::uint64_t paddedBytes(const std::vector<T>& items) {
 }  // namespace
 
 struct GpuRayTracer::Impl {
-    Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& options);
+    Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& options, const GpuTestHooks& hooks);
 
     Context context;
     CommandRunner runner;
     Transfers transfers;
     KernelLayout layout;
     KernelCache kernels;
-    FeatureSet features;
     std::uint32_t batch;
     GpuNodes nodeData;  // after batch: checkedBatch refuses unfit leaves before gpuNodes meets them
+    FeatureSet features;
     Buffer nodes, prims, instances, frame, status, rays, hits;
     vk::raii::BufferView nodeView = nullptr, primView = nullptr, instanceView = nullptr, rayView = nullptr, hitView = nullptr;
     vk::raii::DescriptorPool pool = nullptr;
@@ -75,23 +60,6 @@ struct GpuRayTracer::Impl {
 };
 
 namespace {
-
-ContextOptions contextOptionsOf(const GpuRendererOptions& o) {
-    ContextOptions c;
-    c.gpu = o.gpu;
-    c.validation = o.validation;
-    c.maxBufferBytes = o.maxBufferBytes;
-    c.forceStaging = o.forceStaging;
-    return c;
-}
-
-KernelSource traceSource(const GpuRendererOptions& o) {
-    KernelSource k;
-    k.name = "trace_rays";
-    k.shaderDir = o.shaderDir;
-    k.spirv = o.kernelSpirv;
-    return k;
-}
 
 // The ray texel buffer of one batch, sized off the lengths that change lavapipe's JIT key.
 std::uint64_t rayBytes(std::uint64_t batch) { return stableTexelBufferBytes(batch * sizeof(gpu::TraceRayInput)); }
@@ -137,10 +105,10 @@ std::uint32_t checkedBatch(const Context& context, const bvh::SceneBvh& bvh) {
 
 }  // namespace
 
-GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& options)
-    : context(contextOptionsOf(options)), runner(context), transfers(context, runner), layout(traceLayout(context)),
-      kernels(context, layout, loadKernel(traceSource(options))), features(traversalFeatures(bvh)),
-      batch(checkedBatch(context, bvh)), nodeData(gpuNodes(bvh)),
+GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& options, const GpuTestHooks& hooks)
+    : context(contextOptions(options, hooks)), runner(context), transfers(context, runner), layout(traceLayout(context)),
+      kernels(context, layout, loadKernel(kernelSource("trace_rays", options, hooks))), batch(checkedBatch(context, bvh)),
+      nodeData(gpuNodes(bvh)), features(traversalFeatureSet(bvh, nodeData.packed)),
       nodes(context, "BVH nodes", stableTexelBufferBytes(nodeBytes(nodeData)), kTexels, MemoryUse::Device),
       prims(context, "primitives", stableTexelBufferBytes(paddedBytes(bvh.prims)), kTexels, MemoryUse::Device),
       instances(context, "instances", stableTexelBufferBytes(paddedBytes(bvh.instances)), kTexels, MemoryUse::Device),
@@ -152,7 +120,6 @@ GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& opt
       rays(context, "rays", rayBytes(batch), kTexels, MemoryUse::Device),
       hits(context, "hits", hitBytes(batch), kTexels | vk::BufferUsageFlagBits::eTransferSrc, MemoryUse::Device) {
     transfers.upload(nodes, bytesOf(nodeData.texels));
-    features.packedNodes = nodeData.packed;
     transfers.upload(prims, bytesOf(bvh.prims));
     transfers.upload(instances, bytesOf(bvh.instances));
     gpu::FrameParams params{};
@@ -190,8 +157,8 @@ GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& opt
     context.device().updateDescriptorSets(writes, {});
 }
 
-GpuRayTracer::GpuRayTracer(const bvh::SceneBvh& bvh, const GpuRendererOptions& options)
-    : impl_(std::make_unique<Impl>(bvh, options)) {}
+GpuRayTracer::GpuRayTracer(const bvh::SceneBvh& bvh, const GpuRendererOptions& options, const GpuTestHooks& hooks)
+    : impl_(std::make_unique<Impl>(bvh, options, hooks)) {}
 GpuRayTracer::~GpuRayTracer() = default;
 
 std::uint32_t GpuRayTracer::maxRaysPerSubmission() const { return impl_->batch; }
@@ -203,7 +170,7 @@ std::shared_ptr<const ValidationLog> GpuRayTracer::validationLog() const { retur
 std::vector<gpu::TraceHitOutput> GpuRayTracer::trace(std::span<const gpu::TraceRayInput> rays, bool anyHit, GpuTraceStats* statsOut) {
     Impl& m = *impl_;
     GpuTraceStats stats;
-    const vk::raii::Pipeline& pipeline = m.kernels.pipeline(m.features, &stats.pipelineSeconds);
+    const vk::raii::Pipeline& pipeline = m.kernels.pipeline(m.features, 1, &stats.pipelineSeconds);
     std::vector<gpu::TraceHitOutput> hits(rays.size());
     const std::uint32_t wordsPerRay = m.features.instances ? gpu::TRACE_HIT_WORDS_INSTANCED : gpu::TRACE_HIT_WORDS;
     std::vector<std::uint32_t> words(std::size_t{m.batch} * wordsPerRay);

@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "device_host.h"
+#include "kernel_error.h"
 
 namespace vkrt {
 

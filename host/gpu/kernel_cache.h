@@ -1,10 +1,11 @@
-// One render kernel, specialised per feature set: pipelines are created on first use and kept
+// One kernel, specialised per feature set and samples per dispatch: pipelines are created on first use and kept
 // (lavapipe's LLVM compile takes ~0.05 s or more per variant), plus a VkPipelineCache so drivers
 // that cache compiled code can reuse it across variants.
 #pragma once
 
 #include <cstdint>
 #include <map>
+#include <utility>
 #include <vector>
 
 #include <vulkan/vulkan_raii.hpp>
@@ -19,8 +20,10 @@ class KernelCache {
 public:
     KernelCache(const Context& context, const KernelLayout& layout, const std::vector<std::uint32_t>& spirv);
 
-    // The pipeline for `features`; *creationSeconds gets the time spent creating it (0 if cached).
-    const vk::raii::Pipeline& pipeline(const FeatureSet& features, double* creationSeconds = nullptr);
+    // The pipeline for `features` computing `samplesPerDispatch` samples per invocation
+    // (sample_batching.h); *creationSeconds gets the time spent creating it (0 if cached).
+    const vk::raii::Pipeline& pipeline(const FeatureSet& features, std::uint32_t samplesPerDispatch,
+                                       double* creationSeconds = nullptr);
     std::size_t size() const { return pipelines_.size(); }
 
 private:
@@ -28,7 +31,7 @@ private:
     const KernelLayout& layout_;
     vk::raii::ShaderModule module_;
     vk::raii::PipelineCache cache_;
-    std::map<FeatureSet, vk::raii::Pipeline> pipelines_;
+    std::map<std::pair<FeatureSet, std::uint32_t>, vk::raii::Pipeline> pipelines_;
 };
 
 }  // namespace vkrt

@@ -2,7 +2,8 @@
 // computed by the Vulkan compute kernel (shaders/render.comp). No Vulkan types in this header.
 //
 //   GpuRenderer gpu({.validation = true});          // device, layouts, kernel: kept across renders
-//   Image image = gpu.render(scene, accel, options, &stats);
+//   const GpuSceneData data = GpuRenderer::prepare(scene);   // the GPU's tree and tables, once
+//   Image image = gpu.render(data, options, &stats);         // as often as needed
 //
 // Errors: VulkanUnavailable (no device: fall back to the CPU), DeviceLimitExceeded (scene too
 // large for the device), ShaderCompileError (--shader-dir GLSL), GpuKernelError (the kernel hit
@@ -10,34 +11,20 @@
 #pragma once
 
 #include <cstdint>
-#include <filesystem>
 #include <memory>
-#include <optional>
 #include <string>
-#include <vector>
 
+#include "gpu_options.h"
 #include "image.h"
+#include "kernel_error.h"
+#include "kernel_inputs.h"
 #include "render_options.h"
 #include "scene.h"
-#include "scene_accel.h"
 #include "tile_planner.h"
 #include "validation_log.h"
+#include "vulkan_errors.h"
 
 namespace vkrt {
-
-struct GpuRendererOptions {
-    int gpu = -1;             // --gpu N (index of listDevices()); -1 chooses discrete > integrated > cpu
-    bool validation = false;  // --validate: Khronos validation layers, messages in validationLog()
-    std::optional<std::filesystem::path> shaderDir;  // --shader-dir: compile DIR/render.comp at run time
-    std::vector<std::uint32_t> kernelSpirv;          // tests: this SPIR-V instead of the render kernel
-    std::optional<std::uint64_t> maxBufferBytes;     // tests: cap the per-buffer device limits
-    bool forceStaging = false;                       // tests: staging copies even on a CPU device
-};
-
-enum class KernelVariant {
-    Specialised,  // only the paths the scene uses (the default)
-    General       // every feature on: the specialisation benchmark's baseline
-};
 
 struct GpuRenderSettings {
     KernelVariant variant = KernelVariant::Specialised;
@@ -53,7 +40,7 @@ struct GpuRenderStats {
     double pipelineSeconds = 0.0; // creating the kernel variant (0 when it was cached)
     double warmUpSeconds = 0.0;   // an empty dispatch: lavapipe's LLVM compile of the variant happens
                                   // here (~0.1-1 s) the first time it meets these resources
-    double uploadSeconds = 0.0;   // scene tables and BVH into device buffers
+    double uploadSeconds = 0.0;   // the prepared scene's arrays into device buffers
     double renderSeconds = 0.0;   // all submissions, first to last
     double readbackSeconds = 0.0;
     std::uint32_t submissions = 0;
@@ -67,12 +54,16 @@ struct GpuRenderStats {
 class GpuRenderer {
 public:
     // Creates the device, layouts and loads the kernel (compiling it with --shader-dir).
-    explicit GpuRenderer(const GpuRendererOptions& options = {});
+    explicit GpuRenderer(const GpuRendererOptions& options = {}, const GpuTestHooks& hooks = {});
     ~GpuRenderer();
     GpuRenderer(const GpuRenderer&) = delete;
     GpuRenderer& operator=(const GpuRenderer&) = delete;
 
-    Image render(const Scene& scene, const SceneAccel& accel, const RenderOptions& options, GpuRenderStats* stats = nullptr,
+    // The GPU's own tree and the kernel's tables (kernel_inputs.h); needs no device. The scene
+    // must outlive the result.
+    static GpuSceneData prepare(const Scene& scene) { return prepareGpuScene(scene); }
+
+    Image render(const GpuSceneData& data, const RenderOptions& options, GpuRenderStats* stats = nullptr,
                  const GpuRenderSettings& settings = {});
 
     std::string deviceName() const;
@@ -85,9 +76,5 @@ private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
-
-// One render on a fresh GpuRenderer.
-Image renderGpu(const Scene& scene, const SceneAccel& accel, const RenderOptions& options, GpuRenderStats* stats = nullptr,
-                const GpuRendererOptions& gpu = {});
 
 }  // namespace vkrt

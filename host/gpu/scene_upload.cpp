@@ -1,4 +1,4 @@
-#include "gpu_scene.h"
+#include "scene_upload.h"
 
 #include <algorithm>
 #include <array>
@@ -66,8 +66,11 @@ void checkSceneBuffers(const BufferLimits& limits, const std::vector<BufferPlan>
     checkTotalFits(limits, total);
 }
 
-GpuScene::GpuScene(const Context& context, Transfers& transfers, const KernelLayout& layout, const SceneTables& tables,
-                   const bvh::SceneBvh& bvh, const GpuNodes& nodes, const gpu::FrameParams& frame) {
+SceneUpload::SceneUpload(const Context& context, Transfers& transfers, const KernelLayout& layout, const GpuSceneData& data,
+                         const gpu::FrameParams& frame) {
+    const SceneTables& tables = data.tables;
+    const bvh::SceneBvh& bvh = data.accel.bvh;
+    const GpuNodes& nodes = data.nodes;
     const std::uint64_t pixels = static_cast<std::uint64_t>(frame.image.x) * frame.image.y;
     const std::vector<BufferPlan> plan = planSceneBuffers(tables, bvh, nodeBytes(nodes), pixels);
     checkSceneBuffers(context.limits(), plan);
@@ -91,9 +94,7 @@ GpuScene::GpuScene(const Context& context, Transfers& transfers, const KernelLay
     upload(gpu::BINDING_LIGHTS, tables.lights);
     upload(gpu::BINDING_TEXTURES, tables.textures);
     upload(gpu::BINDING_TEXELS, tables.texels);
-    gpu::FrameParams params = frame;
-    params.world = nodes.world;  // which nodes and primitives the kernel walks as the world (node_packing.h)
-    upload(gpu::BINDING_FRAME, std::vector<gpu::FrameParams>{params});
+    upload(gpu::BINDING_FRAME, std::vector<gpu::FrameParams>{frame});
     transfers.zero(buffers_[gpu::BINDING_ACCUM]);
     transfers.zero(buffers_[gpu::BINDING_STATUS]);
 

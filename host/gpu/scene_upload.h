@@ -1,6 +1,7 @@
-// One render's device data: every table of device_host.h uploaded into its buffer, the
-// accumulation and status buffers, and the descriptor set binding them all. Every buffer is
-// checked against the device limits before anything is allocated.
+// One render's device data: the prepared scene's arrays and the render's frame (kernel_inputs.h)
+// uploaded into the buffers of device_host.h's bindings, the accumulation and status buffers, and
+// the descriptor set binding them all. Every buffer is checked against the device limits before
+// anything is allocated.
 #pragma once
 
 #include <cstdint>
@@ -12,12 +13,10 @@
 #include <vulkan/vulkan_raii.hpp>
 
 #include "buffer.h"
-#include "bvh.h"
 #include "compute_pipeline.h"
 #include "context.h"
 #include "device_limits.h"
-#include "node_packing.h"
-#include "scene_tables.h"
+#include "kernel_inputs.h"
 
 namespace vkrt {
 
@@ -38,11 +37,10 @@ std::vector<BufferPlan> planSceneBuffers(const SceneTables& tables, const bvh::S
 // Throws DeviceLimitExceeded for the first buffer over a limit, or when all together exceed the heap.
 void checkSceneBuffers(const BufferLimits& limits, const std::vector<BufferPlan>& plan);
 
-class GpuScene {
+class SceneUpload {
 public:
-    // nodes: bvh's nodes as the kernel reads them (gpuNodes, node_packing.h).
-    GpuScene(const Context& context, Transfers& transfers, const KernelLayout& layout, const SceneTables& tables,
-             const bvh::SceneBvh& bvh, const GpuNodes& nodes, const gpu::FrameParams& frame);
+    SceneUpload(const Context& context, Transfers& transfers, const KernelLayout& layout, const GpuSceneData& data,
+                const gpu::FrameParams& frame);
 
     vk::DescriptorSet descriptorSet() const { return *set_; }
     const Buffer& accum() const { return buffers_[gpu::BINDING_ACCUM]; }

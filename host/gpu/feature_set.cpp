@@ -34,11 +34,26 @@ std::set<int> usedShaders(const Scene& scene) {
     return used;
 }
 
+// Which primitive kinds the BVH holds and whether it has a top level to walk.
+FeatureSet geometryFeatures(const bvh::SceneBvh& bvh, bool packedNodes) {
+    FeatureSet f;
+    f.triangles = f.spheres = f.boxes = false;
+    for (const gpu::Primitive& p : bvh.prims) {
+        const std::uint32_t kind = p.a.w & gpu::PRIM_KIND_MASK;
+        f.triangles |= kind == gpu::PRIM_KIND_TRIANGLE;
+        f.spheres |= kind == gpu::PRIM_KIND_SPHERE;
+        f.boxes |= kind == gpu::PRIM_KIND_BOX;
+    }
+    f.instances = needsTopLevel(bvh);
+    f.packedNodes = packedNodes;
+    return f;
+}
+
 }  // namespace
 
 bool needsTopLevel(const bvh::SceneBvh& bvh) { return !(bvh.instances.size() == 1 && bvh::isIdentity(bvh.instances[0])); }
 
-std::array<std::uint32_t, gpu::SPEC_COUNT> FeatureSet::specializationValues() const {
+std::array<std::uint32_t, gpu::SPEC_COUNT> FeatureSet::specializationValues(std::uint32_t samplesPerDispatch) const {
     std::array<std::uint32_t, gpu::SPEC_COUNT> v{};
     v[gpu::SPEC_HAS_TRIANGLES] = triangles;
     v[gpu::SPEC_HAS_SPHERES] = spheres;
@@ -83,16 +98,8 @@ std::string FeatureSet::describe() const {
     return s;
 }
 
-FeatureSet deriveFeatureSet(const Scene& scene, const SceneAccel& accel, const RenderOptions& options) {
-    FeatureSet f;
-    f.triangles = f.spheres = f.boxes = false;
-    for (const gpu::Primitive& p : accel.bvh.prims) {
-        const std::uint32_t kind = p.a.w & gpu::PRIM_KIND_MASK;
-        f.triangles |= kind == gpu::PRIM_KIND_TRIANGLE;
-        f.spheres |= kind == gpu::PRIM_KIND_SPHERE;
-        f.boxes |= kind == gpu::PRIM_KIND_BOX;
-    }
-    f.instances = needsTopLevel(accel.bvh);
+FeatureSet deriveFeatureSet(const Scene& scene, const SceneAccel& accel, const RenderOptions& options, bool packedNodes) {
+    FeatureSet f = geometryFeatures(accel.bvh, packedNodes);
     f.areaLights = std::any_of(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.type == LightType::Area; });
 
     f.specular = f.reflection = f.gloss = f.dielectric = f.textures = f.coolToWarm = false;
@@ -110,16 +117,24 @@ FeatureSet deriveFeatureSet(const Scene& scene, const SceneAccel& accel, const R
     f.maxDepth = (f.reflection || f.dielectric) ? static_cast<std::uint32_t>(std::max(options.maxDepth, 0)) : 0u;
     f.pathStackSize = scenePathStack(f, options);
     // The one sampler the render uses: sample2D's other samplers would run too (every path runs
-    // on lavapipe). 400x400x16 renders, 4 alternating pairs: threeEggs_SoftShadows 0.610 -> 0.562 s,
-    // test_oneBox_00 0.177 -> 0.165 s (host/vulkan/README.md).
+    // on lavapipe; host/gpu/README.md).
     f.sampler = static_cast<std::uint32_t>(options.sampler);
     return f;
 }
 
-FeatureSet generalFeatureSet(const RenderOptions& options) {
+FeatureSet generalFeatureSet(const RenderOptions& options, bool packedNodes) {
     FeatureSet f;  // every flag defaults to on
+    f.packedNodes = packedNodes;
     f.maxDepth = static_cast<std::uint32_t>(std::max(options.maxDepth, 0));
     f.pathStackSize = pathStack(f.maxDepth, options);
+    return f;
+}
+
+FeatureSet traversalFeatureSet(const bvh::SceneBvh& bvh, bool packedNodes) {
+    FeatureSet f = geometryFeatures(bvh, packedNodes);
+    f.areaLights = f.specular = f.reflection = f.gloss = f.dielectric = f.textures = f.coolToWarm = false;
+    f.maxDepth = 0;
+    f.pathStackSize = 1;
     return f;
 }
 

@@ -3,7 +3,7 @@
 #include <sstream>
 #include <string>
 
-#include "vulkan_errors.h"
+#include "kernel_error.h"
 
 namespace vkrt {
 

@@ -29,17 +29,16 @@ struct FeatureSet {
     std::uint32_t maxDepth = 4;        // 0 when nothing reflects or refracts, else options.maxDepth
     std::uint32_t pathStackSize = 5;   // pending rays: maxDepth + glossSamples (integrator.glsl); 0 when
                                        // nothing pushes (no dielectric, no gloss fan-out): no stack code
-    bool packedNodes = true;           // the BVH nodes' layout, not a feature: set from the upload's
-                                       // GpuNodes::packed (node_packing.h) before choosing a kernel
+    bool packedNodes = true;           // the BVH nodes' layout (GpuNodes::packed, node_packing.h)
     std::uint32_t sampler = gpu::SAMPLER_FROM_FRAME;  // the render's SamplerKind, compiled in; the
                                                       // general kernel reads it from the frame
-    std::uint32_t samplesPerDispatch = 1;  // not a feature: the render's k (sample_batching.h), set by the
-                                           // renderer; 1 compiles render.comp without its sample loop
 
     auto operator<=>(const FeatureSet&) const = default;
 
-    // Values indexed by SPEC_* id.
-    std::array<std::uint32_t, gpu::SPEC_COUNT> specializationValues() const;
+    // Values indexed by SPEC_* id. samplesPerDispatch is the render's k (sample_batching.h): not a
+    // feature of the scene, but a constant of the same kernel; 1 compiles render.comp without its
+    // sample loop.
+    std::array<std::uint32_t, gpu::SPEC_COUNT> specializationValues(std::uint32_t samplesPerDispatch = 1) const;
     // "triangles spheres area-lights reflection sampler=jittered depth=4 stack=5", for logs and
     // benchmark tables (no sampler= when the kernel reads it from the frame).
     std::string describe() const;
@@ -50,11 +49,15 @@ struct FeatureSet {
 // which skips the per-ray instance transform and the top-level nodes.
 bool needsTopLevel(const bvh::SceneBvh& bvh);
 
-// The features the scene's shapes, instances, shaders and lights actually use.
-FeatureSet deriveFeatureSet(const Scene& scene, const SceneAccel& accel, const RenderOptions& options);
+// The features the scene's shapes, instances, shaders and lights actually use; packedNodes is the
+// layout the nodes go up in (GpuNodes::packed).
+FeatureSet deriveFeatureSet(const Scene& scene, const SceneAccel& accel, const RenderOptions& options, bool packedNodes);
 
 // Every feature on (the general kernel of the specialisation benchmark), at the depth and
 // gloss-sample count of `options`; the sampler is read from the frame.
-FeatureSet generalFeatureSet(const RenderOptions& options);
+FeatureSet generalFeatureSet(const RenderOptions& options, bool packedNodes);
+
+// Traversal only (trace_rays.comp): primitive kinds and instancing from the BVH, no shading paths.
+FeatureSet traversalFeatureSet(const bvh::SceneBvh& bvh, bool packedNodes);
 
 }  // namespace vkrt

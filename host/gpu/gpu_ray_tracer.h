@@ -13,7 +13,9 @@
 #include <vector>
 
 #include "bvh.h"
-#include "gpu_renderer.h"
+#include "device_host.h"
+#include "gpu_options.h"
+#include "validation_log.h"
 
 namespace vkrt {
 
@@ -26,7 +28,7 @@ struct GpuTraceStats {
 class GpuRayTracer {
 public:
     // Uploads the BVH (checked against the device limits and the kernel's traversal stack).
-    explicit GpuRayTracer(const bvh::SceneBvh& bvh, const GpuRendererOptions& options = {});
+    explicit GpuRayTracer(const bvh::SceneBvh& bvh, const GpuRendererOptions& options = {}, const GpuTestHooks& hooks = {});
     ~GpuRayTracer();
     GpuRayTracer(const GpuRayTracer&) = delete;
     GpuRayTracer& operator=(const GpuRayTracer&) = delete;

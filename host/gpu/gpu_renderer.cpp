@@ -7,18 +7,13 @@
 #include "commands.h"
 #include "compute_pipeline.h"
 #include "context.h"
-#include "feature_set.h"
-#include "frame_params.h"
-#include "gpu_scene.h"
 #include "kernel_cache.h"
+#include "kernel_layouts.h"
 #include "kernel_source.h"
-#include "node_packing.h"
 #include "progress.h"
 #include "render_status.h"
-#include "sample_batching.h"
-#include "scene_tables.h"
+#include "scene_upload.h"
 #include "submission_recorder.h"
-#include "traversal_stack.h"
 
 namespace vkrt {
 
@@ -28,22 +23,6 @@ using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-ContextOptions contextOptions(const GpuRendererOptions& o) {
-    ContextOptions c;
-    c.gpu = o.gpu;
-    c.validation = o.validation;
-    c.maxBufferBytes = o.maxBufferBytes;
-    c.forceStaging = o.forceStaging;
-    return c;
-}
-
-KernelSource kernelSource(const GpuRendererOptions& o) {
-    KernelSource k;
-    k.shaderDir = o.shaderDir;
-    k.spirv = o.kernelSpirv;
-    return k;
 }
 
 // Pixel = sum of its samples (accumulated in sample order on the device) / rpp, the same float
@@ -58,9 +37,9 @@ Image resolve(const std::vector<glm::vec4>& sums, int width, int height, int sam
 }  // namespace
 
 struct GpuRenderer::Impl {
-    explicit Impl(const GpuRendererOptions& options)
-        : context(contextOptions(options)), runner(context), transfers(context, runner), layout(renderLayout(context)),
-          kernels(context, layout, loadKernel(kernelSource(options))) {}
+    Impl(const GpuRendererOptions& options, const GpuTestHooks& hooks)
+        : context(contextOptions(options, hooks)), runner(context), transfers(context, runner), layout(renderLayout(context)),
+          kernels(context, layout, loadKernel(kernelSource("render", options, hooks))) {}
 
     Context context;
     CommandRunner runner;
@@ -69,38 +48,28 @@ struct GpuRenderer::Impl {
     KernelCache kernels;
 };
 
-GpuRenderer::GpuRenderer(const GpuRendererOptions& options) : impl_(std::make_unique<Impl>(options)) {}
+GpuRenderer::GpuRenderer(const GpuRendererOptions& options, const GpuTestHooks& hooks)
+    : impl_(std::make_unique<Impl>(options, hooks)) {}
 GpuRenderer::~GpuRenderer() = default;
 
 std::string GpuRenderer::deviceName() const { return impl_->context.info().name; }
 std::shared_ptr<const ValidationLog> GpuRenderer::validationLog() const { return impl_->context.validationLog(); }
 std::size_t GpuRenderer::pipelineCount() const { return impl_->kernels.size(); }
 
-Image GpuRenderer::render(const Scene& scene, const SceneAccel& accel, const RenderOptions& options, GpuRenderStats* statsOut,
+Image GpuRenderer::render(const GpuSceneData& data, const RenderOptions& options, GpuRenderStats* statsOut,
                           const GpuRenderSettings& settings) {
     GpuRenderStats stats;
     stats.device = impl_->context.info().name;
-    const gpu::FrameParams frame = makeFrameParams(scene, accel, options);  // validates the options
-    const bool general = settings.variant == KernelVariant::General;
-    FeatureSet features = general ? generalFeatureSet(options) : deriveFeatureSet(scene, accel, options);
-    checkTraversalStack(accel.bvh, features.instances);
-    auto start = Clock::now();
-    const GpuNodes nodes = gpuNodes(accel.bvh);
-    features.packedNodes = nodes.packed;
-    stats.features = features.describe();
-    stats.generalKernel = general;
-    const double packSeconds = secondsSince(start);
-
-    const auto samples = static_cast<std::uint32_t>(options.samplesPerPixel);
-    const SampleBatching batching{samples, samplesPerDispatch(sampleLoopBound(scene, accel.bvh, features, options), samples,
-                                                              settings.samplesPerDispatch)};
-    features.samplesPerDispatch = batching.perDispatch;
+    const KernelInputs in = makeKernelInputs(data, options, settings.variant, settings.samplesPerDispatch);
+    const SampleBatching& batching = in.batching;
+    stats.features = in.features.describe();
+    stats.generalKernel = settings.variant == KernelVariant::General;
     stats.samplesPerDispatch = batching.perDispatch;
-    const vk::raii::Pipeline& pipeline = impl_->kernels.pipeline(features, &stats.pipelineSeconds);
+    const vk::raii::Pipeline& pipeline = impl_->kernels.pipeline(in.features, batching.perDispatch, &stats.pipelineSeconds);
 
-    start = Clock::now();
-    const GpuScene gpuScene(impl_->context, impl_->transfers, impl_->layout, buildSceneTables(scene, accel), accel.bvh, nodes, frame);
-    stats.uploadSeconds = packSeconds + secondsSince(start);
+    auto start = Clock::now();
+    const SceneUpload gpuScene(impl_->context, impl_->transfers, impl_->layout, data, in.frame);
+    stats.uploadSeconds = secondsSince(start);
     stats.sceneBytes = gpuScene.bytes();
 
     stats.warmUpSeconds = impl_->runner.run([&](const vk::raii::CommandBuffer& commands) {
@@ -139,12 +108,6 @@ Image GpuRenderer::render(const Scene& scene, const SceneAccel& accel, const Ren
     stats.readbackSeconds = secondsSince(start);
     if (statsOut) *statsOut = stats;
     return image;
-}
-
-Image renderGpu(const Scene& scene, const SceneAccel& accel, const RenderOptions& options, GpuRenderStats* stats,
-                const GpuRendererOptions& gpu) {
-    GpuRenderer renderer(gpu);
-    return renderer.render(scene, accel, options, stats);
 }
 
 }  // namespace vkrt
