@@ -12,10 +12,6 @@
 
 namespace vkrt {
 
-// PassParams for `count` samples from `firstSample` over `tile` (device_host.h; render.comp's
-// block mapping).
-gpu::PassParams passParams(const TileRect& tile, std::uint32_t firstSample, std::uint32_t count = 1);
-
 // One workgroup over an empty tile: computes nothing, but lavapipe JIT-compiles the pipeline for
 // the bound resources at its first dispatch, so this keeps compile time out of the first
 // measured submission.

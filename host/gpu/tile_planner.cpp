@@ -102,4 +102,12 @@ std::uint32_t interleaveStride(std::uint32_t workgroups) {
     return stride;
 }
 
+gpu::PassParams passParams(const TileRect& tile, std::uint32_t firstSample, std::uint32_t count) {
+    const std::uint32_t workgroups = tile.workgroups();
+    gpu::PassParams p{};
+    p.tile = glm::uvec4(tile.x, tile.y, tile.width, tile.height);
+    p.pass = glm::uvec4(firstSample, interleaveStride(workgroups), workgroups, count);
+    return p;
+}
+
 }  // namespace vkrt

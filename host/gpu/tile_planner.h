@@ -18,6 +18,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "device_host.h"
+
 namespace vkrt {
 
 struct TileRect {
@@ -87,5 +89,9 @@ std::vector<TileRect> planTiles(std::uint32_t width, std::uint32_t height, const
 // consecutive workgroups - a submission, or what lavapipe hands one thread - is spread evenly
 // over the tile.
 std::uint32_t interleaveStride(std::uint32_t workgroups);
+
+// PassParams for `count` samples from `firstSample` over `tile` (device_host.h; render.comp's
+// block mapping).
+gpu::PassParams passParams(const TileRect& tile, std::uint32_t firstSample, std::uint32_t count = 1);
 
 }  // namespace vkrt

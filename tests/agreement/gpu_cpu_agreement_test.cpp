@@ -20,12 +20,10 @@
 #include <gtest/gtest.h>
 
 #include "cpu_renderer.h"
-#include "gpu_build_options.h"
 #include "gpu_renderer.h"
 #include "image.h"
 #include "image_compare.h"
 #include "node_packing.h"
-#include "scene_accel.h"
 #include "test_paths.h"
 #include "xml_loader.h"
 
@@ -61,15 +59,15 @@ Agreement renderBothAndCompare(const std::string& path, RenderOptions options,
                                KernelVariant variant = KernelVariant::Specialised) {
     Diagnostics diagnostics;
     const Scene scene = loadScene(path, LoadOptions{}, diagnostics);
-    // Each device renders from the tree `vkrt` builds for it (gpu_build_options.h): the trees differ.
-    const SceneAccel cpuAccel = buildSceneAccel(scene);
-    const SceneAccel gpuAccel = buildSceneAccel(scene, gpuBuildOptions());
+    // Each device renders from the scene it prepares itself, as `vkrt` does: the trees differ.
+    const SceneAccel cpuAccel = prepareCpuScene(scene);
+    const GpuSceneData gpuData = GpuRenderer::prepare(scene);
     options.quiet = true;
     RenderStats cpuStats;
     GpuRenderStats gpuStats;
     const Image cpu = renderCpu(scene, cpuAccel, options, &cpuStats);
     const std::size_t messagesBefore = gpu().validationLog()->count();
-    const Image gpuImage = gpu().render(scene, gpuAccel, options, &gpuStats, {.variant = variant, .tiling = {}});
+    const Image gpuImage = gpu().render(gpuData, options, &gpuStats, {.variant = variant, .tiling = {}});
     EXPECT_EQ(gpu().validationLog()->count(), messagesBefore) << gpu().validationLog()->joined();
     EXPECT_EQ(cpuStats.nonFiniteSamples, 0u);
     EXPECT_EQ(gpuStats.nonFiniteSamples, 0u);
@@ -129,7 +127,7 @@ TEST(GpuCpuAgreement, UpstreamScenesWithLooseShapesAndInstancesWalkTheirWorldInl
         for (const Shape& shape : scene.shapes) loose |= shape.type != ShapeType::Mesh;
         if (!loose || scene.instances.empty()) continue;
         ++mixed;
-        EXPECT_TRUE(inlinedWorld(buildSceneAccel(scene, gpuBuildOptions()).bvh).inlined) << path;
+        EXPECT_TRUE(inlinedWorld(GpuRenderer::prepare(scene).accel.bvh).inlined) << path;
     }
     EXPECT_EQ(mixed, 13);
 }

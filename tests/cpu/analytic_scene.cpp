@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "sampling.h"
+#include "cpu_renderer.h"
 #include "scene_accel.h"
 
 namespace vkrt::test {
@@ -86,7 +87,7 @@ int addShader(Scene& scene, const Shader& shader) {
 }
 
 Image renderChecked(const Scene& scene, const RenderOptions& options, RenderStats* stats) {
-    const SceneAccel accel = buildSceneAccel(scene);
+    const SceneAccel accel = prepareCpuScene(scene);
     RenderStats local;
     RenderOptions quiet = options;
     quiet.quiet = true;

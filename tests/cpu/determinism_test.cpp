@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "analytic_scene.h"
+#include "cpu_renderer.h"
 #include "scene_accel.h"
 
 namespace vkrt::test {
@@ -128,7 +129,7 @@ TEST(Determinism, SeedChangesTheNoiseOnly) {
 
 TEST(Determinism, CancelThrows) {
     const Scene scene = everything();
-    const SceneAccel accel = buildSceneAccel(scene);
+    const SceneAccel accel = prepareCpuScene(scene);
     std::atomic<bool> cancel{true};
     RenderOptions o = everythingOptions(2);
     o.quiet = true;
@@ -138,7 +139,7 @@ TEST(Determinism, CancelThrows) {
 
 TEST(Determinism, BadOptionsAreRejectedWithTheirValue) {
     const Scene scene = everything();
-    const SceneAccel accel = buildSceneAccel(scene);
+    const SceneAccel accel = prepareCpuScene(scene);
     auto expectError = [&](RenderOptions o, const std::string& fragment) {
         o.quiet = true;
         try {

@@ -8,21 +8,19 @@
 
 #include <gtest/gtest.h>
 
-#include "gpu_build_options.h"
 #include "gpu_environment.h"
 #include "image_compare.h"
-#include "scene_accel.h"
 #include "test_paths.h"
 
 namespace vkrt::stability {
 
 BothImages renderBoth(const Scene& scene, const RenderOptions& options) {
     BothImages out;
-    out.cpu = renderCpu(scene, buildSceneAccel(scene), options, &out.cpuStats);
+    out.cpu = renderCpu(scene, prepareCpuScene(scene), options, &out.cpuStats);
     GpuRenderer& gpu = sharedGpu();
     const std::size_t messagesBefore = gpu.validationLog()->count();
-    // The tree `vkrt` builds for a GPU render (gpu_build_options.h), not the CPU's.
-    out.gpu = gpu.render(scene, buildSceneAccel(scene, gpuBuildOptions()), options, &out.gpuStats);
+    // Each device from the scene it prepares itself, as `vkrt` renders it.
+    out.gpu = gpu.render(GpuRenderer::prepare(scene), options, &out.gpuStats);
     EXPECT_EQ(out.cpuStats.nonFiniteSamples, 0u) << "CPU samples replaced by black (NaN/Inf radiance)";
     EXPECT_EQ(out.gpuStats.nonFiniteSamples, 0u) << "GPU samples replaced by black (NaN/Inf radiance)";
     EXPECT_EQ(countNonFinite(out.cpu), 0u) << "non-finite pixels in the CPU image";

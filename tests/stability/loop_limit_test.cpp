@@ -101,15 +101,14 @@ TEST(LoopLimit, ManyLightsBelowTheLimitAgreeWithTheCpu) {
 
 TEST(LoopLimit, ALoopCutOffIsAnErrorNeverAWrongImage) {
     const Scene scene = manyLights(3000);
-    const SceneAccel accel = buildSceneAccel(scene);
     const RenderOptions options = smallOptions(32, 32, 1);
     GpuRenderer& gpu = sharedGpu();
     const bool limiter = hasMesaLoopLimiter(gpu.deviceName());
     std::printf("device '%s': Mesa loop limiter %s\n", gpu.deviceName().c_str(), limiter ? "expected" : "not expected");
     try {
-        const Image image = gpu.render(scene, accel, options);
+        const Image image = gpu.render(GpuRenderer::prepare(scene), options);
         EXPECT_FALSE(limiter) << "lavapipe's limiter cuts this scene's loops off, yet the kernel reported nothing";
-        const Distance d = distance(renderCpu(scene, accel, options), image);
+        const Distance d = distance(renderCpu(scene, prepareCpuScene(scene), options), image);
         EXPECT_TRUE(agrees(d)) << "the GPU image is wrong without an error: " << d.describe();
     } catch (const GpuKernelError& e) {
         const std::string message = e.what();

@@ -30,7 +30,8 @@ TEST(GpuAgreement, EverySamplerMatchesTheCpuReference) {
     for (const Config& config : {Config{"soft_shadows", 1, 1}, Config{"glossy", 1, 1}, Config{"glossy", 3, 2},
                                  Config{"soft_shadows", 2, 1}}) {
         const Scene scene = exampleScene(config.scene);
-        const SceneAccel accel = buildSceneAccel(scene);
+        const SceneAccel cpuAccel = prepareCpuScene(scene);
+        const GpuSceneData gpuData = GpuRenderer::prepare(scene);
         Image previous;
         for (SamplerKind sampler : {SamplerKind::Jittered, SamplerKind::Regular, SamplerKind::Random, SamplerKind::Sobol}) {
             RenderOptions o;
@@ -43,8 +44,8 @@ TEST(GpuAgreement, EverySamplerMatchesTheCpuReference) {
             o.seed = 11;
             o.camera = scene.defaultCamera;
             o.quiet = true;
-            const Image onGpu = gpu.render(scene, accel, o);
-            const Image onCpu = renderCpu(scene, accel, o);
+            const Image onGpu = gpu.render(gpuData, o);
+            const Image onCpu = renderCpu(scene, cpuAccel, o);
             const ImageDifference d = compareImages(onGpu, onCpu);
             const std::string what = std::string(config.scene) + " k=" + std::to_string(config.lightSamples) +
                                      " g=" + std::to_string(config.glossSamples) + " " + study::samplerName(sampler);

@@ -6,7 +6,7 @@
 
 namespace vkrt::test {
 
-PixelStudy::PixelStudy(const PixelScene& scene) : scene_(scene), accel_(buildSceneAccel(scene.scene)) {}
+PixelStudy::PixelStudy(const PixelScene& scene) : scene_(scene), accel_(prepareCpuScene(scene.scene)) {}
 
 glm::dvec3 PixelStudy::render(SamplerKind sampler, int rpp, std::uint32_t seed) const {
     RenderOptions o;

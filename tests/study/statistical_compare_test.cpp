@@ -37,8 +37,8 @@ RenderOptions smallOptions(const Scene& scene, SamplerKind sampler, int rpp, std
 // pixel failed at |z| = 8 in a 32x24 image with soft_shadows and sobol. The pass fraction is what
 // absorbs those few; the image must be large enough for it to.
 study::ZTestResult compareWithReference(const Scene& test, const Scene& reference, SamplerKind sampler) {
-    const SceneAccel testAccel = buildSceneAccel(test);
-    const SceneAccel referenceAccel = buildSceneAccel(reference);
+    const SceneAccel testAccel = prepareCpuScene(test);
+    const SceneAccel referenceAccel = prepareCpuScene(reference);
     Image variance;
     const Image ref = renderCpu(reference, referenceAccel, smallOptions(reference, sampler, 512, 2), nullptr, &variance);
     const Image image = renderCpu(test, testAccel, smallOptions(test, sampler, 16, 1));
@@ -75,10 +75,10 @@ TEST(StatisticalCompare, GpuAgreesWithTheCpuReferenceUpToNoise) {
     study::StudyRenderer renderer(GpuRendererOptions{.validation = true});
     for (const char* name : {"soft_shadows", "glossy"}) {
         const Scene scene = exampleScene(name);
-        const SceneAccel accel = buildSceneAccel(scene);
+        const study::PreparedScene prepared = renderer.prepare(scene);
         for (SamplerKind sampler : {SamplerKind::Jittered, SamplerKind::Sobol}) {
             const study::StatisticalComparison c =
-                study::compareDevicesStatistically(renderer, scene, accel, smallOptions(scene, sampler, 16, 3, 32, 24));
+                study::compareDevicesStatistically(renderer, prepared, smallOptions(scene, sampler, 16, 3, 32, 24));
             EXPECT_NE(c.gpuSeed, c.cpuSeed);
             EXPECT_EQ(c.cpuRpp, 256);
             EXPECT_TRUE(c.test.pass) << name << ", " << study::samplerName(sampler) << ": "

@@ -14,6 +14,7 @@
 
 #include "reference_cache.h"
 #include "region_masks.h"
+#include "cpu_renderer.h"
 #include "scene_accel.h"
 #include "study_scenes.h"
 #include "sweep.h"
@@ -175,13 +176,13 @@ RenderOptions onePixel() {
 
 TEST(RegionMasks, FindEdgesPenumbraeAndGloss) {
     const PixelScene edge = edgePixelScene();
-    const study::RegionMasks e = study::findRegions(edge.scene, buildSceneAccel(edge.scene), onePixel());
+    const study::RegionMasks e = study::findRegions(edge.scene, prepareCpuScene(edge.scene), onePixel());
     EXPECT_EQ(e.edge[0], 1);
     EXPECT_EQ(e.penumbra[0], 0);
     EXPECT_EQ(e.gloss[0], 0);
 
     const PixelScene penumbra = penumbraPixelScene();
-    const study::RegionMasks p = study::findRegions(penumbra.scene, buildSceneAccel(penumbra.scene), onePixel());
+    const study::RegionMasks p = study::findRegions(penumbra.scene, prepareCpuScene(penumbra.scene), onePixel());
     EXPECT_EQ(p.edge[0], 0);
     EXPECT_EQ(p.penumbra[0], 1);
 
@@ -190,13 +191,13 @@ TEST(RegionMasks, FindEdgesPenumbraeAndGloss) {
     o.width = 40;
     o.height = 30;
     const Scene soft = exampleScene("soft_shadows");
-    const study::RegionMasks s = study::findRegions(soft, buildSceneAccel(soft), o);
+    const study::RegionMasks s = study::findRegions(soft, prepareCpuScene(soft), o);
     EXPECT_EQ(study::countPixels(s.gloss), 0u);
     EXPECT_GT(study::countPixels(s.penumbra), 0u);
     EXPECT_GT(study::countPixels(s.edge), 0u);
     EXPECT_EQ(s.edge[0], 0) << "the top-left pixel sees only background";
     const Scene glossy = exampleScene("glossy");
-    const study::RegionMasks g = study::findRegions(glossy, buildSceneAccel(glossy), o);
+    const study::RegionMasks g = study::findRegions(glossy, prepareCpuScene(glossy), o);
     EXPECT_GT(study::countPixels(g.gloss), 0u);
     EXPECT_LT(study::countPixels(g.gloss), g.gloss.size() / 2);
 

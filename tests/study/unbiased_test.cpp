@@ -55,7 +55,7 @@ struct ImageCheck {
 
 // The mean of `seeds` CPU renders at `rpp` against a 1024-rpp sobol reference (other seeds).
 ImageCheck meanAgainstReference(const Scene& scene, SamplerKind sampler, int rpp, int seeds) {
-    const SceneAccel accel = buildSceneAccel(scene);
+    const SceneAccel accel = prepareCpuScene(scene);
     RenderOptions o;
     o.width = 32;
     o.height = 24;

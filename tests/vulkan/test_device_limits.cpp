@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "device_limits.h"
-#include "gpu_scene.h"
+#include "scene_upload.h"
 #include "traversal_stack.h"
 #include "vulkan_errors.h"
 #include "vulkan_test_support.h"
@@ -117,10 +117,10 @@ TEST_F(VulkanTest, RendererAcceptsASceneAtTheLimitAndRefusesOneOver) {
     const std::uint64_t fits = stableTexelBufferBytes(64 * 64 * 16);
     const std::uint64_t over = stableTexelBufferBytes(64 * 65 * 16);
     ASSERT_GT(over, fits);
-    GpuRenderer& gpu = renderer({.kernelSpirv = test::testKernel("camera_rays"), .maxBufferBytes = fits});
-    EXPECT_NO_THROW(gpu.render(tiny.scene, tiny.accel, test::smallRender(64, 64, 1)));
+    GpuRenderer& gpu = renderer({}, {.kernelSpirv = test::testKernel("camera_rays"), .maxBufferBytes = fits});
+    EXPECT_NO_THROW(gpu.render(tiny.gpu(), test::smallRender(64, 64, 1)));
     try {
-        gpu.render(tiny.scene, tiny.accel, test::smallRender(64, 65, 1));
+        gpu.render(tiny.gpu(), test::smallRender(64, 65, 1));
         FAIL() << "a " << over << "-byte accumulation buffer passed a " << fits << "-byte limit";
     } catch (const DeviceLimitExceeded& e) {
         const std::string m = e.what();

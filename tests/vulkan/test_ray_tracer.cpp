@@ -275,7 +275,7 @@ TEST_F(VulkanTest, RayTracerMatchesTheCpuWithTheWorldGroupInTheTopLevel) {
 
 TEST_F(VulkanTest, RayTracerSplitsLargeRayListsIntoBatches) {
     const bvh::SceneBvh scene = randomScene();
-    GpuRendererOptions options;
+    GpuTestHooks options;
     // Batches of 4096 rays, to keep the test quick. The hit buffer binds first: its view has one
     // R32UI texel per word and room for TRACE_HIT_WORDS_INSTANCED words per ray, and the cap allows
     // maxBytes / 16 texels per view (capLimits); 128 texels spare for the padding
@@ -319,10 +319,10 @@ TEST_F(VulkanTest, RayTracerReportsARayOverTheLoopBudget) {
 
 TEST(GpuRayTracer, RefusesABvhOverTheLimit) {
     const bvh::SceneBvh scene = randomScene();
-    GpuRendererOptions options;
+    GpuTestHooks options;
     options.maxBufferBytes = scene.nodes.size() * sizeof(gpu::GpuBvhNode) - 16;  // one texel short of the packed nodes
     try {
-        GpuRayTracer tracer(scene, options);
+        GpuRayTracer tracer(scene, {}, options);
         FAIL() << "accepted";
     } catch (const DeviceLimitExceeded& e) {
         EXPECT_NE(std::string(e.what()).find("BVH nodes"), std::string::npos) << e.what();

@@ -54,10 +54,10 @@ TEST(RenderStatus, StackOverflowWithoutARecordedPixel) {
 // status_probe.comp flags pixel (5, 3) at sample 1: the render must stop with that pixel named.
 TEST_F(VulkanTest, KernelFailureStopsTheRenderWithPixelAndSample) {
     TinyScene tiny;
-    GpuRenderer& gpu = renderer({.kernelSpirv = test::testKernel("status_probe")});
+    GpuRenderer& gpu = renderer({}, {.kernelSpirv = test::testKernel("status_probe")});
     const RenderOptions options = test::smallRender(16, 16, 3);
     try {
-        gpu.render(tiny.scene, tiny.accel, options);
+        gpu.render(tiny.gpu(), options);
         FAIL() << "the kernel's failure was ignored";
     } catch (const GpuKernelError& e) {
         EXPECT_NE(std::string(e.what()).find("pixel (5, 3), sample 1"), std::string::npos) << e.what();
@@ -65,7 +65,7 @@ TEST_F(VulkanTest, KernelFailureStopsTheRenderWithPixelAndSample) {
     }
     tiny.scene.shaders[0].roughness = 0.5f;  // HAS_GLOSS: the probe reports a stack overflow instead
     try {
-        gpu.render(tiny.scene, tiny.accel, options);
+        gpu.render(tiny.gpu(), options);
         FAIL() << "the kernel's failure was ignored";
     } catch (const GpuKernelError& e) {
         EXPECT_NE(std::string(e.what()).find("stack overflowed"), std::string::npos) << e.what();
@@ -81,7 +81,7 @@ TEST_F(VulkanTest, RenderKernelShadesTheTinySphere) {
     GpuRenderer& gpu = renderer();
     GpuRenderStats stats;
     const RenderOptions options = test::smallRender(33, 33, 4);  // odd: pixel 16 is centred
-    const Image image = gpu.render(tiny.scene, tiny.accel, options, &stats);
+    const Image image = gpu.render(tiny.gpu(), options, &stats);
     std::cout << "render kernel: features '" << stats.features << "', pipeline " << stats.pipelineSeconds << " s, "
               << stats.submissions << " submissions\n";
     const float lambert = 0.5f * 2.0f / std::sqrt(24.0f);

@@ -133,8 +133,8 @@ TEST_F(VulkanTest, ShaderDirKernelRendersLikeTheEmbeddedOne) {
     dir.copy(kShaders / "shared" / "sampling.h", "shared/sampling.h");
     test::TinyScene tiny;
     const RenderOptions options = test::smallRender(20, 12, 2);
-    const Image fromDir = renderer({.shaderDir = dir.path()}).render(tiny.scene, tiny.accel, options);
-    const Image embedded = renderer({.kernelSpirv = test::testKernel("camera_rays")}).render(tiny.scene, tiny.accel, options);
+    const Image fromDir = renderer({.shaderDir = dir.path()}).render(tiny.gpu(), options);
+    const Image embedded = renderer({}, {.kernelSpirv = test::testKernel("camera_rays")}).render(tiny.gpu(), options);
     EXPECT_EQ(fromDir.pixels, embedded.pixels);
     EXPECT_NE(fromDir.pixels[0], fromDir.pixels[1]);
 }

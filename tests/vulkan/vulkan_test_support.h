@@ -1,5 +1,5 @@
-// What the Vulkan tests share: validated devices whose every validation message fails the test,
-// a tiny scene that needs no BVH builder, and the options of small renders.
+// What the Vulkan tests share: validated devices whose every validation message fails the test
+// (the tiny scene and small-render options are tests/gpu/tiny_scene.h).
 #pragma once
 
 #include <memory>
@@ -11,10 +11,8 @@
 #include "context.h"
 #include "gpu_ray_tracer.h"
 #include "gpu_renderer.h"
-#include "render_options.h"
-#include "scene.h"
-#include "scene_accel.h"
 #include "test_kernels.h"
+#include "tiny_scene.h"
 #include "validation_log.h"
 
 namespace vkrt::test {
@@ -25,10 +23,10 @@ namespace vkrt::test {
 class VulkanTest : public ::testing::Test {
 protected:
     Context& context(const ContextOptions& options = {});
-    GpuRenderer& renderer(GpuRendererOptions options = {});
+    GpuRenderer& renderer(GpuRendererOptions options = {}, const GpuTestHooks& hooks = {});
     // A ray tracer over `scene` with validation on, its log watched; one per test (a second call
     // replaces the first).
-    GpuRayTracer& rayTracer(const bvh::SceneBvh& scene, GpuRendererOptions options = {});
+    GpuRayTracer& rayTracer(const bvh::SceneBvh& scene, const GpuTestHooks& hooks = {});
     // Checks this log too in TearDown (objects the test owns itself must be gone by then).
     void watch(std::shared_ptr<const ValidationLog> log) { logs_.push_back(std::move(log)); }
     void TearDown() override;
@@ -39,18 +37,5 @@ private:
     std::unique_ptr<GpuRayTracer> rayTracer_;
     std::vector<std::shared_ptr<const ValidationLog>> logs_;
 };
-
-// A scene with one camera, one sphere, one point light and one Lambertian shader, and its
-// acceleration structure built by hand (one bottom-level node, one identity instance, one
-// top-level node). Not movable: the accel points into the scene.
-struct TinyScene {
-    Scene scene;
-    SceneAccel accel;
-    TinyScene();
-    TinyScene(const TinyScene&) = delete;
-    TinyScene& operator=(const TinyScene&) = delete;
-};
-
-RenderOptions smallRender(int width, int height, int samples);
 
 }  // namespace vkrt::test

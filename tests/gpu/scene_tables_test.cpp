@@ -6,7 +6,7 @@
 #include "frame_params.h"
 #include "sampling.h"
 #include "scene_tables.h"
-#include "vulkan_test_support.h"
+#include "tiny_scene.h"
 
 namespace vkrt {
 namespace {
