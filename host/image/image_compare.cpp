@@ -4,14 +4,19 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace vkrt {
 
-ImageDifference compareImages(const Image& a, const Image& b) {
+void requireSameSize(const Image& a, const Image& b, const char* what) {
     if (a.width != b.width || a.height != b.height)
-        throw std::invalid_argument("compareImages: sizes differ (" + std::to_string(a.width) + "x" +
+        throw std::invalid_argument(std::string(what) + ": images differ in size (" + std::to_string(a.width) + "x" +
                                     std::to_string(a.height) + " vs " + std::to_string(b.width) + "x" +
                                     std::to_string(b.height) + ")");
+}
+
+ImageDifference compareImages(const Image& a, const Image& b) {
+    requireSameSize(a, b, "compareImages");
     ImageDifference d;
     d.width = a.width;
     d.height = a.height;

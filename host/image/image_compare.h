@@ -17,6 +17,9 @@ struct ImageDifference {
     Image heatMap;                 // per pixel: max channel difference, black (0) .. red .. yellow (>= 16/255)
 };
 
+// Throws std::invalid_argument naming `what` and both sizes unless a and b have the same size.
+void requireSameSize(const Image& a, const Image& b, const char* what);
+
 // Compares the 8-bit quantised versions (quantize8) of two same-sized images.
 // Throws std::invalid_argument when the sizes differ.
 ImageDifference compareImages(const Image& a, const Image& b);

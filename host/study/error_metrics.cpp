@@ -5,16 +5,11 @@
 #include <stdexcept>
 #include <string>
 
+#include "image_compare.h"
+
 namespace vkrt::study {
 
 namespace {
-
-void requireSameSize(const Image& a, const Image& b, const char* what) {
-    if (a.width != b.width || a.height != b.height)
-        throw std::invalid_argument(std::string(what) + ": images differ in size (" + std::to_string(a.width) + "x" +
-                                    std::to_string(a.height) + " vs " + std::to_string(b.width) + "x" +
-                                    std::to_string(b.height) + ")");
-}
 
 void requireMaskSize(const Image& a, const PixelMask* mask, const char* what) {
     if (mask && mask->size() != a.pixels.size())

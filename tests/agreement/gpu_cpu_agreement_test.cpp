@@ -100,6 +100,7 @@ RenderOptions small(int size, int rpp) {
 // One test over all files rather than one per file: each ctest entry would start a process and a
 // validated Vulkan device, which costs more than the renders.
 TEST(GpuCpuAgreement, EveryUpstreamAndBundledSceneAt64x64) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     std::vector<std::string> paths = scenesIn(test::upstreamDir());
     ASSERT_EQ(paths.size(), 54u) << test::upstreamDir();
     const std::vector<std::string> ours = scenesIn(test::sourceDir() + "/scenes");
@@ -119,6 +120,7 @@ TEST(GpuCpuAgreement, EveryUpstreamAndBundledSceneAt64x64) {
 // upstream scene that has both loose shapes and instances: scene_accel.cpp builds each such scene
 // in the shape the inlining needs, and a change there would silently fall back to the instance step.
 TEST(GpuCpuAgreement, UpstreamScenesWithLooseShapesAndInstancesWalkTheirWorldInline) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     int mixed = 0;
     for (const std::string& path : scenesIn(test::upstreamDir())) {
         Diagnostics diagnostics;
@@ -137,6 +139,7 @@ TEST(GpuCpuAgreement, UpstreamScenesWithLooseShapesAndInstancesWalkTheirWorldInl
 // in a triangle scene) must not change the image. Smaller than the specialised test above: one
 // pipeline serves every scene, and the specialised kernels already cover each path that is used.
 TEST(GpuCpuAgreement, TheGeneralKernelOnEveryUpstreamAndBundledScene) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     std::vector<std::string> paths = scenesIn(test::upstreamDir());
     ASSERT_EQ(paths.size(), 54u) << test::upstreamDir();
     const std::vector<std::string> ours = scenesIn(test::sourceDir() + "/scenes");
@@ -155,6 +158,7 @@ TEST(GpuCpuAgreement, TheGeneralKernelOnEveryUpstreamAndBundledScene) {
 // than one reflected ray (the path stack, integrator.glsl) and an area light takes several
 // shadow rays per sample. A lost or repeated gloss ray changes every glossy reflection.
 TEST(GpuCpuAgreement, GlossAndLightSampleFanOut) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     RenderOptions options = small(128, 4);
     options.glossSamples = 4;
     options.lightSamples = 4;
@@ -166,6 +170,7 @@ TEST(GpuCpuAgreement, GlossAndLightSampleFanOut) {
 class GpuCpuAgreementLarge : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(GpuCpuAgreementLarge, At256x256With16Rpp) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     const std::string name = GetParam();
     const std::string path = name.rfind("scenes/", 0) == 0 ? test::sourceDir() + "/" + name : test::upstreamDir() + "/" + name;
     renderBothAndCompare(path, small(256, 16));

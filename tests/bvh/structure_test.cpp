@@ -256,6 +256,7 @@ TEST(Structure, OnePrimitive) {
 }
 
 TEST(Structure, RandomSoupsAndMeshes) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     std::mt19937 rng(11);
     buildAndCheck(singleGroup(randomTriangles(rng, 20000, 50.0f, 1.0f)));
     buildAndCheck(singleGroup(randomSpheresAndBoxes(rng, 3000, 50.0f, 2.0f)));

@@ -83,6 +83,7 @@ TEST(TraversalVsBruteForce, RandomTriangleSoups) {
 }
 
 TEST(TraversalVsBruteForce, UpstreamMeshes) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     const std::filesystem::path dir = vkrt::test::upstreamDir() + "/objFiles";
     ASSERT_TRUE(std::filesystem::is_directory(dir)) << dir;
     std::vector<std::filesystem::path> meshes;
@@ -139,6 +140,7 @@ std::vector<PrimitiveInput> xmlSpheresAndBoxes(const std::string& path) {
 }
 
 TEST(TraversalVsBruteForce, UpstreamSphereAndBoxScenes) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     std::mt19937 rng(4);
     for (const char* name : {"spheres_1K.xml", "boxSphereTest.xml"}) {
         SCOPED_TRACE(name);
@@ -150,6 +152,7 @@ TEST(TraversalVsBruteForce, UpstreamSphereAndBoxScenes) {
 
 // Groups placed by rotated, non-uniformly scaled and mirrored instances, plus the loose group.
 TEST(TraversalVsBruteForce, InstancedScenes) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     std::mt19937 rng(5);
     TestScene scene;
     scene.groups.push_back(randomSpheresAndBoxes(rng, 50, 30.0f, 2.0f));          // loose shapes

@@ -1,4 +1,4 @@
-// Helpers for the CPU reference tests: scenes built in code, a render that checks the basics
+// Helpers for the CPU reference tests (scenes are built with tests/common/scene_builder.h): a render that checks the basics
 // every image must satisfy, and a double-precision camera so expected pixels are computed
 // independently of the renderer.
 #pragma once
@@ -11,19 +11,9 @@
 
 #include "cpu_renderer.h"
 #include "scene.h"
+#include "scene_builder.h"
 
 namespace vkrt::test {
-
-// ---- building scenes ----
-Camera perspectiveCamera(glm::vec3 position, glm::vec3 gaze, float focalLength, float planeWidth);
-Camera orthographicCamera(glm::vec3 position, glm::vec3 gaze, float planeWidth);
-Light pointLight(glm::vec3 position, glm::vec3 intensity);
-Light areaLight(glm::vec3 centre, glm::vec3 normal, float width, float length, glm::vec3 intensity);
-Shader makeShader(ShaderType type, glm::vec3 diffuse = glm::vec3(0.0f));
-Shape sphere(glm::vec3 centre, float radius, int shader);
-Shape box(glm::vec3 lo, glm::vec3 hi, int shader);
-Shape triangle(glm::vec3 v0, glm::vec3 v1, glm::vec3 v2, int shader);
-int addShader(Scene& scene, const Shader& shader);  // returns its index
 
 // Renders (building the BVH) and checks what holds for every image: no sample was non-finite
 // (RENDERING.md §8) and every pixel is finite.

@@ -198,6 +198,7 @@ Score score(const Bytes& ours, const Bytes& ref, const ToleranceFn& tolerance, c
 class ReferenceRender : public ::testing::TestWithParam<Reference> {};
 
 TEST_P(ReferenceRender, AgreesWithTheInstructorsImage) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     const Reference& r = GetParam();
     const std::string dir = upstreamDir();
     Diagnostics diagnostics;

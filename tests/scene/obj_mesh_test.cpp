@@ -95,6 +95,7 @@ TEST_F(ObjMesh, ErrorsSayWhy) {
 }
 
 TEST(UpstreamObj, AlObjWithGroupLinesAndPolygonsLoads) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     // al.obj: quads, polygons up to 23 vertices, `g`, non-standard `group`, `usemtl`, `mtllib`.
     // 280 triangles + 2980 quads + 180 larger polygons = 7124 triangles (SOURCES.md count).
     const Mesh mesh = loadObjMesh(upstreamDir() + "/objFiles/al.obj");
@@ -111,6 +112,7 @@ TEST(UpstreamObj, AlObjWithGroupLinesAndPolygonsLoads) {
 }
 
 TEST(UpstreamObj, IcosahedronNormalsPointOutwardFromTheCentre) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     // A regular icosahedron centred at the origin: by symmetry the angle-weighted normal at each
     // vertex is the direction from the centre.
     const Mesh mesh = loadObjMesh(upstreamDir() + "/objFiles/icosahedron.obj");

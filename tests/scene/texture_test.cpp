@@ -128,6 +128,7 @@ TEST_F(TextureParsing, UndefinedTextureNameIsAnError) {
 }
 
 TEST(UpstreamTexture, CalibrationImageMatchesOpenImageIO) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     // Loaded through a real scene (dielectric_Test00.xml binds it with tex=), compared with
     // OpenImageIO's own reading of the same file, texel by texel over a sparse grid.
     const std::string image = upstreamDir() + "/images/textureMapCalibration.png";

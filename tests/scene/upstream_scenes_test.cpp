@@ -94,6 +94,7 @@ void expectConsistent(const Scene& scene) {
 }
 
 TEST(UpstreamScenes, ThereAre54AndEveryExpectedWarningNamesOne) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     const std::vector<std::string> names = upstreamSceneNames();
     EXPECT_EQ(names.size(), 54u);
     for (const auto& [name, warnings] : expectedWarnings())
@@ -103,6 +104,7 @@ TEST(UpstreamScenes, ThereAre54AndEveryExpectedWarningNamesOne) {
 // One test over all scenes rather than one per scene: every test is its own process under ctest,
 // and each process pays ~0.3 s CPU just to relocate OpenImageIO's ~260 shared libraries.
 TEST(UpstreamScenes, EachLoadsWithExactlyTheExpectedWarnings) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     for (const std::string& name : upstreamSceneNames()) {
         SCOPED_TRACE(name);
         Diagnostics diagnostics;
@@ -128,6 +130,7 @@ TEST(UpstreamScenes, EachLoadsWithExactlyTheExpectedWarnings) {
 }
 
 TEST(UpstreamScenes, StrictRejectsExactlyTheWarnedScenesAtTheFirstWarning) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     LoadOptions strict;
     strict.strict = true;
     int rejected = 0;
@@ -162,6 +165,7 @@ const Instance& instanceNamed(const Scene& scene, const std::string& name) {
 }
 
 TEST(UpstreamFacts, ThreeEggsRightEllipsoidIsThreeUnitsTallRestingOnTheGround) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     // translate 2.5 1.5 -4; rotate X 90; scale 1 0.5 1.5 in listed order, M = T*R*S (FORMAT.md
     // §3.9): the unit sphere's z poles (+-1.5 after the scale) are turned onto the y axis, giving
     // an egg from y = 0 to y = 3 centred at (2.5, 1.5, -4). Any other order moves the poles.
@@ -193,6 +197,7 @@ TEST(UpstreamFacts, ThreeEggsRightEllipsoidIsThreeUnitsTallRestingOnTheGround) {
 }
 
 TEST(UpstreamFacts, ThreeEggsPrototypeShaderIsInheritedOnlyWithoutOverride) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     Diagnostics diagnostics;
     const Scene scene = loadUpstream("threeEggs.xml", diagnostics);
     ASSERT_EQ(scene.prototypes.size(), 1u);
@@ -207,6 +212,7 @@ TEST(UpstreamFacts, ThreeEggsPrototypeShaderIsInheritedOnlyWithoutOverride) {
 }
 
 TEST(UpstreamFacts, MeshTriangleCountsAndSharing) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     Diagnostics diagnostics;
     const Scene dragons = loadUpstream("metallicDragons.xml", diagnostics);
     ASSERT_EQ(dragons.meshes.size(), 1u);  // three instances of one prototype, one file
@@ -223,6 +229,7 @@ TEST(UpstreamFacts, MeshTriangleCountsAndSharing) {
 }
 
 TEST(UpstreamFacts, BackgroundsAndEnvironmentMaps) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     Diagnostics diagnostics;
     const Scene mirror2 = loadUpstream("mirrorTest2.xml", diagnostics);
     EXPECT_EQ(mirror2.background, glm::vec3(1, 0, 0));
@@ -237,6 +244,7 @@ TEST(UpstreamFacts, BackgroundsAndEnvironmentMaps) {
 }
 
 TEST(UpstreamFacts, LightsLegacyShadersAndStrayText) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     Diagnostics diagnostics;
     const Scene glaze = loadUpstream("glazeTest.xml", diagnostics);
     ASSERT_EQ(glaze.lights.size(), 3u);
@@ -261,6 +269,7 @@ TEST(UpstreamFacts, LightsLegacyShadersAndStrayText) {
 class DamagedUpstream : public SceneFiles {};
 
 TEST_F(DamagedUpstream, EveryMutationLoadsOrFailsWithASceneError) {
+    VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
     std::mt19937 random(5721);
     const std::string alphabet = "<>/\"=& \n0123456789.-+eExnaif";
     int loaded = 0, rejected = 0;

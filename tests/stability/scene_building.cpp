@@ -8,41 +8,7 @@
 namespace vkrt::stability {
 
 Camera perspective(glm::vec3 position, glm::vec3 lookAt, float focalLength, float planeWidth) {
-    Camera c;
-    c.type = CameraType::Perspective;
-    c.position = position;
-    c.gaze = lookAt - position;
-    c.focalLength = focalLength;
-    c.imagePlaneWidth = planeWidth;
-    return c;
-}
-
-Camera orthographic(glm::vec3 position, glm::vec3 gaze, float planeWidth) {
-    Camera c;
-    c.type = CameraType::Orthographic;
-    c.position = position;
-    c.gaze = gaze;
-    c.imagePlaneWidth = planeWidth;
-    return c;
-}
-
-Light pointLight(glm::vec3 position, glm::vec3 intensity) {
-    Light l;
-    l.type = LightType::Point;
-    l.position = position;
-    l.intensity = intensity;
-    return l;
-}
-
-Light areaLight(glm::vec3 centre, glm::vec3 normal, float width, float length, glm::vec3 intensity) {
-    Light l;
-    l.type = LightType::Area;
-    l.position = centre;
-    l.normal = glm::normalize(normal);
-    l.width = width;
-    l.length = length;
-    l.intensity = intensity;
-    return l;
+    return test::perspectiveCamera(position, lookAt - position, focalLength, planeWidth);
 }
 
 Shader lambertian(glm::vec3 diffuse) {
@@ -85,44 +51,6 @@ Shader dielectric(float eta, glm::vec3 attenuation) {
     s.refractiveIndex = eta;
     s.attenuation = attenuation;
     return s;
-}
-
-Shape sphere(glm::vec3 centre, float radius, int shader) {
-    Shape s;
-    s.type = ShapeType::Sphere;
-    s.center = centre;
-    s.radius = radius;
-    s.shader = shader;
-    return s;
-}
-
-Shape box(glm::vec3 lo, glm::vec3 hi, int shader) {
-    Shape s;
-    s.type = ShapeType::Box;
-    s.minPt = lo;
-    s.maxPt = hi;
-    s.shader = shader;
-    return s;
-}
-
-Shape triangle(glm::vec3 v0, glm::vec3 v1, glm::vec3 v2, int shader) {
-    Shape s;
-    s.type = ShapeType::Triangle;
-    s.v0 = v0;
-    s.v1 = v1;
-    s.v2 = v2;
-    s.shader = shader;
-    return s;
-}
-
-int add(Scene& scene, const Shader& shader) {
-    scene.shaders.push_back(shader);
-    return static_cast<int>(scene.shaders.size()) - 1;
-}
-
-int addMesh(Scene& scene, Mesh mesh) {
-    scene.meshes.push_back(std::move(mesh));
-    return static_cast<int>(scene.meshes.size()) - 1;
 }
 
 int addInstancedMesh(Scene& scene, int mesh, int shader, const glm::mat4& objectToWorld) {

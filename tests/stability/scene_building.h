@@ -5,13 +5,20 @@
 #include <glm/glm.hpp>
 
 #include "scene.h"
+#include "scene_builder.h"
 
 namespace vkrt::stability {
 
+// The common constructors (tests/common/scene_builder.h), and a camera aimed at a point.
+using test::areaLight;
+using test::box;
+using test::pointLight;
+using test::sphere;
+using test::triangle;
+inline Camera orthographic(glm::vec3 position, glm::vec3 gaze, float planeWidth) {
+    return test::orthographicCamera(position, gaze, planeWidth);
+}
 Camera perspective(glm::vec3 position, glm::vec3 lookAt, float focalLength = 1.0f, float planeWidth = 1.0f);
-Camera orthographic(glm::vec3 position, glm::vec3 gaze, float planeWidth);
-Light pointLight(glm::vec3 position, glm::vec3 intensity);
-Light areaLight(glm::vec3 centre, glm::vec3 normal, float width, float length, glm::vec3 intensity);
 
 Shader lambertian(glm::vec3 diffuse);
 Shader blinnPhong(glm::vec3 diffuse, glm::vec3 specular, float phongExp);
@@ -19,13 +26,9 @@ Shader mirror(float roughness = 0.0f);
 Shader glossy(glm::vec3 diffuse, float mirrorCoef, float roughness);  // BlinnPhongMirrored
 Shader dielectric(float eta, glm::vec3 attenuation = glm::vec3(1.0f));
 
-Shape sphere(glm::vec3 centre, float radius, int shader);
-Shape box(glm::vec3 lo, glm::vec3 hi, int shader);
-Shape triangle(glm::vec3 v0, glm::vec3 v1, glm::vec3 v2, int shader);
-
 // Index of the added element.
-int add(Scene& scene, const Shader& shader);
-int addMesh(Scene& scene, Mesh mesh);
+inline int add(Scene& scene, const Shader& shader) { return test::addShader(scene, shader); }
+using test::addMesh;
 // A mesh placed by a prototype + instance; returns the instance index.
 int addInstancedMesh(Scene& scene, int mesh, int shader, const glm::mat4& objectToWorld);
 // A mesh as a plain world-space shape.

@@ -4,41 +4,11 @@
 #include <cmath>
 
 #include "diagnostics.h"
+#include "scene_builder.h"
 #include "test_paths.h"
 #include "xml_loader.h"
 
 namespace vkrt::test {
-
-namespace {
-
-int addShader(Scene& scene, ShaderType type, glm::vec3 diffuse) {
-    Shader s;
-    s.type = type;
-    s.diffuse = diffuse;
-    scene.shaders.push_back(s);
-    return static_cast<int>(scene.shaders.size()) - 1;
-}
-
-Shape triangle(glm::vec3 v0, glm::vec3 v1, glm::vec3 v2, int shader) {
-    Shape s;
-    s.type = ShapeType::Triangle;
-    s.v0 = v0;
-    s.v1 = v1;
-    s.v2 = v2;
-    s.shader = shader;
-    return s;
-}
-
-Camera orthographicDown(glm::vec3 position, glm::vec3 gaze, float planeWidth) {
-    Camera c;
-    c.type = CameraType::Orthographic;
-    c.position = position;
-    c.gaze = gaze;
-    c.imagePlaneWidth = planeWidth;
-    return c;
-}
-
-}  // namespace
 
 PixelScene edgePixelScene() {
     // Orthographic camera on +z looking down -z with a 1-unit image plane: the single pixel spans
@@ -47,10 +17,10 @@ PixelScene edgePixelScene() {
     // area above it is the integral of 0.5 - (0.3 x + 0.1) over [-0.5, 0.5] = 0.4.
     PixelScene p;
     Scene& s = p.scene;
-    s.cameras.push_back(orthographicDown({0.0f, 0.0f, 5.0f}, {0.0f, 0.0f, -1.0f}, 1.0f));
+    s.cameras.push_back(orthographicCamera({0.0f, 0.0f, 5.0f}, {0.0f, 0.0f, -1.0f}, 1.0f));
     s.background = glm::vec3(1.0f, 0.5f, 0.25f);
     // No lights: a Lambertian surface is exactly black.
-    const int black = addShader(s, ShaderType::Lambertian, glm::vec3(0.8f));
+    const int black = addShader(s, makeShader(ShaderType::Lambertian, glm::vec3(0.8f)));
     s.shapes.push_back(triangle({-10.0f, -2.9f, 0.0f}, {10.0f, 3.1f, 0.0f}, {0.0f, -50.0f, 0.0f}, black));
     p.expected = 0.4 * glm::dvec3(s.background);
     return p;
@@ -66,7 +36,7 @@ PixelScene penumbraPixelScene() {
     constexpr double kd = 0.8, h = 4.0, occluderHeight = 2.0, e = 0.2;
     PixelScene p;
     Scene& s = p.scene;
-    s.cameras.push_back(orthographicDown({0.0f, 1.0f, 0.0f}, {0.0f, -1.0f, 0.0f}, 1e-3f));
+    s.cameras.push_back(orthographicCamera({0.0f, 1.0f, 0.0f}, {0.0f, -1.0f, 0.0f}, 1e-3f));
     Light light;
     light.type = LightType::Area;
     light.position = glm::vec3(0.0f, static_cast<float>(h), 0.0f);
@@ -75,8 +45,8 @@ PixelScene penumbraPixelScene() {
     light.length = 2.0f;
     light.intensity = glm::vec3(1.0f);
     s.lights.push_back(light);
-    const int ground = addShader(s, ShaderType::Lambertian, glm::vec3(static_cast<float>(kd)));
-    const int dark = addShader(s, ShaderType::Lambertian, glm::vec3(0.1f));
+    const int ground = addShader(s, makeShader(ShaderType::Lambertian, glm::vec3(static_cast<float>(kd))));
+    const int dark = addShader(s, makeShader(ShaderType::Lambertian, glm::vec3(0.1f)));
     Shape floor;
     floor.type = ShapeType::Box;
     floor.minPt = glm::vec3(-10.0f, -1.0f, -10.0f);
