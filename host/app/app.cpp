@@ -14,10 +14,10 @@
 #include "image_compare.h"
 #include "interrupt.h"
 #include "scene_accel.h"
+#include "scene_loader.h"
 #include "statistical_compare.h"
 #include "sweep.h"
 #include "vulkan_errors.h"
-#include "xml_loader.h"
 
 namespace vkrt {
 

@@ -26,8 +26,8 @@
 #include "image_compare.h"
 #include "node_packing.h"
 #include "scene_accel.h"
+#include "scene_loader.h"
 #include "test_paths.h"
-#include "xml_loader.h"
 
 namespace vkrt {
 namespace {

@@ -8,7 +8,7 @@
 
 #include "diagnostics.h"
 #include "scene.h"
-#include "xml_loader.h"
+#include "scene_loader.h"
 
 namespace vkrt::test {
 

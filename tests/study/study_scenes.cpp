@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "diagnostics.h"
+#include "scene_loader.h"
 #include "test_paths.h"
-#include "xml_loader.h"
 
 namespace vkrt::test {
 
