@@ -1,5 +1,6 @@
 #include "json_source.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <iterator>
@@ -240,7 +241,14 @@ JsonSource::JsonSource(std::string path, const std::string& text) : path_(std::m
         column = columnOf(last);
         description = failure.what;
     }
-    throw SceneError({path_, line, "json", "malformed JSON (" + description + ")", failure.lastToken, column});
+    // As XML: the library's description, then the text from the byte it stopped at.
+    const auto stop = static_cast<std::size_t>(failure.position > 0 ? failure.position - 1 : 0);
+    std::string snippet = "end of file";
+    if (stop < text_.size()) {
+        const std::size_t lineEnd = std::min(text_.find_first_of("\r\n", stop), text_.size());
+        snippet = text_.substr(stop, std::min<std::size_t>(lineEnd - stop, 40));
+    }
+    throw SceneError({path_, line, "json", "malformed JSON (" + description + ") at", snippet, column});
 }
 
 const JsonSource::Span* JsonSource::spanOf(const std::string& path) const {
