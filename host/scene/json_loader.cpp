@@ -14,6 +14,7 @@
 #include "scene_rules.h"
 #include "texture_loading.h"
 
+// Sections (§) are docs/JSON_FORMAT.md's.
 namespace vkrt {
 
 namespace {
@@ -34,11 +35,11 @@ const Keys& jsonShaderParameters() {
 bool contains(const Keys& keys, std::string_view key) { return std::find(keys.begin(), keys.end(), key) != keys.end(); }
 
 // What a shape object is for: its shader is required (loose shapes; prototypes, where a
-// dangling reference is only a warning, §3.3) or optional (an emitter's, replaced by its
+// dangling reference is only a warning, §3.5) or optional (an emitter's, replaced by its
 // radiance); prototypes take no transform.
 enum class ShapeRole { Loose, Prototype, Emitter };
 
-// Two passes, as XML (FORMAT.md §7.2), so that key and array order never matter:
+// Two passes, as XML (§1), so that key and array order never matter:
 //   1. definitions by name: textures, shaders, prototypes (`instance[]`);
 //   2. cameras, lights (shape lights included), shapes and instances, background.
 class JsonSceneBuilder {
@@ -49,7 +50,7 @@ public:
         requireObject(context_, root);
         for (const JsonSource::RepeatedKey& repeated : context_.source.repeatedKeys())
             context_.warn(context_.issueAtOffset(repeated.key, repeated.path, "repeated key, the first value is used"));
-        // J26: the document's "scene" member, or the document itself (§2).
+        // J26: the document's "scene" member, or the document itself (§1).
         JsonNode scene = root;
         if (JsonNode wrapped = member(root, "scene")) {
             checkKeys(context_, root, {"scene"});
@@ -114,7 +115,7 @@ private:
         shader.diffuseBounce = type.diffuseBounce;
         shader.where = context_.locationOf(node);
         // As XML: an unknown type's parameters are covered by its one warning; a known type's
-        // parameter it does not read is a warning each (the corpus has 35, §7).
+        // parameter it does not read is a warning each (§3.3).
         const Keys used = rules::shaderParametersUsedBy(type);
         if (known)
             for (const auto& item : node->items())
@@ -153,7 +154,7 @@ private:
     }
 
     // A colour: a vec3, or {"tex": T, "data": c} (G2), or {"_tex": T, "__text": c} (the first
-    // conversion); an object without a colour is white (J26), so its texture shows as it is.
+    // conversion); an object without a colour is white (J26), so its texture shows as it is (§3.3).
     glm::vec3 readColour(const JsonNode& node, int& texture) {
         if (!node->is_object()) return readVec3(context_, node);
         checkKeys(context_, node, {"data", "__text"}, {"tex"});
@@ -204,7 +205,7 @@ private:
         if (const auto found = shaderByName_.find(name); found != shaderByName_.end()) return found->second;
         if (role != ShapeRole::Prototype) context_.fail(nameNode, "unresolved shader reference", name);
         // The corpus's prototypes name shaders that do not exist while every instance names its
-        // own (§3.3): a grey placeholder keeps the model whole, and an instance that would
+        // own (§3.5): a grey placeholder keeps the model whole, and an instance that would
         // render with it is an error (placeInstance).
         context_.warn(nameNode, "unresolved shader reference on a prototype, each of its instances must name a shader", name);
         auto [it, inserted] = placeholderShaders_.try_emplace(name, static_cast<int>(scene_.shaders.size()));
@@ -325,7 +326,7 @@ private:
 
     // The 2019 object {"translate", "rotate": {..} or [{..}, ..], "scale"}: xml2json kept one key
     // per kind, so the order between kinds is lost. Composed as M = T * R0 * R1 * ... * S, the
-    // order of the XML files these came from (threeEggs.xml, metallicDragons.xml).
+    // order of the XML files these came from (threeEggs.xml, metallicDragons.xml; §5).
     glm::mat4 parseTransformObject(const JsonNode& node) {
         requireObject(context_, node);
         checkKeys(context_, node, {"translate", "rotate", "scale"}, {"name"});
@@ -381,7 +382,7 @@ private:
         const JsonNode viewDir = member(node, "viewDir");
         const JsonNode lookatPoint = member(node, "lookatPoint");
         if (!viewDir && !lookatPoint) context_.fail(node, "missing required key viewDir (or lookatPoint)");
-        // viewDir is read even when lookatPoint overrides it (J26, §3), so garbage in it is reported.
+        // viewDir is read even when lookatPoint overrides it (J26, §3.1), so garbage in it is reported.
         const glm::vec3 direction = viewDir ? readVec3(context_, viewDir) : glm::vec3(0.0f);
         if (lookatPoint) {
             camera.gaze = readVec3(context_, lookatPoint) - camera.position;
@@ -401,7 +402,7 @@ private:
 
     void placeLight(const JsonNode& node) {
         const JsonNode typeNode = attributeMember(context_, node, "type");
-        const std::string type = typeNode ? readString(context_, typeNode) : "point";  // J26's default (§3)
+        const std::string type = typeNode ? readString(context_, typeNode) : "point";  // J26's default (§3.2)
         if (type == "shape") return placeShapeLight(node);
         const std::optional<LightType> known = rules::lightType(type);
         if (!known) {
@@ -428,6 +429,7 @@ private:
     }
 
     // {"_type": "shape", "intensity": c, "shape": {any shape, an instance with its xform included}}
+    // (§3.2); rendered for now as a stand-in point light (§6).
     void placeShapeLight(const JsonNode& node) {
         checkKeys(context_, node, {"intensity", "shape"}, {"name", "type"});
         Emitter emitter;

@@ -49,6 +49,10 @@ private:
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 bool isNumberChar(char c) { return isDigit(c) || c == '+' || c == '-' || c == '.' || c == 'e' || c == 'E'; }
 
+// Deeper than any scene (the course's files nest 6 levels); see SpanRecordingBuilder::open.
+constexpr std::size_t kMaxDepth = 64;
+constexpr int kTooDeep = -1;  // ParseFailure::id of a document nested deeper than kMaxDepth
+
 struct ParseFailure {
     std::size_t position = 0;   // nlohmann's chars_read_total
     std::string lastToken;
@@ -166,6 +170,11 @@ private:
     }
 
     bool open(Json container) {
+        if (stack_.size() + static_cast<std::size_t>(discardDepth_) >= kMaxDepth) {
+            // Each level's path repeats its parent's, so unbounded depth would cost quadratic memory.
+            failure = ParseFailure{consumed_, "", "", kTooDeep, ""};
+            return false;
+        }
         if (discardDepth_ > 0 || (discardNext_ && !stack_.empty() && stack_.back().value->is_object())) {
             discardNext_ = false;
             ++discardDepth_;
@@ -227,6 +236,11 @@ JsonSource::JsonSource(std::string path, const std::string& text) : path_(std::m
     if (Json::sax_parse(first, last, &builder, nlohmann::json::input_format_t::json, /*strict=*/true)) return;
 
     const ParseFailure failure = builder.failure.value_or(ParseFailure{consumed, "", "unknown error", 0, ""});
+    if (failure.id == kTooDeep) {
+        const auto at = static_cast<std::ptrdiff_t>(failure.position > 0 ? failure.position - 1 : 0);
+        throw SceneError({path_, lineOf(at), "json", "nested deeper than " + std::to_string(kMaxDepth) + " levels, not a scene",
+                          "", columnOf(at)});
+    }
     if (failure.id == 406) {
         // out_of_range.406, "number overflow parsing '1e400'": the token ends where the lexer stopped.
         const auto begin = static_cast<std::ptrdiff_t>(failure.position - std::min(failure.position, failure.lastToken.size()));

@@ -278,6 +278,20 @@ TEST_F(JsonBadInput, SingularScaleAndBadRotationAxes) {
     EXPECT_EQ(jsonErrorOf(object).element, "scene.shape[0].transform.rotate._axis");
 }
 
+TEST_F(JsonBadInput, NestingDeeperThan64LevelsIsRefusedWhereItGoesTooDeep) {
+    // Each level's path repeats its parent's: 200000 levels would need ~100 GB of paths.
+    const std::string json = jsonWith("\"deep\": " + std::string(200000, '[') + std::string(200000, ']'));
+    const Issue issue = jsonErrorOf(json);
+    const int column = columnOf(json, "[[") + 62;  // the 65th container: the root, "scene" and 62 brackets are open
+    expectJsonIssue(issue, 4, column, "json", "");
+    EXPECT_EQ(issue.problem, "nested deeper than 64 levels, not a scene");
+    // 60 levels are still a document (under an unknown key: a warning).
+    Diagnostics diagnostics;
+    loadJson(jsonWith("\"deep\": " + std::string(60, '[') + std::string(60, ']')), diagnostics);
+    ASSERT_EQ(diagnostics.warnings().size(), 1u);
+    EXPECT_EQ(diagnostics.warnings()[0].element, "scene.deep");
+}
+
 TEST_F(JsonBadInput, LineAndColumnAreRightWithCrLfTabsAndMultiByteText) {
     std::string json = withShape(sphere("-2"));
     json.insert(json.find("\"shape\""), "\t\"_bgColor\": \"0.5 0.5 0.5\", \"note\": \"\xC3\xA9t\xC3\xA9\",\n");  // two 2-byte characters
