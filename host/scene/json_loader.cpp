@@ -1,8 +1,8 @@
 #include "json_loader.h"
 
+#include <algorithm>
 #include <map>
 #include <optional>
-#include <set>
 #include <stdexcept>
 #include <string_view>
 #include <vector>

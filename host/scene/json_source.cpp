@@ -49,7 +49,7 @@ private:
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 bool isNumberChar(char c) { return isDigit(c) || c == '+' || c == '-' || c == '.' || c == 'e' || c == 'E'; }
 
-// Deeper than any scene (the course's files nest 6 levels); see SpanRecordingBuilder::open.
+// Deeper than any scene (the course's files nest 7 levels); see SpanRecordingBuilder::open.
 constexpr std::size_t kMaxDepth = 64;
 constexpr int kTooDeep = -1;  // ParseFailure::id of a document nested deeper than kMaxDepth
 
