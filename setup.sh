@@ -8,7 +8,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   glslang-tools glslang-dev spirv-tools
-  libglm-dev libtinyobjloader-dev libopenimageio-dev openimageio-tools libpugixml-dev libcli11-dev
+  libglm-dev libtinyobjloader-dev libopenimageio-dev openimageio-tools libpugixml-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev
   gnuplot-nox
   python3

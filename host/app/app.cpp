@@ -12,10 +12,10 @@
 #include "gpu_renderer.h"
 #include "image_compare.h"
 #include "interrupt.h"
+#include "scene_loader.h"
 #include "statistical_compare.h"
 #include "sweep.h"
 #include "vulkan_errors.h"
-#include "xml_loader.h"
 
 namespace vkrt {
 

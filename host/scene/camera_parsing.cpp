@@ -1,15 +1,11 @@
 #include "camera_parsing.h"
 
-#include <cmath>
 #include <string_view>
 
+#include "scene_rules.h"
 #include "value_parsing.h"
 
 namespace vkrt {
-
-namespace {
-bool isFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-}  // namespace
 
 Camera parseCamera(const ParseContext& context, pugi::xml_node node) {
     checkAttributes(context, node, {"type"});
@@ -19,10 +15,10 @@ Camera parseCamera(const ParseContext& context, pugi::xml_node node) {
     camera.where = {context.source.path(), context.source.lineOf(node)};
 
     const std::string_view type = node.attribute("type").value();
-    if (type == "orthographic") {
-        camera.type = CameraType::Orthographic;
-    } else if (!type.empty() && type != "perspective") {
-        context.warn(node, "unknown camera type, using perspective", std::string(type));
+    if (!type.empty()) {
+        const std::optional<CameraType> known = rules::cameraType(type);
+        if (!known) context.warn(node, rules::kUnknownCameraType, std::string(type));
+        camera.type = known.value_or(CameraType::Perspective);
     }
 
     camera.position = parseVec3(context, requireChild(context, node, "position"));
@@ -33,21 +29,21 @@ Camera parseCamera(const ParseContext& context, pugi::xml_node node) {
     const glm::vec3 direction = viewDir ? parseVec3(context, viewDir) : glm::vec3(0.0f);
     if (lookatPoint) {
         camera.gaze = parseVec3(context, lookatPoint) - camera.position;
-        if (camera.gaze == glm::vec3(0.0f) || !isFinite(camera.gaze))
-            context.fail(lookatPoint, "lookatPoint must differ from the camera position", elementText(lookatPoint));
+        if (const std::string p = rules::lookatProblem(camera.gaze); !p.empty()) context.fail(lookatPoint, p, elementText(lookatPoint));
     } else {
         camera.gaze = direction;
-        if (camera.gaze == glm::vec3(0.0f)) context.fail(viewDir, "view direction has zero length", elementText(viewDir));
+        if (const std::string p = rules::viewDirProblem(camera.gaze); !p.empty()) context.fail(viewDir, p, elementText(viewDir));
     }
 
     if (const pugi::xml_node f = node.child("focalLength")) {
         camera.focalLength = parseScalar(context, f);
-        if (camera.type == CameraType::Perspective && !(camera.focalLength > 0.0f))
-            context.fail(f, "focal length must be positive", elementText(f));
+        if (const std::string p = rules::focalLengthProblem(camera.type, camera.focalLength); !p.empty())
+            context.fail(f, p, elementText(f));
     }
     if (const pugi::xml_node w = node.child("imagePlaneWidth")) {
         camera.imagePlaneWidth = parseScalar(context, w);
-        if (!(camera.imagePlaneWidth > 0.0f)) context.fail(w, "image plane width must be positive", elementText(w));
+        if (const std::string p = rules::imagePlaneWidthProblem(camera.imagePlaneWidth); !p.empty())
+            context.fail(w, p, elementText(w));
     }
     return camera;
 }

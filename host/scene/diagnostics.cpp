@@ -27,7 +27,9 @@ std::string oneLine(const std::string& value, std::size_t kMaxChars) {
 }  // namespace
 
 std::string Issue::message() const {
-    std::string text = file + ":" + std::to_string(line) + ": " + element + ": " + oneLine(problem, std::string::npos);
+    std::string text = file + ":" + std::to_string(line);
+    if (column > 0) text += ":" + std::to_string(column);
+    text += ": " + element + ": " + oneLine(problem, std::string::npos);
     if (!value.empty()) text += " '" + oneLine(value, 240) + "'";
     return text;
 }

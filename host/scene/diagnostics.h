@@ -9,13 +9,17 @@
 namespace vkrt {
 
 // One finding about one element of one file, rendered as
-//   "<file>:<line>: <element>: <problem> '<value>'"   (the quoted value only when there is one).
+//   "<file>:<line>: <element>: <problem> '<value>'"            (XML)
+//   "<file>:<line>:<column>: <path>: <problem> '<value>'"      (JSON: column > 0)
+// with the quoted value only when there is one.
 struct Issue {
     std::string file;
     int line = 0;          // 1-based; 0 when no line applies (e.g. the file cannot be opened)
-    std::string element;   // the XML element (or "xml" / "obj" for whole-file problems)
+    std::string element;   // the XML element, the JSON path ("scene.shape[3].radius"), or
+                           // "xml" / "json" / "obj" for whole-file problems
     std::string problem;
     std::string value;     // the offending text, quoted in the message when non-empty
+    int column = 0;        // 1-based byte column (JSON); 0: the message names the line only
 
     std::string message() const;
 };

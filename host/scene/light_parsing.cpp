@@ -1,8 +1,8 @@
 #include "light_parsing.h"
 
-#include <cmath>
 #include <string>
 
+#include "scene_rules.h"
 #include "value_parsing.h"
 
 namespace vkrt {
@@ -11,9 +11,7 @@ namespace {
 float parseLightSize(const ParseContext& context, pugi::xml_node node, const char* name) {
     const pugi::xml_node element = requireChild(context, node, name);
     const float value = parseScalar(context, element);
-    // Zero is allowed: a 0x0 area light is exactly its point light (docs/RENDERING.md; tested in
-    // tests/stability), so a user can shrink a light to nothing without rewriting it.
-    if (!(value >= 0.0f)) context.fail(element, "must not be negative", elementText(element));
+    if (const std::string p = rules::lightSizeProblem(value); !p.empty()) context.fail(element, p, elementText(element));
     return value;
 }
 }  // namespace
@@ -23,23 +21,20 @@ std::optional<Light> parseLight(const ParseContext& context, pugi::xml_node node
     const std::string type = requireAttribute(context, node, "type");
     Light light;
     light.where = {context.source.path(), context.source.lineOf(node)};
-    if (type == "point") {
-        light.type = LightType::Point;
-    } else if (type == "area") {
-        light.type = LightType::Area;
-    } else {
-        context.warn(node, "unknown light type, light skipped", type);
+    const std::optional<LightType> known = rules::lightType(type);
+    if (!known) {
+        context.warn(node, rules::kUnknownLightType, type);
         return std::nullopt;
     }
+    light.type = *known;
     checkChildren(context, node, {"position", "intensity", "normal", "width", "length"});
     light.position = parseVec3(context, requireChild(context, node, "position"));
     light.intensity = parseVec3(context, requireChild(context, node, "intensity"));
     if (light.type == LightType::Area) {
         const pugi::xml_node normal = requireChild(context, node, "normal");
-        const glm::vec3 n = parseVec3(context, normal);
-        const float length = glm::length(n);
-        if (!(length > 0.0f) || !std::isfinite(length)) context.fail(normal, "normal has zero length", elementText(normal));
-        light.normal = n / length;
+        const std::optional<glm::vec3> n = rules::unitNormal(parseVec3(context, normal));
+        if (!n) context.fail(normal, rules::kZeroNormal, elementText(normal));
+        light.normal = *n;
         light.width = parseLightSize(context, node, "width");
         light.length = parseLightSize(context, node, "length");
     }

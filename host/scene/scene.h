@@ -1,5 +1,5 @@
-// The scene model: a plain description of what a course XML file says, after parsing and
-// validation (host/scene/xml_loader.h builds it). No GPU or BVH concerns live here.
+// The scene model: a plain description of what a course scene file (XML or JSON) says, after
+// parsing and validation (host/scene/scene_loader.h builds it). No GPU or BVH concerns live here.
 #pragma once
 
 #include <cstdint>
@@ -10,10 +10,11 @@
 
 namespace vkrt {
 
-// Where something was defined, for error messages ("file:line").
+// Where something was defined, for error messages ("file:line", "file:line:column" for JSON).
 struct SourceLocation {
     std::string file;
     int line = 0;
+    int column = 0;  // JSON only (1-based byte column); 0 for XML
 };
 
 enum class CameraType { Perspective, Orthographic };
@@ -37,11 +38,15 @@ struct Light {
     glm::vec3 normal{0.0f, -1.0f, 0.0f};  // area only; unit length
     float width = 0.0f;                   // area only; along the tangent (docs/RENDERING.md §4)
     float length = 0.0f;                  // area only; along the bitangent
+    // >= 0: this point light is not in the file; it stands in for Scene::emitters[emitterStandIn]
+    // until shape lights are rendered (render_fallbacks.h). -1 for every light the file gives.
+    int emitterStandIn = -1;
     SourceLocation where;
 };
 
 // Legacy spellings are resolved by the loader: Phong -> BlinnPhong, BlinnPhong with
-// mirrorCoef > 0 -> BlinnPhongMirrored.
+// mirrorCoef > 0 -> BlinnPhongMirrored. The JSON-era Diffuse and Emitter types have no type of
+// their own yet: see Shader::diffuseBounce and Shader::emission.
 enum class ShaderType { Lambertian, BlinnPhong, Mirror, Glaze, BlinnPhongMirrored, Dielectric, CoolToWarm };
 
 constexpr int kNoTexture = -1;
@@ -58,6 +63,13 @@ struct Shader {
     glm::vec3 attenuation{1.0f};   // transmittance per unit distance
     int diffuseTexture = kNoTexture;   // index into Scene::textures
     int specularTexture = kNoTexture;
+    // The course's `Diffuse` (JSON era): a Lambertian that also gathers the light other surfaces
+    // scatter (a path-traced diffuse bounce). type is Lambertian, which is how the renderers
+    // shade it until they path-trace (render_fallbacks.h); the file said Diffuse.
+    bool diffuseBounce = false;
+    // An `Emitter` shader's radiance (J26; no course file uses one). type is Lambertian with a
+    // black diffuse colour until emission is rendered (render_fallbacks.h).
+    glm::vec3 emission{0.0f};
     SourceLocation where;
 };
 
@@ -107,10 +119,27 @@ struct Instance {
     SourceLocation where;
 };
 
+// A shape that emits light (a JSON `light` of `_type: "shape"`): radiance = the light's intensity.
+// The geometry is `shape` (world space when objectToWorld is the identity), or, when prototype
+// >= 0, Scene::prototypes[prototype] placed by objectToWorld. Renderers do not draw it yet: a
+// point light stands in for it (Light::emitterStandIn, render_fallbacks.h).
+struct Emitter {
+    std::string name;
+    glm::vec3 radiance{1.0f};
+    Shape shape;                      // unused when prototype >= 0; shape.shader may be -1
+    int prototype = -1;               // index into Scene::prototypes, or -1
+    glm::mat4 objectToWorld{1.0f};
+    SourceLocation where;
+};
+
 struct Scene {
-    std::string path;                 // the XML file
+    std::string path;                 // the scene file
     glm::vec3 background{0.0f};
-    std::string envMapPrefix;         // recorded; not rendered (a warning says so)
+    // Environment maps, resolved against the scene file's directory; recorded, not rendered (a
+    // warning says so). envMapPrefix names six cube faces `<prefix>posX.png` ...; envMapVertCross
+    // one image holding a vertical cross (JSON only).
+    std::string envMapPrefix;
+    std::string envMapVertCross;
     std::vector<Camera> cameras;      // at least one, in file order
     int defaultCamera = 0;            // index into cameras: <sceneParameters><camera>name</camera>, else 0
     std::vector<Light> lights;
@@ -120,6 +149,7 @@ struct Scene {
     std::vector<Shape> shapes;
     std::vector<Shape> prototypes;
     std::vector<Instance> instances;
+    std::vector<Emitter> emitters;
 };
 
 }  // namespace vkrt

@@ -5,54 +5,12 @@
 #include <string_view>
 #include <vector>
 
+#include "scene_rules.h"
 #include "value_parsing.h"
 
 namespace vkrt {
 
 namespace {
-
-// Every parameter element any shader type reads.
-constexpr std::string_view kAllParameters[] = {"diffuse",   "diffusetex",      "specular",       "phongExp",
-                                               "mirrorCoef", "roughness",      "refractiveIndex", "attenuationCoef"};
-
-std::vector<std::string_view> parametersUsedBy(ShaderType type) {
-    switch (type) {
-        case ShaderType::Lambertian:
-        case ShaderType::CoolToWarm: return {"diffuse", "diffusetex"};
-        // BlinnPhong keeps mirrorCoef/roughness: mirrorCoef > 0 makes it BlinnPhongMirrored.
-        case ShaderType::BlinnPhong:
-        case ShaderType::BlinnPhongMirrored:
-            return {"diffuse", "diffusetex", "specular", "phongExp", "mirrorCoef", "roughness"};
-        case ShaderType::Mirror: return {"roughness"};
-        case ShaderType::Glaze: return {"diffuse", "diffusetex", "mirrorCoef", "roughness"};
-        case ShaderType::Dielectric: return {"refractiveIndex", "attenuationCoef"};
-    }
-    return {};
-}
-
-std::optional<ShaderType> shaderTypeFromName(std::string_view name) {
-    if (name == "Lambertian" || name == "Diffuse") return ShaderType::Lambertian;
-    if (name == "BlinnPhong" || name == "Phong") return ShaderType::BlinnPhong;
-    if (name == "Mirror") return ShaderType::Mirror;
-    if (name == "Glaze") return ShaderType::Glaze;
-    if (name == "BlinnPhongMirrored") return ShaderType::BlinnPhongMirrored;
-    if (name == "Dielectric") return ShaderType::Dielectric;
-    if (name == "CoolToWarm") return ShaderType::CoolToWarm;
-    return std::nullopt;
-}
-
-const char* typeName(ShaderType type) {
-    switch (type) {
-        case ShaderType::Lambertian: return "Lambertian";
-        case ShaderType::BlinnPhong: return "BlinnPhong";
-        case ShaderType::Mirror: return "Mirror";
-        case ShaderType::Glaze: return "Glaze";
-        case ShaderType::BlinnPhongMirrored: return "BlinnPhongMirrored";
-        case ShaderType::Dielectric: return "Dielectric";
-        case ShaderType::CoolToWarm: return "CoolToWarm";
-    }
-    return "?";
-}
 
 int lookUpTexture(const ParseContext& context, pugi::xml_node at, const std::string& name,
                   const TextureTable& textures) {
@@ -72,7 +30,7 @@ glm::vec3 parseTintedColour(const ParseContext& context, pugi::xml_node element,
 
 float parseNonNegative(const ParseContext& context, pugi::xml_node element) {
     const float value = parseScalar(context, element);
-    if (value < 0.0f) context.fail(element, "must not be negative", elementText(element));
+    if (const std::string p = rules::nonNegativeProblem(value); !p.empty()) context.fail(element, p, elementText(element));
     return value;
 }
 
@@ -85,21 +43,24 @@ Shader parseShader(const ParseContext& context, pugi::xml_node node, const Textu
     shader.where = {context.source.path(), context.source.lineOf(node)};
 
     const std::string typeText = requireAttribute(context, node, "type");
-    const std::optional<ShaderType> known = shaderTypeFromName(typeText);
-    if (!known) context.warn(node, "unknown shader type, using Lambertian with its diffuse colour", typeText);
-    shader.type = known.value_or(ShaderType::Lambertian);
+    const std::optional<rules::ShaderTypeName> known = rules::shaderType(typeText);
+    if (!known) context.warn(node, rules::kUnknownShaderType, typeText);
+    const rules::ShaderTypeName type = known.value_or(rules::ShaderTypeName{});
+    shader.type = type.type;
+    shader.diffuseBounce = type.diffuseBounce;
 
     // An unknown type's other parameters belong to whatever the author meant; the one warning
     // above covers them. For known types, a parameter the type does not read is worth a warning.
-    const std::vector<std::string_view> used = parametersUsedBy(shader.type);
+    const std::vector<std::string_view> used = rules::shaderParametersUsedBy(type);
+    const std::vector<std::string_view>& all = rules::shaderParameters();
     for (pugi::xml_node child : node.children()) {
         const std::string_view name = child.name();
         if (!known || child.type() != pugi::node_element) continue;
-        const bool isParameter = std::find(std::begin(kAllParameters), std::end(kAllParameters), name) != std::end(kAllParameters);
+        const bool isParameter = std::find(all.begin(), all.end(), name) != all.end();
         if (isParameter && std::find(used.begin(), used.end(), name) == used.end())
-            context.warn(child, std::string("not used by a ") + typeName(shader.type) + " shader, ignored");
+            context.warn(child, rules::unusedParameterProblem(type));
     }
-    checkChildren(context, node, {std::begin(kAllParameters), std::end(kAllParameters)});
+    checkChildren(context, node, all);
     auto parameter = [&](const char* name) -> pugi::xml_node {
         return std::find(used.begin(), used.end(), name) != used.end() ? node.child(name) : pugi::xml_node();
     };
@@ -118,7 +79,7 @@ Shader parseShader(const ParseContext& context, pugi::xml_node node, const Textu
     if (usesDiffuse && !hasDiffuse) {
         // §7: white under a texture, so the texture shows as it is; grey (as for an unknown
         // type) when there is nothing at all to go on.
-        shader.diffuse = glm::vec3(bindsTexture ? 1.0f : 0.5f);
+        shader.diffuse = glm::vec3(bindsTexture ? 1.0f : rules::kMissingDiffuseGrey);
         if (!bindsTexture && known) context.warn(node, "no <diffuse> colour, using grey 0.5", shader.name);
     }
     if (pugi::xml_node e = parameter("specular")) shader.specular = parseTintedColour(context, e, textures, shader.specularTexture);
@@ -127,12 +88,16 @@ Shader parseShader(const ParseContext& context, pugi::xml_node node, const Textu
     if (pugi::xml_node e = parameter("roughness")) shader.roughness = parseNonNegative(context, e);
     if (pugi::xml_node e = parameter("refractiveIndex")) {
         shader.refractiveIndex = parseScalar(context, e);
-        if (!(shader.refractiveIndex > 0.0f)) context.fail(e, "must be positive", elementText(e));
+        if (const std::string p = rules::refractiveIndexProblem(shader.refractiveIndex); !p.empty())
+            context.fail(e, p, elementText(e));
     }
     if (pugi::xml_node e = parameter("attenuationCoef")) shader.attenuation = parseVec3(context, e);
+    if (type.emitter) {
+        shader.diffuse = glm::vec3(0.0f);  // an emitter reflects nothing (render_fallbacks.h)
+        if (pugi::xml_node e = parameter("emission")) shader.emission = parseVec3(context, e);
+    }
 
-    // 2011/12 files write a mirrored Blinn-Phong as BlinnPhong + mirrorCoef (FORMAT.md §6).
-    if (shader.type == ShaderType::BlinnPhong && shader.mirrorCoef > 0.0f) shader.type = ShaderType::BlinnPhongMirrored;
+    rules::resolveLegacyShaderType(shader);  // FORMAT.md §6
     return shader;
 }
 

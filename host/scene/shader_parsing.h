@@ -15,9 +15,10 @@ namespace vkrt {
 // could not be loaded (the shader then uses its tint colour alone).
 using TextureTable = std::map<std::string, int>;
 
-// Parses a shader definition. Type mapping: Phong -> BlinnPhong; BlinnPhong (or Phong) with
-// mirrorCoef > 0 -> BlinnPhongMirrored (2011/12 files); Diffuse (JSON era) -> Lambertian; any
-// other type -> warning, Lambertian with the shader's diffuse (grey 0.5 without one).
+// Parses a shader definition. Type mapping (scene_rules.h): Phong -> BlinnPhong; BlinnPhong (or
+// Phong) with mirrorCoef > 0 -> BlinnPhongMirrored (2011/12 files); Diffuse (JSON era) ->
+// Lambertian with diffuseBounce; Emitter -> black Lambertian with its <emission>; any other type
+// -> warning, Lambertian with the shader's diffuse (grey 0.5 without one).
 // A parameter the type does not use (mirrorCoef on a Lambertian) is a warning. An undefined
 // texture name is a SceneError.
 Shader parseShader(const ParseContext& context, pugi::xml_node node, const TextureTable& textures);

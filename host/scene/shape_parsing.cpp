@@ -1,49 +1,27 @@
 #include "shape_parsing.h"
 
-#include <filesystem>
 #include <stdexcept>
 
-#include "obj_mesh.h"
+#include "scene_rules.h"
 #include "value_parsing.h"
 
 namespace vkrt {
 
-std::optional<ShapeType> shapeTypeFromName(std::string_view name) {
-    if (name == "sphere") return ShapeType::Sphere;
-    if (name == "box") return ShapeType::Box;
-    if (name == "triangle") return ShapeType::Triangle;
-    if (name == "mesh") return ShapeType::Mesh;
-    return std::nullopt;
-}
+namespace {
 
-std::vector<std::string_view> geometryChildren(ShapeType type) {
-    switch (type) {
-        case ShapeType::Sphere: return {"center", "radius"};
-        case ShapeType::Box: return {"minPt", "maxPt"};
-        case ShapeType::Triangle: return {"v0", "v1", "v2"};
-        case ShapeType::Mesh: return {"file"};
-    }
-    return {};
-}
-
-int MeshLibrary::meshFor(const ParseContext& context, pugi::xml_node file) {
+int meshOf(const ParseContext& context, pugi::xml_node file, MeshLibrary& meshes) {
     checkAttributes(context, file, {});
     const std::string relative = trimmed(elementText(file));
     if (relative.empty()) context.fail(file, "empty mesh file name");
-
-    const std::filesystem::path resolved = (context.sceneDirectory / relative).lexically_normal();
-    const std::string key = std::filesystem::absolute(resolved).lexically_normal().string();
-    if (const auto found = indexOfPath_.find(key); found != indexOfPath_.end()) return found->second;
-
+    const std::string path = rules::resolveScenePath(context.sceneDirectory, relative);
     try {
-        meshes_.push_back(loadObjMesh(resolved.string()));
+        return meshes.meshFor(path);
     } catch (const std::runtime_error& error) {
-        context.fail(file, error.what(), resolved.string());
+        context.fail(file, error.what(), path);
     }
-    const int index = static_cast<int>(meshes_.size()) - 1;
-    indexOfPath_.emplace(key, index);
-    return index;
 }
+
+}  // namespace
 
 void parseGeometry(const ParseContext& context, pugi::xml_node node, Shape& shape, MeshLibrary& meshes) {
     switch (shape.type) {
@@ -51,7 +29,7 @@ void parseGeometry(const ParseContext& context, pugi::xml_node node, Shape& shap
             shape.center = parseVec3(context, requireChild(context, node, "center"));
             const pugi::xml_node radius = requireChild(context, node, "radius");
             shape.radius = parseScalar(context, radius);
-            if (!(shape.radius > 0.0f)) context.fail(radius, "radius must be positive", elementText(radius));
+            if (const std::string p = rules::radiusProblem(shape.radius); !p.empty()) context.fail(radius, p, elementText(radius));
             break;
         }
         case ShapeType::Box: {
@@ -59,22 +37,18 @@ void parseGeometry(const ParseContext& context, pugi::xml_node node, Shape& shap
             const pugi::xml_node maxPt = requireChild(context, node, "maxPt");
             shape.minPt = parseVec3(context, minPt);
             shape.maxPt = parseVec3(context, maxPt);
-            for (int axis = 0; axis < 3; ++axis) {
-                if (shape.minPt[axis] > shape.maxPt[axis])
-                    context.fail(minPt, std::string("greater than maxPt on the ") + "xyz"[axis] + " axis",
-                                 elementText(minPt) + " > " + elementText(maxPt));
-            }
+            if (const std::string p = rules::boxProblem(shape.minPt, shape.maxPt); !p.empty())
+                context.fail(minPt, p, elementText(minPt) + " > " + elementText(maxPt));
             break;
         }
         case ShapeType::Triangle: {
             shape.v0 = parseVec3(context, requireChild(context, node, "v0"));
             shape.v1 = parseVec3(context, requireChild(context, node, "v1"));
             shape.v2 = parseVec3(context, requireChild(context, node, "v2"));
-            if (glm::length(glm::cross(shape.v1 - shape.v0, shape.v2 - shape.v0)) == 0.0f)
-                context.warn(node, "degenerate triangle (zero area), it is never hit", shape.name);
+            if (rules::isDegenerateTriangle(shape.v0, shape.v1, shape.v2)) context.warn(node, rules::kDegenerateTriangle, shape.name);
             break;
         }
-        case ShapeType::Mesh: shape.mesh = meshes.meshFor(context, requireChild(context, node, "file")); break;
+        case ShapeType::Mesh: shape.mesh = meshOf(context, requireChild(context, node, "file"), meshes); break;
     }
 }
 

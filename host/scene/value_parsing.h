@@ -1,4 +1,4 @@
-// Numbers in element text: "0 3.0 4.0", ".8", "1.", "-0.0", with any surrounding whitespace.
+// Numbers in XML element text (number_text.h reads them; this reports at the element).
 // Values are read the way the course's C++ read them (istream >> float, one after the other), so
 // that the real files load; anything the course code would have read differently from what the
 // text says is an error, and anything it silently repaired is a warning (an error when strict).

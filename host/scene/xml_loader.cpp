@@ -10,6 +10,8 @@
 #include "camera_parsing.h"
 #include "light_parsing.h"
 #include "parse_context.h"
+#include "render_fallbacks.h"
+#include "scene_rules.h"
 #include "shader_parsing.h"
 #include "shape_parsing.h"
 #include "texture_loading.h"
@@ -79,11 +81,11 @@ private:
             context_.warn(node, "duplicate texture name, the first definition is kept", name);
             return;
         }
-        const std::string path = (context_.sceneDirectory / relative).lexically_normal().string();
+        const std::string path = rules::resolveScenePath(context_.sceneDirectory, relative);
         std::string error;
         std::optional<Texture> texture = loadTextureImage(path, error);
         if (!texture) {
-            context_.warn(source, error + "; shaders using texture '" + name + "' show their tint colour", path);
+            context_.warn(source, rules::missingTextureProblem(error, name), path);
             textures_[name] = kNoTexture;
             return;
         }
@@ -99,6 +101,9 @@ private:
         const std::string name = node.attribute("name").value();
         if (name.empty() && !inlineInShape) context_.fail(node, "missing required attribute name");
         Shader shader = parseShader(context_, node, textures_);
+        if (shader.diffuseBounce && fallbacks_.first(Fallback::Diffuse)) context_.warn(node, fallbackProblem(Fallback::Diffuse), name);
+        if (shader.emission != glm::vec3(0.0f) && fallbacks_.first(Fallback::EmitterShader))
+            context_.warn(node, fallbackProblem(Fallback::EmitterShader), name);
         if (!name.empty()) {
             if (const auto found = shaderByName_.find(name); found != shaderByName_.end()) {
                 const int kept = found->second;
@@ -127,7 +132,7 @@ private:
 
     // Geometry with its shader, as a loose shape or a prototype.
     Shape parseShape(pugi::xml_node node, ShapeType type) {
-        std::vector<std::string_view> allowed = geometryChildren(type);
+        std::vector<std::string_view> allowed = rules::geometryKeys(type);
         allowed.push_back("shader");
         if (isElement(node, "shape")) allowed.push_back("transform");
         checkChildren(context_, node, allowed);
@@ -149,7 +154,7 @@ private:
             context_.warn(node, "duplicate instance name, the first definition is kept", name);
             return;
         }
-        const std::optional<ShapeType> type = shapeTypeFromName(typeName);
+        const std::optional<ShapeType> type = rules::shapeType(typeName);
         if (!type) {
             context_.warn(node, "unknown prototype type, skipped", typeName);
             prototypeByName_[name] = -1;
@@ -183,7 +188,7 @@ private:
             return;
         }
         checkAttributes(context_, node, {"type"});
-        const std::optional<ShapeType> type = shapeTypeFromName(typeName);
+        const std::optional<ShapeType> type = rules::shapeType(typeName);
         if (!type) {
             context_.warn(node, "unknown shape type, skipped", typeName);
             return;
@@ -204,7 +209,8 @@ private:
     }
 
     // Background and environment map: <sceneParameters> children win over the root attributes
-    // (FORMAT.md §7.3). Environment maps are recorded, not rendered; a warning says so.
+    // (FORMAT.md §7.3). Environment maps are recorded (resolved against the scene file), not
+    // rendered; a warning says so (render_fallbacks.h).
     void readSceneParameters(pugi::xml_node root, pugi::xml_node parameters) {
         if (const pugi::xml_attribute bg = root.attribute("bgColor"))
             scene_.background = parseVec3Text(context_, root, "scene bgColor", bg.value());
@@ -226,8 +232,8 @@ private:
             if (const pugi::xml_node camera = parameters.child("camera")) selectCamera(camera);
         }
         if (!envPrefix.empty()) {
-            scene_.envMapPrefix = envPrefix;
-            context_.warn(envNode, "environment maps are not rendered, the background colour is used", envPrefix);
+            scene_.envMapPrefix = rules::resolveScenePath(context_.sceneDirectory, envPrefix);
+            if (fallbacks_.first(Fallback::EnvironmentMap)) context_.warn(envNode, fallbackProblem(Fallback::EnvironmentMap), envPrefix);
         }
     }
 
@@ -249,12 +255,13 @@ private:
     std::map<std::string, int> shaderByName_;
     std::map<const void*, int> inlineShaders_;   // inline <shader> node -> index into Scene::shaders
     std::map<std::string, int> prototypeByName_; // -1: a skipped (unknown-type) prototype
+    FallbackNotes fallbacks_;
 };
 
 }  // namespace
 
-Scene loadScene(const std::string& path, const LoadOptions& options, Diagnostics& diagnostics) {
-    const XmlSource source(path);
+Scene loadXmlScene(const std::string& path, const std::string& text, const LoadOptions& options, Diagnostics& diagnostics) {
+    const XmlSource source(path, text);
     const ParseContext context{source, diagnostics, options.strict,
                                std::filesystem::path(path).parent_path()};
     const pugi::xml_node root = source.root();

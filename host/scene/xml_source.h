@@ -4,16 +4,17 @@
 
 #include <memory>
 #include <string>
-#include <vector>
 
 #include <pugixml.hpp>
+
+#include "source_text.h"
 
 namespace vkrt {
 
 class XmlSource {
 public:
-    // Throws SceneError for a missing, unreadable or malformed file.
-    explicit XmlSource(std::string path);
+    // `text` is the file's content (readSourceFile). Throws SceneError for malformed XML.
+    XmlSource(std::string path, const std::string& text);
 
     const std::string& path() const { return path_; }
     pugi::xml_node root() const { return document_->document_element(); }
@@ -24,7 +25,7 @@ public:
 private:
     std::string path_;
     std::unique_ptr<pugi::xml_document> document_;  // pugi documents cannot be moved in all builds
-    std::vector<std::ptrdiff_t> newlineOffsets_;
+    LineIndex lines_;
 };
 
 }  // namespace vkrt

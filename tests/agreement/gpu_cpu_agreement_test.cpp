@@ -24,8 +24,8 @@
 #include "image.h"
 #include "image_compare.h"
 #include "node_packing.h"
+#include "scene_loader.h"
 #include "test_paths.h"
-#include "xml_loader.h"
 
 namespace vkrt {
 namespace {

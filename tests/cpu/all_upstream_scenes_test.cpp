@@ -10,8 +10,8 @@
 #include <gtest/gtest.h>
 
 #include "analytic_scene.h"
+#include "scene_loader.h"
 #include "test_paths.h"
-#include "xml_loader.h"
 
 namespace vkrt::test {
 namespace {

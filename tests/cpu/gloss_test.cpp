@@ -1,5 +1,6 @@
 // Glossy reflection directions (RENDERING.md §5): uniform offsets in [-a/2, a/2] along two
 // directions perpendicular to the mirror direction r, so their mean is r.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -46,6 +47,38 @@ TEST(Gloss, OffsetsAreUniformInTheSquareOfSideRoughness) {
         EXPECT_LE(max2, a * a / 2.0 + 1e-6);
         EXPECT_GT(max2, 0.9 * a * a / 2.0);  // the corners of the square are reached
     }
+}
+
+// Roughness is not clamped (RENDERING.md §5): above 1 the square of side a still holds, so
+// CornellBox_Specular.json's Mirror at 1.4 spreads its reflections up to atan(1.4 / sqrt 2) =
+// 44.7 degrees from the mirror direction, uniformly in the square, not in angle.
+TEST(Gloss, RoughnessAboveOneKeepsTheSquareOfSideRoughness) {
+    const glm::uvec4 grid = gpu::makeSampleGrid(1024);
+    for (const glm::vec3& r : kMirrorDirections)
+        for (float a : {1.4f, 3.0f, 1e6f}) {
+            double sum2 = 0.0, max2 = 0.0;
+            for (unsigned s = 0; s < 1024; ++s) {
+                const glm::dvec3 g(glossyDirection(r, a, gpu::sample2D(gpu::SAMPLER_JITTERED, grid, 5, s, gpu::dimGloss(0), 1)));
+                EXPECT_NEAR(glm::length(g), 1.0, 1e-6);
+                const glm::dvec3 offset = g / glm::dot(g, glm::dvec3(r)) - glm::dvec3(r);
+                EXPECT_NEAR(glm::dot(offset, glm::dvec3(r)), 0.0, 1e-5 * (1.0 + a));
+                sum2 += glm::dot(offset, offset);
+                max2 = std::max(max2, glm::dot(offset, offset));
+            }
+            const double a2 = static_cast<double>(a) * a;
+            EXPECT_NEAR(sum2 / 1024.0 / a2, 2.0 / 12.0, 2e-3) << "roughness " << a;  // uniform offsets in [-a/2, a/2]^2
+            EXPECT_LE(max2 / a2, 0.5 + 1e-4) << "roughness " << a;
+            EXPECT_GT(max2 / a2, 0.9 * 0.5) << "roughness " << a;
+        }
+}
+
+TEST(Gloss, ACornerSampleLeavesTheMirrorDirectionByAtanOfRoughnessOverRootTwo) {
+    for (const glm::vec3& r : kMirrorDirections)
+        for (float a : {0.5f, 1.0f, 1.4f, 4.0f}) {
+            const glm::vec3 g = glossyDirection(r, a, glm::vec2(0.0f, 0.0f));  // offset (-a/2, -a/2)
+            const double angle = std::acos(std::min(1.0, static_cast<double>(glm::dot(g, r))));
+            EXPECT_NEAR(angle, std::atan(a / std::sqrt(2.0)), 1e-5) << "roughness " << a;
+        }
 }
 
 TEST(Gloss, RoughnessZeroIsTheMirrorDirectionBitForBit) {

@@ -30,8 +30,8 @@
 #include "analytic_scene.h"
 #include "image_compare.h"
 #include "scene_accel.h"
+#include "scene_loader.h"
 #include "test_paths.h"
-#include "xml_loader.h"
 
 namespace vkrt::test {
 namespace {

@@ -11,6 +11,12 @@ TEST(Diagnostics, MessageNamesFileLineElementProblemAndQuotedValue) {
     EXPECT_EQ(issue.message(), "dir/scene.xml:12: radius: radius must be positive '-1'");
 }
 
+TEST(Diagnostics, AJsonMessageNamesTheColumnAndThePath) {
+    Issue issue{"dir/scene.json", 12, "scene.shape[3].radius", "radius must be positive", "-1"};
+    issue.column = 17;
+    EXPECT_EQ(issue.message(), "dir/scene.json:12:17: scene.shape[3].radius: radius must be positive '-1'");
+}
+
 TEST(Diagnostics, MessageOmitsQuotesWhenThereIsNoValue) {
     const Issue issue{"a.xml", 3, "shape", "missing required element <radius>", ""};
     EXPECT_EQ(issue.message(), "a.xml:3: shape: missing required element <radius>");

@@ -20,6 +20,65 @@ int lineOf(const std::string& text, const std::string& needle) {
     return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
 }
 
+int columnOf(const std::string& text, const std::string& needle) {
+    const std::size_t at = text.find(needle);
+    EXPECT_NE(at, std::string::npos) << "test bug: '" << needle << "' not in the text";
+    const std::size_t lineStart = text.rfind('\n', at == 0 ? 0 : at - 1);
+    return static_cast<int>(lineStart == std::string::npos || at == 0 ? at + 1 : at - lineStart);
+}
+
+std::string jsonWith(const std::string& members) {
+    return "{\n\"scene\": {\n\"camera\": [{\"position\": \"0 0 0\", \"viewDir\": \"0 0 -1\", \"_name\": \"main\"}]" +
+           (members.empty() ? std::string() : ",\n" + members) + "\n}\n}\n";
+}
+
+void expectConsistent(const Scene& scene) {
+    ASSERT_FALSE(scene.cameras.empty());
+    EXPECT_GE(scene.defaultCamera, 0);
+    EXPECT_LT(scene.defaultCamera, static_cast<int>(scene.cameras.size()));
+    const int shaders = static_cast<int>(scene.shaders.size());
+    const auto checkShape = [&](const Shape& shape, bool shaderRequired) {
+        if (shaderRequired) EXPECT_GE(shape.shader, 0) << shape.name;
+        EXPECT_GE(shape.shader, -1) << shape.name;
+        EXPECT_LT(shape.shader, shaders) << shape.name;
+        if (shape.type == ShapeType::Mesh) {
+            ASSERT_GE(shape.mesh, 0);
+            ASSERT_LT(shape.mesh, static_cast<int>(scene.meshes.size()));
+        }
+    };
+    for (const Shape& shape : scene.shapes) checkShape(shape, true);
+    for (const Shape& shape : scene.prototypes) checkShape(shape, true);
+    for (const Instance& instance : scene.instances) {
+        EXPECT_GE(instance.prototype, 0);
+        EXPECT_LT(instance.prototype, static_cast<int>(scene.prototypes.size()));
+        EXPECT_GE(instance.shaderOverride, -1);
+        EXPECT_LT(instance.shaderOverride, shaders);
+    }
+    for (const Emitter& emitter : scene.emitters) {
+        EXPECT_GE(emitter.prototype, -1);
+        EXPECT_LT(emitter.prototype, static_cast<int>(scene.prototypes.size()));
+        if (emitter.prototype < 0) checkShape(emitter.shape, false);
+    }
+    int standIns = 0;
+    for (const Light& light : scene.lights) {
+        EXPECT_GE(light.emitterStandIn, -1);
+        EXPECT_LT(light.emitterStandIn, static_cast<int>(scene.emitters.size()));
+        standIns += light.emitterStandIn >= 0;
+    }
+    EXPECT_EQ(standIns, static_cast<int>(scene.emitters.size()));  // one stand-in per emitter
+    for (const Shader& shader : scene.shaders) {
+        EXPECT_GE(shader.diffuseTexture, kNoTexture);
+        EXPECT_LT(shader.diffuseTexture, static_cast<int>(scene.textures.size()));
+        EXPECT_LT(shader.specularTexture, static_cast<int>(scene.textures.size()));
+    }
+    for (const Texture& texture : scene.textures)
+        EXPECT_EQ(texture.rgba8.size(), static_cast<std::size_t>(texture.width) * texture.height);
+    for (const Mesh& mesh : scene.meshes) {
+        EXPECT_EQ(mesh.normals.size(), mesh.positions.size());
+        EXPECT_FALSE(mesh.triangles.empty());
+    }
+}
+
 void SceneFiles::SetUp() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     dir = std::filesystem::temp_directory_path() /
@@ -27,6 +86,7 @@ void SceneFiles::SetUp() {
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     scenePath = (dir / "scene.xml").string();
+    jsonPath = (dir / "scene.json").string();
 }
 
 void SceneFiles::TearDown() { std::filesystem::remove_all(dir); }
@@ -43,6 +103,54 @@ Scene SceneFiles::load(const std::string& xml, Diagnostics& diagnostics, bool st
     LoadOptions options;
     options.strict = strict;
     return loadScene(scenePath, options, diagnostics);
+}
+
+Scene SceneFiles::loadJson(const std::string& json, Diagnostics& diagnostics, bool strict) const {
+    write("scene.json", json);
+    LoadOptions options;
+    options.strict = strict;
+    return loadScene(jsonPath, options, diagnostics);
+}
+
+Scene SceneFiles::loadJsonClean(const std::string& json) const {
+    Diagnostics diagnostics;
+    Scene scene = loadJson(json, diagnostics);
+    EXPECT_TRUE(diagnostics.warnings().empty()) << "first warning: " << diagnostics.messages().front();
+    return scene;
+}
+
+Issue SceneFiles::jsonErrorOf(const std::string& json, bool strict) const {
+    Diagnostics diagnostics;
+    try {
+        loadJson(json, diagnostics, strict);
+    } catch (const SceneError& error) {
+        return error.issue();
+    }
+    ADD_FAILURE() << "expected a SceneError";
+    return {};
+}
+
+void SceneFiles::expectJsonIssue(const Issue& issue, int line, int column, const std::string& element,
+                                 const std::string& value) const {
+    EXPECT_EQ(issue.file, jsonPath);
+    EXPECT_EQ(issue.line, line);
+    EXPECT_EQ(issue.column, column);
+    EXPECT_EQ(issue.element, element);
+    EXPECT_EQ(issue.value, value);
+    const std::string message = issue.message();
+    const std::string head = jsonPath + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + element + ": ";
+    EXPECT_EQ(message.rfind(head, 0), 0u) << message;
+    if (!value.empty()) {
+        const std::string tail = " '" + value + "'";
+        EXPECT_TRUE(message.size() >= tail.size() && message.compare(message.size() - tail.size(), tail.size(), tail) == 0)
+            << message;
+    }
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+void SceneFiles::expectJsonIssueAt(const Issue& issue, const std::string& json, const std::string& needle,
+                                   const std::string& element, const std::string& value) const {
+    expectJsonIssue(issue, lineOf(json, needle), columnOf(json, needle), element, value);
 }
 
 Scene SceneFiles::loadClean(const std::string& xml) const {

@@ -158,10 +158,33 @@ TEST_F(ShaderParsing, NegativeRoughnessIsAnError) {
     expectIssue(errorOf(xml), 4, "roughness", "-0.1");
 }
 
-TEST_F(ShaderParsing, JsonEraDiffuseIsLambertian) {
-    const Scene scene = loadClean(sceneWith("<shader name=\"d\" type=\"Diffuse\"><diffuse>0.2 0.3 0.4</diffuse></shader>"));
-    EXPECT_EQ(scene.shaders[0].type, ShaderType::Lambertian);
+TEST_F(ShaderParsing, JsonEraDiffuseIsLambertianMarkedAsABounceWithOneWarningPerScene) {
+    const std::string xml = sceneWith("<shader name=\"d\" type=\"Diffuse\"><diffuse>0.2 0.3 0.4</diffuse></shader>\n"
+                                      "<shader name=\"e\" type=\"Diffuse\"><diffuse>1 1 1</diffuse></shader>\n"
+                                      "<shader name=\"l\" type=\"Lambertian\"><diffuse>1 1 1</diffuse></shader>");
+    Diagnostics diagnostics;
+    const Scene scene = load(xml, diagnostics);
+    EXPECT_EQ(scene.shaders[0].type, ShaderType::Lambertian);  // how it renders until path tracing (render_fallbacks.h)
+    EXPECT_TRUE(scene.shaders[0].diffuseBounce);               // what the file said
+    EXPECT_TRUE(scene.shaders[1].diffuseBounce);
+    EXPECT_FALSE(scene.shaders[2].diffuseBounce);
     EXPECT_EQ(scene.shaders[0].diffuse, glm::vec3(0.2f, 0.3f, 0.4f));
+    ASSERT_EQ(diagnostics.warnings().size(), 1u);
+    expectIssue(diagnostics.warnings()[0], 4, "shader", "d");
+    EXPECT_EQ(diagnostics.warnings()[0].problem, "Diffuse rendered as Lambertian (direct light only, no diffuse interreflection)");
+}
+
+TEST_F(ShaderParsing, EmitterIsABlackLambertianKeepingItsEmissionWithOneWarning) {
+    const std::string xml = sceneWith("<shader name=\"lamp\" type=\"Emitter\"><emission>2 2 1</emission></shader>\n"
+                                      "<shader name=\"dark\" type=\"Emitter\"/>");
+    Diagnostics diagnostics;
+    const Scene scene = load(xml, diagnostics);
+    EXPECT_EQ(scene.shaders[0].type, ShaderType::Lambertian);
+    EXPECT_EQ(scene.shaders[0].diffuse, glm::vec3(0.0f));
+    EXPECT_EQ(scene.shaders[0].emission, glm::vec3(2, 2, 1));
+    EXPECT_EQ(scene.shaders[1].emission, glm::vec3(0.0f));  // black: the fallback is exact, nothing to warn about
+    ASSERT_EQ(diagnostics.warnings().size(), 1u);
+    expectIssue(diagnostics.warnings()[0], 4, "shader", "lamp");
 }
 
 TEST_F(ShaderParsing, UnknownAttributeAndRepeatedChildWarn) {

@@ -5,8 +5,8 @@
 
 #include "diagnostics.h"
 #include "scene_builder.h"
+#include "scene_loader.h"
 #include "test_paths.h"
-#include "xml_loader.h"
 
 namespace vkrt::test {
 

@@ -19,7 +19,7 @@
 #include "cpu_renderer.h"
 #include "gpu_renderer.h"
 #include "image_compare.h"
-#include "xml_loader.h"
+#include "scene_loader.h"
 
 namespace vkrt::bench {
 

@@ -1,0 +1,189 @@
+#include "json_context.h"
+
+#include <algorithm>
+
+#include "number_text.h"
+
+namespace vkrt {
+
+namespace {
+
+bool listed(const std::vector<std::string_view>& names, std::string_view name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+}  // namespace
+
+Issue JsonContext::issueAtOffset(std::ptrdiff_t offset, const std::string& path, std::string problem, std::string value) const {
+    return Issue{source.path(), source.lineOf(offset), path.empty() ? "json" : path, std::move(problem), std::move(value),
+                 source.columnOf(offset)};
+}
+
+Issue JsonContext::issueAt(const JsonNode& node, std::string problem, std::string value) const {
+    const JsonSource::Span* span = source.spanOf(node.path);
+    return issueAtOffset(span ? span->begin : 0, node.path, std::move(problem), std::move(value));
+}
+
+Issue JsonContext::issueAtKey(const JsonNode& node, std::string problem, std::string value) const {
+    const JsonSource::Span* span = source.spanOf(node.path);
+    const std::ptrdiff_t at = span ? (span->key >= 0 ? span->key : span->begin) : 0;
+    return issueAtOffset(at, node.path, std::move(problem), std::move(value));
+}
+
+void JsonContext::warn(Issue issue) const {
+    if (strict) throw SceneError(std::move(issue));
+    diagnostics.warn(std::move(issue));
+}
+
+void JsonContext::warn(const JsonNode& node, std::string problem, std::string value) const {
+    warn(issueAt(node, std::move(problem), std::move(value)));
+}
+
+void JsonContext::warnAtKey(const JsonNode& node, std::string problem, std::string value) const {
+    warn(issueAtKey(node, std::move(problem), std::move(value)));
+}
+
+void JsonContext::fail(const JsonNode& node, std::string problem, std::string value) const {
+    throw SceneError(issueAt(node, std::move(problem), std::move(value)));
+}
+
+SourceLocation JsonContext::locationOf(const JsonNode& node) const {
+    const Issue issue = issueAt(node, "");
+    return {issue.file, issue.line, issue.column};
+}
+
+JsonNode member(const JsonNode& object, std::string_view key) {
+    JsonNode node{nullptr, memberPath(object.path, std::string(key))};
+    if (object && object->is_object()) {
+        const auto found = object->find(key);
+        if (found != object->end()) node.value = &*found;
+    }
+    return node;
+}
+
+JsonNode attributeMember(const JsonContext& context, const JsonNode& object, std::string_view name) {
+    std::string underscoredKey(1, '_');  // (not "_" + name: GCC 12 warns falsely about that)
+    underscoredKey += name;
+    const JsonNode plain = member(object, name);
+    const JsonNode underscored = member(object, underscoredKey);
+    if (plain && underscored)
+        context.warnAtKey(underscored, "both " + std::string(name) + " and " + underscoredKey + " given, " +
+                                           std::string(name) + " is used");
+    return plain ? plain : underscored;
+}
+
+void checkKeys(const JsonContext& context, const JsonNode& object, const std::vector<std::string_view>& allowed,
+               const std::vector<std::string_view>& attributes) {
+    if (!object || !object->is_object()) return;
+    for (const auto& [key, value] : object->items()) {
+        const std::string_view name = key;
+        const bool attribute = listed(attributes, name) || (name.size() > 1 && name[0] == '_' && listed(attributes, name.substr(1)));
+        if (attribute || listed(allowed, name)) continue;
+        context.warnAtKey(member(object, key), "unknown key, ignored");
+    }
+}
+
+void requireObject(const JsonContext& context, const JsonNode& node) {
+    if (!node->is_object()) context.fail(node, std::string("expected an object, found ") + typeName(*node), quoted(context, node));
+}
+
+JsonNode requireMember(const JsonContext& context, const JsonNode& object, std::string_view key) {
+    JsonNode node = member(object, key);
+    if (!node) context.fail(object, "missing required key " + std::string(key));
+    return node;
+}
+
+JsonNode requireAttribute(const JsonContext& context, const JsonNode& object, std::string_view name) {
+    JsonNode node = attributeMember(context, object, name);
+    if (!node) {
+        std::string problem = "missing required key _";
+        problem += name;
+        context.fail(object, problem + " (or " + std::string(name) + ")");
+    }
+    return node;
+}
+
+std::vector<JsonNode> objectsOf(const JsonContext& context, const JsonNode& list) {
+    std::vector<JsonNode> objects;
+    if (!list) return objects;
+    if (list->is_object()) {
+        objects.push_back(list);
+    } else if (list->is_array()) {
+        for (std::size_t i = 0; i < list->size(); ++i) {
+            JsonNode element{&(*list)[i], elementPath(list.path, i)};
+            requireObject(context, element);
+            objects.push_back(std::move(element));
+        }
+    } else {
+        context.fail(list, std::string("expected an array of objects, found ") + typeName(*list), quoted(context, list));
+    }
+    return objects;
+}
+
+const char* typeName(const Json& value) {
+    switch (value.type()) {
+        case Json::value_t::object: return "an object";
+        case Json::value_t::array: return "an array";
+        case Json::value_t::string: return "a string";
+        case Json::value_t::boolean: return "a boolean";
+        case Json::value_t::null: return "null";
+        case Json::value_t::number_integer:
+        case Json::value_t::number_unsigned:
+        case Json::value_t::number_float: return "a number";
+        default: return "a value";
+    }
+}
+
+std::string quoted(const JsonContext& context, const JsonNode& node) {
+    if (!node) return "";
+    if (node->is_string()) return node->get<std::string>();
+    const std::string written = context.source.textOf(node.path);
+    return written.empty() ? node->dump() : written;
+}
+
+std::string readText(const JsonContext& context, const JsonNode& node) {
+    if (!node->is_string()) context.fail(node, std::string("expected a string, found ") + typeName(*node), quoted(context, node));
+    return node->get<std::string>();
+}
+
+std::string readString(const JsonContext& context, const JsonNode& node) {
+    std::string text = readText(context, node);
+    if (text.empty()) context.fail(node, "empty string");
+    return text;
+}
+
+float readScalar(const JsonContext& context, const JsonNode& node) {
+    if (node->is_number()) {
+        const std::optional<float> value = finiteFloat(node->get<double>());
+        if (!value) context.fail(node, kNotAFiniteFloat, quoted(context, node));
+        return *value;
+    }
+    if (node->is_string()) {
+        const std::string text = node->get<std::string>();
+        const NumberText number = readNumberText(text, 1);
+        if (!number.error.empty()) context.fail(node, number.error, number.errorValue);
+        context.warn(node, "a number written as a string, read as a number", text);
+        if (number.irregular) context.warn(node, irregularNumberProblem(number, 1), text);
+        return number.values[0];
+    }
+    context.fail(node, std::string("expected a number, found ") + typeName(*node), quoted(context, node));
+}
+
+glm::vec3 readVec3(const JsonContext& context, const JsonNode& node) {
+    if (node->is_string()) {
+        const std::string text = node->get<std::string>();
+        const NumberText numbers = readNumberText(text, 3);
+        if (!numbers.error.empty()) context.fail(node, numbers.error, numbers.errorValue);
+        if (numbers.irregular) context.warn(node, irregularNumberProblem(numbers, 3), text);
+        return {numbers.values[0], numbers.values[1], numbers.values[2]};
+    }
+    if (node->is_array()) {
+        if (node->size() != 3) context.fail(node, "expected 3 numbers, found " + std::to_string(node->size()), quoted(context, node));
+        glm::vec3 v;
+        for (std::size_t i = 0; i < 3; ++i) v[static_cast<int>(i)] = readScalar(context, {&(*node)[i], elementPath(node.path, i)});
+        return v;
+    }
+    context.fail(node, std::string("expected 3 numbers (a string or an array), found ") + typeName(*node), quoted(context, node));
+}
+
+}  // namespace vkrt

@@ -1,0 +1,575 @@
+#include "json_loader.h"
+
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string_view>
+#include <vector>
+
+#include "json_context.h"
+#include "json_source.h"
+#include "mesh_library.h"
+#include "render_fallbacks.h"
+#include "scene_rules.h"
+#include "texture_loading.h"
+
+// Sections (§) are docs/JSON_FORMAT.md's.
+namespace vkrt {
+
+namespace {
+
+using Keys = std::vector<std::string_view>;
+
+// Shader keys: XML's parameters except the 2012 <diffusetex>, which JSON files never had.
+const Keys& jsonShaderParameters() {
+    static const Keys keys = [] {
+        Keys all;
+        for (std::string_view name : rules::shaderParameters())
+            if (name != "diffusetex") all.push_back(name);
+        return all;
+    }();
+    return keys;
+}
+
+bool contains(const Keys& keys, std::string_view key) { return std::find(keys.begin(), keys.end(), key) != keys.end(); }
+
+// What a shape object is for: its shader is required (loose shapes; prototypes, where a
+// dangling reference is only a warning, §3.5) or optional (an emitter's, replaced by its
+// radiance); prototypes take no transform.
+enum class ShapeRole { Loose, Prototype, Emitter };
+
+// Two passes, as XML (§1), so that key and array order never matter:
+//   1. definitions by name: textures, shaders, prototypes (`instance[]`);
+//   2. cameras, lights (shape lights included), shapes and instances, background.
+class JsonSceneBuilder {
+public:
+    JsonSceneBuilder(const JsonContext& context, Scene& scene) : context_(context), scene_(scene), meshes_(scene.meshes) {}
+
+    void build(const JsonNode& root) {
+        requireObject(context_, root);
+        for (const JsonSource::RepeatedKey& repeated : context_.source.repeatedKeys())
+            context_.warn(context_.issueAtOffset(repeated.key, repeated.path, "repeated key, the first value is used"));
+        // J26: the document's "scene" member, or the document itself (§1).
+        JsonNode scene = root;
+        if (JsonNode wrapped = member(root, "scene")) {
+            checkKeys(context_, root, {"scene"});
+            requireObject(context_, wrapped);
+            scene = wrapped;
+        }
+        checkKeys(context_, scene,
+                  {"camera", "light", "shader", "shape", "texture", "instance", "sceneParameters", "_bgColor", "bgColor"});
+
+        for (const JsonNode& node : objectsOf(context_, member(scene, "texture"))) defineTexture(node);
+        for (const JsonNode& node : objectsOf(context_, member(scene, "shader"))) defineShader(node);
+        for (const JsonNode& node : objectsOf(context_, member(scene, "instance"))) definePrototype(node);
+
+        for (const JsonNode& node : objectsOf(context_, member(scene, "camera"))) scene_.cameras.push_back(parseCamera(node));
+        for (const JsonNode& node : objectsOf(context_, member(scene, "light"))) placeLight(node);
+        for (const JsonNode& node : objectsOf(context_, member(scene, "shape"))) placeShape(node);
+        if (scene_.cameras.empty()) context_.fail(scene, "the scene has no camera");
+        readBackground(scene);
+    }
+
+private:
+    // --- pass 1 ---
+    void defineTexture(const JsonNode& node) {
+        checkKeys(context_, node, {"sourcefile"}, {"name", "type"});
+        const std::string name = readString(context_, requireAttribute(context_, node, "name"));
+        if (const JsonNode type = attributeMember(context_, node, "type")) {
+            const std::string typeText = readText(context_, type);
+            if (typeText != "image") context_.warn(type, "unknown texture type, read as an image file", typeText);
+        }
+        const JsonNode source = requireMember(context_, node, "sourcefile");
+        const std::string relative = readString(context_, source);
+        if (textures_.count(name)) {
+            context_.warn(node, "duplicate texture name, the first definition is kept", name);
+            return;
+        }
+        const std::string path = rules::resolveScenePath(context_.sceneDirectory, relative);
+        std::string error;
+        std::optional<Texture> texture = loadTextureImage(path, error);
+        if (!texture) {
+            context_.warn(source, rules::missingTextureProblem(error, name), path);
+            textures_[name] = kNoTexture;
+            return;
+        }
+        texture->name = name;
+        texture->where = context_.locationOf(node);
+        textures_[name] = static_cast<int>(scene_.textures.size());
+        scene_.textures.push_back(std::move(*texture));
+    }
+
+    void defineShader(const JsonNode& node) {
+        checkKeys(context_, node, jsonShaderParameters(), {"name", "type"});
+        const std::string name = readString(context_, requireAttribute(context_, node, "name"));
+        const JsonNode typeNode = requireAttribute(context_, node, "type");
+        const std::string typeText = readString(context_, typeNode);
+        const std::optional<rules::ShaderTypeName> known = rules::shaderType(typeText);
+        if (!known) context_.warn(typeNode, rules::kUnknownShaderType, typeText);
+        const rules::ShaderTypeName type = known.value_or(rules::ShaderTypeName{});
+
+        Shader shader;
+        shader.name = name;
+        shader.type = type.type;
+        shader.diffuseBounce = type.diffuseBounce;
+        shader.where = context_.locationOf(node);
+        // As XML: an unknown type's parameters are covered by its one warning; a known type's
+        // parameter it does not read is a warning each (§3.3).
+        const Keys used = rules::shaderParametersUsedBy(type);
+        if (known)
+            for (const auto& item : node->items())
+                if (contains(jsonShaderParameters(), item.key()) && !contains(used, item.key()))
+                    context_.warnAtKey(member(node, item.key()), rules::unusedParameterProblem(type));
+        auto parameter = [&](std::string_view key) { return contains(used, key) ? member(node, key) : JsonNode{}; };
+
+        if (const JsonNode e = parameter("diffuse")) {
+            shader.diffuse = readColour(e, shader.diffuseTexture);
+        } else if (contains(used, "diffuse")) {
+            shader.diffuse = glm::vec3(rules::kMissingDiffuseGrey);
+            if (known) context_.warn(node, "no diffuse colour, using grey 0.5", name);
+        }
+        if (const JsonNode e = parameter("specular")) shader.specular = readColour(e, shader.specularTexture);
+        if (const JsonNode e = parameter("phongExp")) shader.phongExp = readChecked(e, rules::nonNegativeProblem);
+        if (const JsonNode e = parameter("mirrorCoef")) shader.mirrorCoef = readScalar(context_, e);
+        if (const JsonNode e = parameter("roughness")) shader.roughness = readChecked(e, rules::nonNegativeProblem);
+        if (const JsonNode e = parameter("refractiveIndex")) shader.refractiveIndex = readChecked(e, rules::refractiveIndexProblem);
+        if (const JsonNode e = parameter("attenuationCoef")) shader.attenuation = readVec3(context_, e);
+        if (type.emitter) {
+            shader.diffuse = glm::vec3(0.0f);  // an emitter reflects nothing (render_fallbacks.h)
+            if (const JsonNode e = parameter("emission")) shader.emission = readVec3(context_, e);
+        }
+        rules::resolveLegacyShaderType(shader);
+
+        if (shader.diffuseBounce && fallbacks_.first(Fallback::Diffuse)) context_.warn(typeNode, fallbackProblem(Fallback::Diffuse), name);
+        if (shader.emission != glm::vec3(0.0f) && fallbacks_.first(Fallback::EmitterShader))
+            context_.warn(typeNode, fallbackProblem(Fallback::EmitterShader), name);
+        if (const auto found = shaderByName_.find(name); found != shaderByName_.end()) {
+            context_.warn(node, "duplicate shader name, the first definition (line " +
+                                    std::to_string(scene_.shaders[found->second].where.line) + ") is kept", name);
+            return;
+        }
+        shaderByName_[name] = static_cast<int>(scene_.shaders.size());
+        scene_.shaders.push_back(std::move(shader));
+    }
+
+    // A colour: a vec3, or {"tex": T, "data": c} (G2), or {"_tex": T, "__text": c} (the first
+    // conversion); an object without a colour is white (J26), so its texture shows as it is (§3.3).
+    glm::vec3 readColour(const JsonNode& node, int& texture) {
+        if (!node->is_object()) return readVec3(context_, node);
+        checkKeys(context_, node, {"data", "__text"}, {"tex"});
+        const JsonNode data = member(node, "data");
+        const JsonNode text = member(node, "__text");
+        if (data && text) context_.warnAtKey(text, "both data and __text given, data is used");
+        if (const JsonNode tex = attributeMember(context_, node, "tex")) {
+            const std::string name = readString(context_, tex);
+            const auto found = textures_.find(name);
+            if (found == textures_.end()) context_.fail(tex, "unresolved texture reference", name);
+            texture = found->second;
+        }
+        const JsonNode colour = data ? data : text;
+        return colour ? readVec3(context_, colour) : glm::vec3(1.0f);
+    }
+
+    float readChecked(const JsonNode& node, std::string (*rule)(float)) {
+        const float value = readScalar(context_, node);
+        if (const std::string p = rule(value); !p.empty()) context_.fail(node, p, quoted(context_, node));
+        return value;
+    }
+
+    void definePrototype(const JsonNode& node) {
+        const std::string name = readString(context_, requireAttribute(context_, node, "name"));
+        const JsonNode typeNode = requireAttribute(context_, node, "type");
+        const std::string typeName = readString(context_, typeNode);
+        if (prototypeByName_.count(name)) {
+            context_.warn(node, "duplicate instance name, the first definition is kept", name);
+            return;
+        }
+        const std::optional<ShapeType> type = rules::shapeType(typeName);
+        if (!type) {
+            context_.warn(typeNode, "unknown prototype type, skipped", typeName);
+            prototypeByName_[name] = -1;
+            return;
+        }
+        prototypeByName_[name] = static_cast<int>(scene_.prototypes.size());
+        scene_.prototypes.push_back(parseShape(node, *type, ShapeRole::Prototype));
+    }
+
+    // --- shaders named by shapes ---
+    // The index `{"_ref": name}` names; -1 (after a warning, or an error) when it names nothing.
+    int shaderOf(const JsonNode& reference, ShapeRole role) {
+        requireObject(context_, reference);
+        checkKeys(context_, reference, {}, {"ref"});
+        const JsonNode nameNode = requireAttribute(context_, reference, "ref");
+        const std::string name = readString(context_, nameNode);
+        if (const auto found = shaderByName_.find(name); found != shaderByName_.end()) return found->second;
+        if (role != ShapeRole::Prototype) context_.fail(nameNode, "unresolved shader reference", name);
+        // The corpus's prototypes name shaders that do not exist while every instance names its
+        // own (§3.5): a grey placeholder keeps the model whole, and an instance that would
+        // render with it is an error (placeInstance).
+        context_.warn(nameNode, "unresolved shader reference on a prototype, each of its instances must name a shader", name);
+        auto [it, inserted] = placeholderShaders_.try_emplace(name, static_cast<int>(scene_.shaders.size()));
+        if (inserted) {
+            Shader placeholder;
+            placeholder.name = name;
+            placeholder.diffuse = glm::vec3(rules::kMissingDiffuseGrey);
+            placeholder.where = context_.locationOf(nameNode);
+            scene_.shaders.push_back(placeholder);
+        }
+        return it->second;
+    }
+
+    bool isPlaceholder(int shader) const {
+        for (const auto& [name, index] : placeholderShaders_)
+            if (index == shader) return true;
+        return false;
+    }
+
+    // --- geometry ---
+    Shape parseShape(const JsonNode& node, ShapeType type, ShapeRole role) {
+        Keys allowed = rules::geometryKeys(type);
+        allowed.push_back("shader");
+        if (role != ShapeRole::Prototype) {
+            allowed.push_back("xform");
+            allowed.push_back("transform");
+        }
+        checkKeys(context_, node, allowed, {"name", "type"});
+        Shape shape;
+        if (const JsonNode name = attributeMember(context_, node, "name")) shape.name = readText(context_, name);
+        shape.type = type;
+        shape.where = context_.locationOf(node);
+        parseGeometry(node, shape);
+        const JsonNode reference = member(node, "shader");
+        if (reference) {
+            shape.shader = shaderOf(reference, role);
+        } else if (role != ShapeRole::Emitter) {
+            context_.fail(node, "missing required key shader", shape.name);
+        } else {
+            shape.shader = -1;
+        }
+        return shape;
+    }
+
+    void parseGeometry(const JsonNode& node, Shape& shape) {
+        switch (shape.type) {
+            case ShapeType::Sphere: {
+                shape.center = readVec3(context_, requireMember(context_, node, "center"));
+                shape.radius = readChecked(requireMember(context_, node, "radius"), rules::radiusProblem);
+                break;
+            }
+            case ShapeType::Box: {
+                const JsonNode minPt = requireMember(context_, node, "minPt");
+                const JsonNode maxPt = requireMember(context_, node, "maxPt");
+                shape.minPt = readVec3(context_, minPt);
+                shape.maxPt = readVec3(context_, maxPt);
+                if (const std::string p = rules::boxProblem(shape.minPt, shape.maxPt); !p.empty())
+                    context_.fail(minPt, p, quoted(context_, minPt) + " > " + quoted(context_, maxPt));
+                break;
+            }
+            case ShapeType::Triangle: {
+                shape.v0 = readVec3(context_, requireMember(context_, node, "v0"));
+                shape.v1 = readVec3(context_, requireMember(context_, node, "v1"));
+                shape.v2 = readVec3(context_, requireMember(context_, node, "v2"));
+                if (rules::isDegenerateTriangle(shape.v0, shape.v1, shape.v2)) context_.warn(node, rules::kDegenerateTriangle, shape.name);
+                break;
+            }
+            case ShapeType::Mesh: {
+                const JsonNode file = requireMember(context_, node, "file");
+                const std::string path = rules::resolveScenePath(context_.sceneDirectory, readString(context_, file));
+                try {
+                    shape.mesh = meshes_.meshFor(path);
+                } catch (const std::runtime_error& error) {
+                    context_.fail(file, error.what(), path);
+                }
+                break;
+            }
+        }
+    }
+
+    // --- transforms (§5) ---
+    glm::mat4 transformOf(const JsonNode& node) {
+        const JsonNode xform = member(node, "xform");
+        const JsonNode object = member(node, "transform");
+        if (xform && object) context_.warnAtKey(object, "ignored, the shape's xform is used");
+        if (xform) return parseXform(xform);
+        if (object) return parseTransformObject(object);
+        return glm::mat4(1.0f);
+    }
+
+    // The ordered array: M = T0 * T1 * ... * Tn-1, the last listed acting first (as XML).
+    glm::mat4 parseXform(const JsonNode& node) {
+        if (!node->is_array()) context_.fail(node, std::string("expected an array, found ") + typeName(*node), quoted(context_, node));
+        glm::mat4 m(1.0f);
+        for (std::size_t i = 0; i < node->size(); ++i) {
+            const JsonNode step{&(*node)[i], elementPath(node.path, i)};
+            requireObject(context_, step);
+            checkKeys(context_, step, {"amount", "axis"}, {"type"});
+            const JsonNode typeNode = requireAttribute(context_, step, "type");
+            std::string kind = readString(context_, typeNode);
+            if (kind == "rotate") {
+                context_.warn(typeNode, "read as rotation (the course's parser ignores this spelling)", kind);
+                kind = "rotation";
+            }
+            if (kind == "translate") {
+                m = m * rules::translation(readVec3(context_, requireMember(context_, step, "amount")));
+            } else if (kind == "scale") {
+                m = m * rules::scaling(readScale(requireMember(context_, step, "amount")));
+            } else if (kind == "rotation") {
+                const int axis = readAxis(requireMember(context_, step, "axis"));
+                m = m * rules::axisRotation(axis, readScalar(context_, requireMember(context_, step, "amount")));
+            } else {
+                context_.warn(typeNode, "unknown transform type, ignored", kind);
+            }
+        }
+        return m;
+    }
+
+    // The 2019 object {"translate", "rotate": {..} or [{..}, ..], "scale"}: xml2json kept one key
+    // per kind, so the order between kinds is lost. Composed as M = T * R0 * R1 * ... * S, the
+    // order of the XML files these came from (threeEggs.xml, metallicDragons.xml; §5).
+    glm::mat4 parseTransformObject(const JsonNode& node) {
+        requireObject(context_, node);
+        checkKeys(context_, node, {"translate", "rotate", "scale"}, {"name"});
+        glm::mat4 t(1.0f), r(1.0f), s(1.0f);
+        int kinds = 0;
+        if (const JsonNode e = member(node, "translate")) {
+            t = rules::translation(readVec3(context_, e));
+            ++kinds;
+        }
+        if (const JsonNode e = member(node, "rotate")) {
+            for (const JsonNode& rotation : objectsOf(context_, e)) {
+                checkKeys(context_, rotation, {}, {"axis", "angle"});
+                const int axis = readAxis(requireAttribute(context_, rotation, "axis"));
+                r = r * rules::axisRotation(axis, readScalar(context_, requireAttribute(context_, rotation, "angle")));
+            }
+            ++kinds;
+        }
+        if (const JsonNode e = member(node, "scale")) {
+            s = rules::scaling(readScale(e));
+            ++kinds;
+        }
+        if (kinds > 1)
+            context_.warn(node, "a transform object does not keep the order of its operations, composed as translate * rotate * scale");
+        return t * r * s;
+    }
+
+    glm::vec3 readScale(const JsonNode& node) {
+        const glm::vec3 s = readVec3(context_, node);
+        if (const std::string p = rules::scaleProblem(s); !p.empty()) context_.fail(node, p, quoted(context_, node));
+        return s;
+    }
+
+    int readAxis(const JsonNode& node) {
+        const std::string name = readString(context_, node);
+        const std::optional<int> axis = rules::rotationAxis(name);
+        if (!axis) context_.fail(node, rules::kBadRotationAxis, name);
+        return *axis;
+    }
+
+    // --- pass 2 ---
+    Camera parseCamera(const JsonNode& node) {
+        checkKeys(context_, node, {"position", "viewDir", "lookatPoint", "focalLength", "imagePlaneWidth"}, {"name", "type"});
+        Camera camera;
+        if (const JsonNode name = attributeMember(context_, node, "name")) camera.name = readText(context_, name);
+        camera.where = context_.locationOf(node);
+        if (const JsonNode type = attributeMember(context_, node, "type")) {
+            const std::string typeText = readText(context_, type);
+            const std::optional<CameraType> known = rules::cameraType(typeText);
+            if (!known) context_.warn(type, rules::kUnknownCameraType, typeText);
+            camera.type = known.value_or(CameraType::Perspective);
+        }
+        camera.position = readVec3(context_, requireMember(context_, node, "position"));
+        const JsonNode viewDir = member(node, "viewDir");
+        const JsonNode lookatPoint = member(node, "lookatPoint");
+        if (!viewDir && !lookatPoint) context_.fail(node, "missing required key viewDir (or lookatPoint)");
+        // viewDir is read even when lookatPoint overrides it (J26, §3.1), so garbage in it is reported.
+        const glm::vec3 direction = viewDir ? readVec3(context_, viewDir) : glm::vec3(0.0f);
+        if (lookatPoint) {
+            camera.gaze = readVec3(context_, lookatPoint) - camera.position;
+            if (const std::string p = rules::lookatProblem(camera.gaze); !p.empty()) context_.fail(lookatPoint, p, quoted(context_, lookatPoint));
+        } else {
+            camera.gaze = direction;
+            if (const std::string p = rules::viewDirProblem(camera.gaze); !p.empty()) context_.fail(viewDir, p, quoted(context_, viewDir));
+        }
+        if (const JsonNode f = member(node, "focalLength")) {
+            camera.focalLength = readScalar(context_, f);
+            if (const std::string p = rules::focalLengthProblem(camera.type, camera.focalLength); !p.empty())
+                context_.fail(f, p, quoted(context_, f));
+        }
+        if (const JsonNode w = member(node, "imagePlaneWidth")) camera.imagePlaneWidth = readChecked(w, rules::imagePlaneWidthProblem);
+        return camera;
+    }
+
+    void placeLight(const JsonNode& node) {
+        const JsonNode typeNode = attributeMember(context_, node, "type");
+        const std::string type = typeNode ? readString(context_, typeNode) : "point";  // J26's default (§3.2)
+        if (type == "shape") return placeShapeLight(node);
+        const std::optional<LightType> known = rules::lightType(type);
+        if (!known) {
+            context_.warn(typeNode, rules::kUnknownLightType, type);
+            return;
+        }
+        // A point light's normal, width and length are ignored without a warning, as in XML
+        // (sd20210301_solarSystem.json carries them).
+        checkKeys(context_, node, {"position", "intensity", "normal", "width", "length"}, {"name", "type"});
+        Light light;
+        light.type = *known;
+        light.where = context_.locationOf(node);
+        light.position = readVec3(context_, requireMember(context_, node, "position"));
+        light.intensity = readVec3(context_, requireMember(context_, node, "intensity"));
+        if (light.type == LightType::Area) {
+            const JsonNode normal = requireMember(context_, node, "normal");
+            const std::optional<glm::vec3> n = rules::unitNormal(readVec3(context_, normal));
+            if (!n) context_.fail(normal, rules::kZeroNormal, quoted(context_, normal));
+            light.normal = *n;
+            light.width = readChecked(requireMember(context_, node, "width"), rules::lightSizeProblem);
+            light.length = readChecked(requireMember(context_, node, "length"), rules::lightSizeProblem);
+        }
+        scene_.lights.push_back(light);
+    }
+
+    // {"_type": "shape", "intensity": c, "shape": {any shape, an instance with its xform included}}
+    // (§3.2); rendered for now as a stand-in point light (§6).
+    void placeShapeLight(const JsonNode& node) {
+        checkKeys(context_, node, {"intensity", "shape"}, {"name", "type"});
+        Emitter emitter;
+        emitter.radiance = readVec3(context_, requireMember(context_, node, "intensity"));
+        emitter.where = context_.locationOf(node);
+        const JsonNode shape = requireMember(context_, node, "shape");
+        requireObject(context_, shape);
+        const JsonNode typeNode = requireAttribute(context_, shape, "type");
+        const std::string typeName = readString(context_, typeNode);
+        if (typeName == "instance") {
+            checkKeys(context_, shape, {"shader", "xform", "transform"}, {"name", "type", "id"});
+            const std::optional<int> prototype = prototypeOf(shape);
+            if (!prototype) return;
+            emitter.prototype = *prototype;
+            if (const JsonNode name = attributeMember(context_, shape, "name")) emitter.shape.name = readText(context_, name);
+            if (const JsonNode reference = member(shape, "shader")) emitter.shape.shader = shaderOf(reference, ShapeRole::Emitter);
+            else emitter.shape.shader = -1;
+        } else {
+            const std::optional<ShapeType> type = rules::shapeType(typeName);
+            if (!type) {
+                context_.warn(typeNode, "unknown shape type, skipped", typeName);
+                return;
+            }
+            emitter.shape = parseShape(shape, *type, ShapeRole::Emitter);
+        }
+        emitter.name = emitter.shape.name;
+        emitter.objectToWorld = transformOf(shape);
+        scene_.emitters.push_back(emitter);
+        scene_.lights.push_back(emitterStandInLight(scene_, static_cast<int>(scene_.emitters.size()) - 1));
+        if (fallbacks_.first(Fallback::ShapeLight)) context_.warn(node, fallbackProblem(Fallback::ShapeLight), emitter.name);
+    }
+
+    // The prototype an instance's `_id` names; nullopt (after a warning) for a skipped one.
+    std::optional<int> prototypeOf(const JsonNode& instance) {
+        const JsonNode idNode = requireAttribute(context_, instance, "id");
+        const std::string id = readString(context_, idNode);
+        const auto found = prototypeByName_.find(id);
+        if (found == prototypeByName_.end()) context_.fail(idNode, "unresolved instance id", id);
+        if (found->second < 0) {
+            context_.warn(idNode, "instance of a skipped prototype, skipped", id);
+            return std::nullopt;
+        }
+        return found->second;
+    }
+
+    void placeShape(const JsonNode& node) {
+        const JsonNode typeNode = requireAttribute(context_, node, "type");
+        const std::string typeName = readString(context_, typeNode);
+        if (typeName == "instance") return placeInstance(node);
+        const std::optional<ShapeType> type = rules::shapeType(typeName);
+        if (!type) {
+            context_.warn(typeNode, "unknown shape type, skipped", typeName);
+            return;
+        }
+        Shape shape = parseShape(node, *type, ShapeRole::Loose);
+        if (member(node, "xform") || member(node, "transform")) {
+            // A transformed plain shape is an instance of a prototype of its own (as XML).
+            Instance instance;
+            instance.name = shape.name;
+            instance.prototype = static_cast<int>(scene_.prototypes.size());
+            instance.objectToWorld = transformOf(node);
+            instance.where = shape.where;
+            scene_.prototypes.push_back(std::move(shape));
+            scene_.instances.push_back(instance);
+        } else {
+            scene_.shapes.push_back(std::move(shape));
+        }
+    }
+
+    void placeInstance(const JsonNode& node) {
+        checkKeys(context_, node, {"shader", "xform", "transform"}, {"name", "type", "id"});
+        const std::optional<int> prototype = prototypeOf(node);
+        if (!prototype) return;
+        Instance instance;
+        if (const JsonNode name = attributeMember(context_, node, "name")) instance.name = readText(context_, name);
+        instance.prototype = *prototype;
+        if (const JsonNode reference = member(node, "shader")) instance.shaderOverride = shaderOf(reference, ShapeRole::Loose);
+        const Shape& shape = scene_.prototypes[static_cast<std::size_t>(instance.prototype)];
+        if (instance.shaderOverride < 0 && isPlaceholder(shape.shader))
+            context_.fail(node, "no shader: the prototype's shader reference is unresolved and the instance names none",
+                          scene_.shaders[static_cast<std::size_t>(shape.shader)].name);
+        instance.objectToWorld = transformOf(node);
+        instance.where = context_.locationOf(node);
+        scene_.instances.push_back(instance);
+    }
+
+    // Three spellings of the background, in this precedence (§4): sceneParameters.bgColor (J26),
+    // the scene's _bgColor (J22), the scene's bgColor (read by no course parser). Every one given
+    // is read; one that disagrees with the one used is a warning. Environment maps are recorded,
+    // resolved against the scene file, and not rendered (one warning, render_fallbacks.h).
+    void readBackground(const JsonNode& scene) {
+        const JsonNode parameters = member(scene, "sceneParameters");
+        if (parameters) {
+            requireObject(context_, parameters);
+            checkKeys(context_, parameters, {"bgColor", "envMapPrefix", "envMapVertCross"});
+        }
+        const JsonNode* used = nullptr;
+        const JsonNode spellings[] = {member(parameters, "bgColor"), member(scene, "_bgColor"), member(scene, "bgColor")};
+        for (const JsonNode& spelling : spellings) {
+            if (!spelling) continue;
+            const glm::vec3 colour = readVec3(context_, spelling);
+            if (!used) {
+                scene_.background = colour;
+                used = &spelling;
+            } else if (colour != scene_.background) {
+                context_.warn(spelling, "ignored, the background is " + used->path, quoted(context_, spelling));
+            }
+        }
+        const JsonNode prefix = member(parameters, "envMapPrefix");
+        const JsonNode cross = member(parameters, "envMapVertCross");
+        bool any = false;
+        for (const auto& [node, field] : {std::pair{&prefix, &scene_.envMapPrefix}, std::pair{&cross, &scene_.envMapVertCross}}) {
+            if (!*node) continue;
+            const std::string text = readText(context_, *node);
+            if (text.empty()) continue;  // J26's default: no map
+            *field = rules::resolveScenePath(context_.sceneDirectory, text);
+            if (!any && fallbacks_.first(Fallback::EnvironmentMap)) context_.warn(*node, fallbackProblem(Fallback::EnvironmentMap), text);
+            any = true;
+        }
+    }
+
+    const JsonContext& context_;
+    Scene& scene_;
+    MeshLibrary meshes_;
+    std::map<std::string, int> textures_;          // name -> index, kNoTexture for an unloadable file
+    std::map<std::string, int> shaderByName_;
+    std::map<std::string, int> placeholderShaders_; // dangling prototype reference -> grey placeholder
+    std::map<std::string, int> prototypeByName_;    // -1: a skipped (unknown-type) prototype
+    FallbackNotes fallbacks_;
+};
+
+}  // namespace
+
+Scene loadJsonScene(const std::string& path, const std::string& text, const LoadOptions& options, Diagnostics& diagnostics) {
+    const JsonSource source(path, text);
+    const JsonContext context{source, diagnostics, options.strict, std::filesystem::path(path).parent_path()};
+    Scene scene;
+    scene.path = path;
+    JsonSceneBuilder(context, scene).build(JsonNode{&source.root(), ""});
+    return scene;
+}
+
+}  // namespace vkrt

@@ -1,0 +1,166 @@
+#include "scene_rules.h"
+
+#include <cctype>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace vkrt::rules {
+
+std::optional<CameraType> cameraType(std::string_view name) {
+    if (name == "perspective") return CameraType::Perspective;
+    if (name == "orthographic") return CameraType::Orthographic;
+    return std::nullopt;
+}
+
+std::string viewDirProblem(const glm::vec3& viewDir) {
+    return viewDir == glm::vec3(0.0f) ? "view direction has zero length" : "";
+}
+
+std::string lookatProblem(const glm::vec3& gaze) {
+    const bool finite = std::isfinite(gaze.x) && std::isfinite(gaze.y) && std::isfinite(gaze.z);
+    return gaze == glm::vec3(0.0f) || !finite ? "lookatPoint must differ from the camera position" : "";
+}
+
+std::string focalLengthProblem(CameraType type, float focalLength) {
+    return type == CameraType::Perspective && !(focalLength > 0.0f) ? "focal length must be positive" : "";
+}
+
+std::string imagePlaneWidthProblem(float width) { return !(width > 0.0f) ? "image plane width must be positive" : ""; }
+
+std::optional<LightType> lightType(std::string_view name) {
+    if (name == "point") return LightType::Point;
+    if (name == "area") return LightType::Area;
+    return std::nullopt;
+}
+
+std::optional<glm::vec3> unitNormal(const glm::vec3& normal) {
+    const float length = glm::length(normal);
+    if (!(length > 0.0f) || !std::isfinite(length)) return std::nullopt;
+    return normal / length;
+}
+
+std::string lightSizeProblem(float size) { return !(size >= 0.0f) ? "must not be negative" : ""; }
+
+std::optional<ShaderTypeName> shaderType(std::string_view name) {
+    if (name == "Lambertian") return ShaderTypeName{ShaderType::Lambertian, "Lambertian"};
+    if (name == "Diffuse") return ShaderTypeName{ShaderType::Lambertian, "Diffuse", /*diffuseBounce=*/true};
+    if (name == "BlinnPhong" || name == "Phong") return ShaderTypeName{ShaderType::BlinnPhong, "BlinnPhong"};
+    if (name == "Mirror") return ShaderTypeName{ShaderType::Mirror, "Mirror"};
+    if (name == "Glaze") return ShaderTypeName{ShaderType::Glaze, "Glaze"};
+    if (name == "BlinnPhongMirrored") return ShaderTypeName{ShaderType::BlinnPhongMirrored, "BlinnPhongMirrored"};
+    if (name == "Dielectric") return ShaderTypeName{ShaderType::Dielectric, "Dielectric"};
+    if (name == "CoolToWarm") return ShaderTypeName{ShaderType::CoolToWarm, "CoolToWarm"};
+    if (name == "Emitter") return ShaderTypeName{ShaderType::Lambertian, "Emitter", false, /*emitter=*/true};
+    return std::nullopt;
+}
+
+const std::vector<std::string_view>& shaderParameters() {
+    static const std::vector<std::string_view> all = {"diffuse",   "diffusetex",      "specular",        "phongExp",
+                                                      "mirrorCoef", "roughness",      "refractiveIndex", "attenuationCoef",
+                                                      "emission"};
+    return all;
+}
+
+std::vector<std::string_view> shaderParametersUsedBy(const ShaderTypeName& type) {
+    if (type.emitter) return {"emission"};
+    switch (type.type) {
+        case ShaderType::Lambertian:
+        case ShaderType::CoolToWarm: return {"diffuse", "diffusetex"};
+        // BlinnPhong keeps mirrorCoef/roughness: mirrorCoef > 0 makes it BlinnPhongMirrored.
+        case ShaderType::BlinnPhong:
+        case ShaderType::BlinnPhongMirrored:
+            return {"diffuse", "diffusetex", "specular", "phongExp", "mirrorCoef", "roughness"};
+        case ShaderType::Mirror: return {"roughness"};
+        case ShaderType::Glaze: return {"diffuse", "diffusetex", "mirrorCoef", "roughness"};
+        case ShaderType::Dielectric: return {"refractiveIndex", "attenuationCoef"};
+    }
+    return {};
+}
+
+std::string unusedParameterProblem(const ShaderTypeName& type) {
+    return std::string("not used by a ") + type.display + " shader, ignored";
+}
+
+std::string nonNegativeProblem(float value) { return value < 0.0f ? "must not be negative" : ""; }
+
+std::string refractiveIndexProblem(float value) { return !(value > 0.0f) ? "must be positive" : ""; }
+
+void resolveLegacyShaderType(Shader& shader) {
+    if (shader.type == ShaderType::BlinnPhong && shader.mirrorCoef > 0.0f) shader.type = ShaderType::BlinnPhongMirrored;
+}
+
+std::optional<ShapeType> shapeType(std::string_view name) {
+    if (name == "sphere") return ShapeType::Sphere;
+    if (name == "box") return ShapeType::Box;
+    if (name == "triangle") return ShapeType::Triangle;
+    if (name == "mesh") return ShapeType::Mesh;
+    return std::nullopt;
+}
+
+std::vector<std::string_view> geometryKeys(ShapeType type) {
+    switch (type) {
+        case ShapeType::Sphere: return {"center", "radius"};
+        case ShapeType::Box: return {"minPt", "maxPt"};
+        case ShapeType::Triangle: return {"v0", "v1", "v2"};
+        case ShapeType::Mesh: return {"file"};
+    }
+    return {};
+}
+
+std::string radiusProblem(float radius) { return !(radius > 0.0f) ? "radius must be positive" : ""; }
+
+std::string boxProblem(const glm::vec3& minPt, const glm::vec3& maxPt) {
+    for (int axis = 0; axis < 3; ++axis)
+        if (minPt[axis] > maxPt[axis]) return std::string("greater than maxPt on the ") + "xyz"[axis] + " axis";
+    return "";
+}
+
+bool isDegenerateTriangle(const glm::vec3& v0, const glm::vec3& v1, const glm::vec3& v2) {
+    return glm::length(glm::cross(v1 - v0, v2 - v0)) == 0.0f;
+}
+
+std::optional<int> rotationAxis(std::string_view axis) {
+    if (axis.empty()) return std::nullopt;
+    switch (std::toupper(static_cast<unsigned char>(axis[0]))) {
+        case 'X': return 0;
+        case 'Y': return 1;
+        case 'Z': return 2;
+        default: return std::nullopt;
+    }
+}
+
+// Right-handed rotation about a coordinate axis (as glm::rotate). Sine and cosine are taken in
+// double from the angle reduced modulo 360, so 90 degrees gives a cosine of ~1e-17 rather than
+// float's -4e-8, and angles like 4500 (pt_test.xml) lose no precision.
+glm::mat4 axisRotation(int axis, double degrees) {
+    const double radians = std::fmod(degrees, 360.0) * (3.14159265358979323846 / 180.0);
+    const float c = static_cast<float>(std::cos(radians));
+    const float s = static_cast<float>(std::sin(radians));
+    const int a = (axis + 1) % 3;  // the rotation maps axis a towards axis b
+    const int b = (axis + 2) % 3;
+    glm::mat4 r(1.0f);
+    r[a][a] = c;   // glm is column-major: r[column][row]
+    r[a][b] = s;
+    r[b][a] = -s;
+    r[b][b] = c;
+    return r;
+}
+
+glm::mat4 translation(const glm::vec3& t) { return glm::translate(glm::mat4(1.0f), t); }
+
+glm::mat4 scaling(const glm::vec3& s) { return glm::scale(glm::mat4(1.0f), s); }
+
+std::string scaleProblem(const glm::vec3& s) {
+    return s.x == 0.0f || s.y == 0.0f || s.z == 0.0f ? "a zero scale factor makes the transform singular" : "";
+}
+
+std::string resolveScenePath(const std::filesystem::path& sceneDirectory, const std::string& relative) {
+    return (sceneDirectory / relative).lexically_normal().string();
+}
+
+std::string missingTextureProblem(const std::string& loadError, const std::string& textureName) {
+    return loadError + "; shaders using texture '" + textureName + "' show their tint colour";
+}
+
+}  // namespace vkrt::rules

@@ -1,0 +1,84 @@
+// What makes a scene valid, written once for both formats: the type names each format spells
+// the same way, the checks on values (radius > 0, a non-zero view direction, ...) and the texts of
+// the messages. Each check returns the problem (empty when the value is fine); the XML and JSON
+// loaders report it at their own element or key, quoting the value as the file wrote it, so both
+// formats refuse and warn about exactly the same things (README.md "Errors", "Warnings").
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scene.h"
+
+namespace vkrt::rules {
+
+// --- cameras ---
+std::optional<CameraType> cameraType(std::string_view name);  // perspective, orthographic
+inline constexpr const char* kUnknownCameraType = "unknown camera type, using perspective";
+std::string viewDirProblem(const glm::vec3& viewDir);
+std::string lookatProblem(const glm::vec3& gaze);  // gaze = lookatPoint - position
+std::string focalLengthProblem(CameraType type, float focalLength);
+std::string imagePlaneWidthProblem(float width);
+
+// --- lights ---
+std::optional<LightType> lightType(std::string_view name);  // point, area
+inline constexpr const char* kUnknownLightType = "unknown light type, light skipped";
+// The unit area-light normal, or nullopt for a zero (or non-finite) length.
+std::optional<glm::vec3> unitNormal(const glm::vec3& normal);
+inline constexpr const char* kZeroNormal = "normal has zero length";
+// Area-light width and length: zero is allowed (a 0x0 area light is exactly its point light,
+// docs/RENDERING.md, so a light can shrink to nothing without being rewritten).
+std::string lightSizeProblem(float size);
+
+// --- shaders ---
+// A shader type as a file spells it. Phong is BlinnPhong; the JSON-era Diffuse is Lambertian with
+// diffuseBounce, Emitter is Lambertian with an emission (scene.h, render_fallbacks.h).
+struct ShaderTypeName {
+    ShaderType type = ShaderType::Lambertian;
+    const char* display = "Lambertian";  // the name messages use
+    bool diffuseBounce = false;
+    bool emitter = false;
+};
+std::optional<ShaderTypeName> shaderType(std::string_view name);
+inline constexpr const char* kUnknownShaderType = "unknown shader type, using Lambertian with its diffuse colour";
+// Every parameter any shader type reads (the XML element names, the JSON keys).
+const std::vector<std::string_view>& shaderParameters();
+std::vector<std::string_view> shaderParametersUsedBy(const ShaderTypeName& type);
+std::string unusedParameterProblem(const ShaderTypeName& type);  // "not used by a Mirror shader, ignored"
+std::string nonNegativeProblem(float value);                    // phongExp, roughness
+std::string refractiveIndexProblem(float value);
+// The colour of a used-diffuse shader that gives neither a colour nor a texture; white under a
+// texture (so the texture shows as it is).
+inline constexpr float kMissingDiffuseGrey = 0.5f;
+// After parsing: 2011/12 files write a mirrored Blinn-Phong as BlinnPhong + mirrorCoef > 0.
+void resolveLegacyShaderType(Shader& shader);
+
+// --- shapes ---
+std::optional<ShapeType> shapeType(std::string_view name);  // sphere, box, triangle, mesh
+std::vector<std::string_view> geometryKeys(ShapeType type); // center radius | minPt maxPt | v0 v1 v2 | file
+std::string radiusProblem(float radius);
+std::string boxProblem(const glm::vec3& minPt, const glm::vec3& maxPt);  // minPt > maxPt on an axis
+bool isDegenerateTriangle(const glm::vec3& v0, const glm::vec3& v1, const glm::vec3& v2);
+inline constexpr const char* kDegenerateTriangle = "degenerate triangle (zero area), it is never hit";
+
+// --- transforms: M = T0 * T1 * ... * Tn-1, so the last listed operation acts first ---
+// 0, 1 or 2 for an axis named by its first character, X, Y or Z in any case (LIB-2012 compares
+// the first character only).
+std::optional<int> rotationAxis(std::string_view axis);
+inline constexpr const char* kBadRotationAxis = "axis must be X, Y or Z, not";
+glm::mat4 axisRotation(int axis, double degrees);
+glm::mat4 translation(const glm::vec3& t);
+glm::mat4 scaling(const glm::vec3& s);
+std::string scaleProblem(const glm::vec3& s);  // a zero factor: the renderers need M^-1
+
+// --- files named by the scene ---
+// `relative` resolved against the scene file's directory (meshes, textures, environment maps).
+std::string resolveScenePath(const std::filesystem::path& sceneDirectory, const std::string& relative);
+std::string missingTextureProblem(const std::string& loadError, const std::string& textureName);
+
+}  // namespace vkrt::rules
