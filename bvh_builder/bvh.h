@@ -1,6 +1,8 @@
-// bvh_builder: a two-level SAH BVH over spheres, boxes and triangles, flattened into the layout
-// the GLSL kernels read (shaders/shared/device_host.h), plus the CPU traversal that the reference
-// renderer and the benchmarks use. No Vulkan and no scene-format dependency.
+// bvh_builder: a two-level SAH BVH over spheres, boxes and triangles, flattened into binary nodes
+// (node_layout.h; host/gpu/node_packing makes the kernels' layout from them) beside the primitive
+// and instance records the GLSL kernels read as they are (shaders/shared/device_host.h), plus the
+// CPU traversal that the reference renderer and the benchmarks use. No Vulkan and no scene-format
+// dependency.
 //
 // Bottom level: one BVH per geometry group (a mesh, a prototype, or the scene's loose shapes).
 // Top level: one BVH over instances = (group, object-to-world affine transform).
@@ -12,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "../shaders/shared/device_host.h"
+#include "node_layout.h"
 #include "wide_bvh.h"
 
 namespace vkrt::bvh {
@@ -63,9 +66,10 @@ struct BuildStats {
                                   // most topDepth + 1 + bottomDepth entries
 };
 
-// The flattened two-level BVH: exactly what is uploaded to the GPU.
+// The flattened two-level BVH: prims and instances are uploaded as they are, nodes after packing
+// (host/gpu/node_packing).
 struct SceneBvh {
-    std::vector<gpu::BvhNode> nodes;          // every bottom level (depth-first), then the top level
+    std::vector<BinaryNode> nodes;            // every bottom level (depth-first), then the top level
     std::vector<gpu::Primitive> prims;        // leaf-contiguous, group after group
     std::vector<std::uint32_t> primSource;    // flat primitive -> its index in the group's input list
     std::vector<GroupRange> groups;           // per input group

@@ -139,7 +139,7 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
                                         std::to_string(groups.size()) + " groups");
     std::size_t totalPrims = 0;
     for (const auto& g : groups) totalPrims += g.size();
-    if (totalPrims >= gpu::NODE_NONE)
+    if (totalPrims >= NODE_NONE)
         throw std::invalid_argument("bvh: " + std::to_string(totalPrims) + " primitives exceed the 32-bit index range");
 
     const SahParams params{options.bins, options.maxLeafSize, options.traversalCost, options.intersectionCost,
@@ -241,7 +241,7 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
         bvh.stats.cpuCopySeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - copyStart).count();
     }
     bvh.stats.nodeCount = bvh.nodes.size();
-    bvh.stats.bytes = bvh.nodes.size() * sizeof(gpu::BvhNode) + bvh.prims.size() * sizeof(gpu::Primitive) +
+    bvh.stats.bytes = bvh.nodes.size() * sizeof(BinaryNode) + bvh.prims.size() * sizeof(gpu::Primitive) +
                       bvh.instances.size() * sizeof(gpu::Instance);
     bvh.stats.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return bvh;

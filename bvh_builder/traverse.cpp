@@ -88,7 +88,7 @@ void walk(const std::vector<WideNode>& nodes, std::uint32_t root, const NodeRay&
             mask &= mask - 1;
             if (node.count[k] > 0) {
                 if (leaf(node.link[k], node.count[k])) return;
-            } else if (node.link[k] != gpu::NODE_NONE) {
+            } else if (node.link[k] != NODE_NONE) {
                 inner[innerCount++] = {node.link[k], t[k]};
             }
         }

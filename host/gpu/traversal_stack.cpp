@@ -11,8 +11,8 @@
 
 namespace vkrt {
 
-std::uint32_t innerDepth(const std::vector<gpu::BvhNode>& nodes, std::uint32_t root) {
-    if (root == gpu::NODE_NONE) return 0;
+std::uint32_t innerDepth(const std::vector<bvh::BinaryNode>& nodes, std::uint32_t root) {
+    if (root == bvh::NODE_NONE) return 0;
     // Iterative: a degenerate BVH can be thousands of levels deep.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pending{{root, 1}};
     std::uint32_t deepest = 0;
@@ -24,11 +24,11 @@ std::uint32_t innerDepth(const std::vector<gpu::BvhNode>& nodes, std::uint32_t r
                                    " nodes");
         if (depth > nodes.size()) throw std::logic_error("the BVH's node links form a cycle");
         deepest = std::max(deepest, depth);
-        const gpu::BvhNode& node = nodes[index];
+        const bvh::BinaryNode& node = nodes[index];
         for (int child = 0; child < 2; ++child) {
             const std::uint32_t link = node.link[child];
             const std::uint32_t count = node.link[2 + child];
-            if (count == 0 && link != gpu::NODE_NONE) pending.emplace_back(link, depth + 1);
+            if (count == 0 && link != bvh::NODE_NONE) pending.emplace_back(link, depth + 1);
         }
     }
     return deepest;
@@ -47,7 +47,7 @@ void checkLeafEntries(const bvh::SceneBvh& bvh) {
     const std::vector<bool> topLevel = topLevelNodes(bvh);
     for (std::uint32_t index = 0; index < bvh.nodes.size(); ++index) {
         if (topLevel[index]) continue;
-        const gpu::BvhNode& node = bvh.nodes[index];
+        const bvh::BinaryNode& node = bvh.nodes[index];
         for (int child = 0; child < 2; ++child) {
             const std::uint32_t link = bvh::childLink(node, child);
             const std::uint32_t count = bvh::childCount(node, child);

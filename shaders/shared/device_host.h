@@ -47,38 +47,15 @@ VKRT_CONST uint BINDING_RAYS = 12;         // trace_rays.comp only: readonly uim
 VKRT_CONST uint BINDING_HITS = 13;         // trace_rays.comp only: writeonly uimageBuffer R32UI, TRACE_HIT_WORDS(_INSTANCED) per ray
 
 // ---------------------------------------------------------------------------------------------
-// BVH node as the builder writes it (SceneBvh::nodes; the CPU traversal's 4-wide copy is made from
-// it): 64 bytes, both children's boxes side by side (Aila & Laine 2009), so one contiguous fetch
-// per inner step decides both children. The kernels read it packed into 48 bytes (GpuBvhNode).
+// BVH node as the kernels read it: 48 bytes = 3 RGBA32UI texels, both children's boxes side by
+// side (Aila & Laine 2009), so one contiguous fetch per inner step decides both children. The host
+// makes one per node of the builder's tree (bvh::BinaryNode, bvh_builder/node_layout.h), in the
+// same order (host/gpu/node_packing.h).
 //   texel 0: child 0 box  lo.x hi.x lo.y hi.y   (float bits)
 //   texel 1: child 1 box  lo.x hi.x lo.y hi.y   (float bits)
 //   texel 2: lo0.z hi0.z lo1.z hi1.z            (float bits)
-//   texel 3: link0 link1 count0 count1
-// countK == 0: linkK is the index of an inner node (NODE_NONE: empty child, box is empty).
-// countK  > 0: child K is a leaf holding primitives [linkK, linkK + countK) of the global primitive
-//              array (bottom level) or instances [linkK, linkK + countK) (top level).
-// An empty child (countK == 0, linkK == NODE_NONE) stores lo = +FLT_MAX, hi = -FLT_MAX; a
-// min/max slab test would treat that inverted box as everything, so traversals skip an empty
-// child by its link, never by its box.
-VKRT_CONST uint NODE_NONE = 0xffffffffu;
-// traverse.glsl keeps a bottom-level leaf on its stack as one 32-bit entry: ENTRY_LEAF_BIT, the
-// first primitive in bits 4..29 and the count in bits 0..3 (an inner node's entry is its first
-// texel, below 2^30). The host refuses a BVH with a leaf that does not fit (host/vulkan/traversal_stack.h);
-// the builder's leaves hold at most 8 primitives and a 128 MiB buffer at most 2.8M primitives.
-VKRT_CONST uint ENTRY_LEAF_BIT = 0x40000000u;
-VKRT_CONST uint LEAF_ENTRY_MAX_COUNT = 15u;
-VKRT_CONST uint LEAF_ENTRY_MAX_FIRST = 0x3ffffffu;
-struct BvhNode {
-    uvec4 xy0;
-    uvec4 xy1;
-    uvec4 z01;
-    uvec4 link;
-};
-
-// The node as the kernels read it: the builder's BvhNode above in 48 bytes = 3 RGBA32UI texels
-// (host/vulkan/node_packing.h packs it at upload). Texels 0-2 as in BvhNode, but each child's
-// link and count travel as its ready stack entry (traverse.glsl: an inner node's first texel,
-// index * GPU_NODE_TEXELS, so the walk's fetch waits on no multiply;
+// Each child's link and count travel as its ready stack entry (traverse.glsl: an inner node's first
+// texel, index * GPU_NODE_TEXELS, so the walk's fetch waits on no multiply;
 // ENTRY_LEAF_BIT | first << 4 | count for a bottom-level leaf, ENTRY_INSTANCE_BIT | instance for a
 // top-level leaf, ENTRY_NONE for an empty child) in the low bits of the child's own box floats:
 // NODE_ENTRY_XY_BITS bits in each of lo.x hi.x lo.y hi.y (entry bits 0-23), NODE_ENTRY_Z_BITS in
@@ -93,12 +70,21 @@ struct BvhNode {
 // packs only when that costs little (node_packing.h: the child boxes' total surface area grows by
 // at most 1%) and otherwise uploads GpuExactBvhNode: the builder's boxes unchanged, with the two
 // ready entries in a fourth texel (x, y; z and w zero). SPEC_PACKED_NODES tells the kernel which.
+// An empty child's box is inverted (lo = +FLT_MAX, hi = -FLT_MAX), which the kernel's min/max slab
+// test accepts as everything: the walk skips an empty child by its entry, never by its box.
 VKRT_CONST uint GPU_NODE_TEXELS = 3;
 VKRT_CONST uint GPU_EXACT_NODE_TEXELS = 4;
 VKRT_CONST uint NODE_ENTRY_XY_BITS = 6u;
 VKRT_CONST uint NODE_ENTRY_Z_BITS = 4u;
 VKRT_CONST uint ENTRY_INSTANCE_BIT = 0x80000000u;
 VKRT_CONST uint ENTRY_NONE = 0xfffffffeu;
+// traverse.glsl keeps a bottom-level leaf on its stack as one 32-bit entry: ENTRY_LEAF_BIT, the
+// first primitive in bits 4..29 and the count in bits 0..3 (an inner node's entry is its first
+// texel, below 2^30). The host refuses a BVH with a leaf that does not fit (host/gpu/traversal_stack.h);
+// the builder's leaves hold at most 8 primitives and a 128 MiB buffer at most 2.8M primitives.
+VKRT_CONST uint ENTRY_LEAF_BIT = 0x40000000u;
+VKRT_CONST uint LEAF_ENTRY_MAX_COUNT = 15u;
+VKRT_CONST uint LEAF_ENTRY_MAX_FIRST = 0x3ffffffu;
 struct GpuBvhNode {
     uvec4 xy0;
     uvec4 xy1;
@@ -305,7 +291,6 @@ VKRT_CONST uint TRAVERSAL_STACK_SIZE = 48u;
 VKRT_CONST uint LOOP_BUDGET = 60000u;
 
 #ifdef __cplusplus
-static_assert(sizeof(BvhNode) == 64);
 static_assert(sizeof(GpuBvhNode) == 16 * GPU_NODE_TEXELS);
 static_assert(sizeof(GpuExactBvhNode) == 16 * GPU_EXACT_NODE_TEXELS);
 static_assert(4 * NODE_ENTRY_XY_BITS + 2 * NODE_ENTRY_Z_BITS == 32);
