@@ -47,9 +47,6 @@ struct BuildNode {
     std::uint32_t a;  // inner: left child; leaf: first reference
     std::uint32_t b;  // inner: right child; leaf: kLeafBit | count
 
-    static BuildNode leafNode(const Aabb& box, std::uint32_t first, std::uint32_t count) {
-        return {box.lo, box.hi, first, kLeafBit | count};
-    }
     static BuildNode innerNode(const Aabb& box, std::uint32_t left, std::uint32_t right) {
         return {box.lo, box.hi, left, right};
     }
