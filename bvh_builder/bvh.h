@@ -31,7 +31,7 @@ struct PrimitiveInput {
 struct InstanceInput {
     std::uint32_t group = 0;
     glm::mat4 objectToWorld{1.0f};
-    std::uint32_t materialOverride = gpu::MATERIAL_NONE;  // copied into Instance::info.y
+    std::uint32_t materialOverride = gpu::MATERIAL_NONE;  // Instance::info (instanceMaterialOverride)
 };
 
 struct BuildOptions {

@@ -51,14 +51,18 @@ layout(std140, set = 0, binding = BINDING_FRAME) uniform FrameBuffer { FramePara
 
 // The render's sampler (SAMPLER_*): the specialization constant, or for the general kernel the
 // frame's value. Every sample2D call takes it from here.
-uint samplerKind() { return SAMPLER_KIND == SAMPLER_FROM_FRAME ? frame.sampling.x : SAMPLER_KIND; }
+uint samplerKind() { return SAMPLER_KIND == SAMPLER_FROM_FRAME ? frameSampler(frame) : SAMPLER_KIND; }
 // The per-pixel sums, a texel buffer rather than an SSBO: on lavapipe an SSBO load at per-lane
 // addresses is a loop over the lanes, one scalar load (and cache miss) at a time, while imageLoad
 // is a gather (host/vulkan/README.md).
 layout(set = 0, binding = BINDING_ACCUM, rgba32ui) uniform uimageBuffer accumTexels;
 layout(std430, set = 0, binding = BINDING_STATUS) coherent buffer StatusBuffer { RenderStatus status; };
 
-uvec4 loadPrimInfo(uint i) { return imageLoad(primInfoTexels, int(i)); }
+PrimInfo loadPrimInfo(uint i) {
+    PrimInfo p;
+    p.data = imageLoad(primInfoTexels, int(i));
+    return p;
+}
 
 // A pixel's running sum (rgb; w unused), read and written by the one invocation that computes the
 // pixel's samples of a pass: no race.
@@ -99,6 +103,10 @@ Light loadLight(uint i) {
     return l;
 }
 
-uvec4 loadTextureInfo(uint i) { return imageLoad(textureInfoTexels, int(i)); }
+TextureInfo loadTextureInfo(uint i) {
+    TextureInfo t;
+    t.info = imageLoad(textureInfoTexels, int(i));
+    return t;
+}
 
 #endif

@@ -21,11 +21,11 @@ layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 
 void main() {
     uint i = gl_GlobalInvocationID.x;
-    if (i >= trace.rays.x) return;
+    if (i >= traceRayCount(trace)) return;
     vec4 origin = uintBitsToFloat(imageLoad(rays, int(2u * i)));  // TraceRayInput: origin + tMax, direction
     vec3 direction = uintBitsToFloat(imageLoad(rays, int(2u * i + 1u)).xyz);
     Hit hit;
-    bool found = traceScene(origin.xyz, direction, origin.w, trace.rays.y != 0u, hit);
+    bool found = traceScene(origin.xyz, direction, origin.w, traceAnyHit(trace), hit);
     // Failures travel in the hit's words (TRACE_FAILED and the STATUS_* bits), read by the host
     // with the hits: no atomics, which would be a per-lane loop for every ray on lavapipe. Each
     // word stored is such a loop too, so a BVH without a top level stores no instance.

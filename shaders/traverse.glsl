@@ -69,7 +69,7 @@ bool intersectPrimitive(TraceRay ray, int base, float tBest, out float tHit, out
     tHit = 0.0;
     bary = vec2(0.0);
     uvec4 a = imageLoad(primitives, base);
-    uint kind = a.w & PRIM_KIND_MASK;
+    uint kind = primitiveKind(a);
     if (HAS_TRIANGLES && kind == PRIM_KIND_TRIANGLE) {
         vec3 v1 = texelFloats(imageLoad(primitives, base + 1));
         vec3 v2 = texelFloats(imageLoad(primitives, base + 2));
@@ -172,7 +172,7 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
     bool spilling = false;
     uint spillEntry = ENTRY_NONE;
     uint instance = 0u;
-    uint entry = rootEntry(HAS_INSTANCES ? frame.scene.w : instanceInfo(0u).x);
+    uint entry = rootEntry(HAS_INSTANCES ? frameTopLevelRoot(frame) : instanceRootNode(instanceInfo(0u)));
     // The top level's nodes come last in the node array, from its root on (bvh.h, SceneBvh::nodes;
     // the host checks it: node_packing.h), so an entry at or past the root's is a top-level node.
     // The world group's nodes (frame.world, node_packing.h InlinedWorld: the loose shapes of
@@ -210,7 +210,7 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             int base = int(entry);  // a node's entry is its first texel (node_packing.h)
             // A top-level node (or the inlined world group's) tests the world ray, a bottom-level
             // one the instance's (see the instance step below).
-            bool topLevelNode = HAS_INSTANCES && (entry >= topLevelStart || entry - world.x < world.y);
+            bool topLevelNode = HAS_INSTANCES && (entry >= topLevelStart || worldHoldsNodeEntry(world, entry));
             vec3 boxOrigin = topLevelNode ? worldRay.origin : ray.origin;
             vec3 boxInvDir = topLevelNode ? worldRay.invDir : ray.invDir;
             uvec4 xy0 = imageLoad(bvhNodes, base);
@@ -258,11 +258,11 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
         if (HAS_INSTANCES && isInstanceEntry(entry)) {
             instance = entry & ~ENTRY_INSTANCE_BIT;
             ray = rayIntoInstance(origin, dir, instance);
-            entry = rootEntry(instanceInfo(instance).x);
+            entry = rootEntry(instanceRootNode(instanceInfo(instance)));
         } else if (isLeafEntry(entry)) {
             uint first = (entry & ~ENTRY_LEAF_BIT) >> 4u;
             uint count = entry & 15u;
-            if (HAS_INSTANCES && first - world.z < world.w) {
+            if (HAS_INSTANCES && worldHoldsPrimitive(world, first)) {
                 // A world leaf: no instance's entries are on the stack (they are all popped before
                 // the top-level entries beneath them, and world entries sit among those), so the
                 // instance ray can be overwritten; the next instance entered sets it again.

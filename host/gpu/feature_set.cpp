@@ -39,7 +39,7 @@ FeatureSet geometryFeatures(const bvh::SceneBvh& bvh, bool packedNodes) {
     FeatureSet f;
     f.triangles = f.spheres = f.boxes = false;
     for (const gpu::Primitive& p : bvh.prims) {
-        const std::uint32_t kind = p.a.w & gpu::PRIM_KIND_MASK;
+        const std::uint32_t kind = gpu::primitiveKind(p.a);
         f.triangles |= kind == gpu::PRIM_KIND_TRIANGLE;
         f.spheres |= kind == gpu::PRIM_KIND_SPHERE;
         f.boxes |= kind == gpu::PRIM_KIND_BOX;

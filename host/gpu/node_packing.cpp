@@ -60,12 +60,12 @@ std::uint32_t nodeEntry(std::uint32_t index, std::uint32_t nodeTexels) {
 InlinedWorld inlinedWorld(const bvh::SceneBvh& bvh) {
     InlinedWorld world;
     if (bvh.instances.size() < 2 || !bvh::isIdentity(bvh.instances[0])) return world;
-    const std::uint32_t group = bvh.instances[0].info.z;
+    const std::uint32_t group = gpu::instanceGroup(bvh.instances[0].info);
     for (std::size_t i = 1; i < bvh.instances.size(); ++i)
-        if (bvh.instances[i].info.z == group) return world;
+        if (gpu::instanceGroup(bvh.instances[i].info) == group) return world;
     if (group >= bvh.groups.size() || bvh.groups[group].primCount == 0) return world;
     const std::uint32_t root = bvh.groups[group].rootNode;
-    if (root >= bvh.nodes.size() || root != bvh.instances[0].info.x) return world;
+    if (root >= bvh.nodes.size() || root != gpu::instanceRootNode(bvh.instances[0].info)) return world;
     // The group's nodes, from its root: the kernel tells them by one index range.
     std::uint32_t lo = root, hi = root, count = 0;
     std::vector<std::uint32_t> pending{root};

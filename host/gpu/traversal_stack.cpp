@@ -26,18 +26,16 @@ std::uint32_t innerDepth(const std::vector<bvh::BinaryNode>& nodes, std::uint32_
         deepest = std::max(deepest, depth);
         const bvh::BinaryNode& node = nodes[index];
         for (int child = 0; child < 2; ++child) {
-            const std::uint32_t link = node.link[child];
-            const std::uint32_t count = node.link[2 + child];
-            if (count == 0 && link != bvh::NODE_NONE) pending.emplace_back(link, depth + 1);
+            if (bvh::childIsInner(node, child)) pending.emplace_back(bvh::childLink(node, child), depth + 1);
         }
     }
     return deepest;
 }
 
 std::uint32_t traversalStackNeed(const bvh::SceneBvh& bvh, bool instancing) {
-    if (!instancing) return bvh.instances.empty() ? 0 : innerDepth(bvh.nodes, bvh.instances[0].info.x);
+    if (!instancing) return bvh.instances.empty() ? 0 : innerDepth(bvh.nodes, gpu::instanceRootNode(bvh.instances[0].info));
     std::uint32_t deepestBottom = 0;
-    for (const gpu::Instance& instance : bvh.instances) deepestBottom = std::max(deepestBottom, innerDepth(bvh.nodes, instance.info.x));
+    for (const gpu::Instance& instance : bvh.instances) deepestBottom = std::max(deepestBottom, innerDepth(bvh.nodes, gpu::instanceRootNode(instance.info)));
     return innerDepth(bvh.nodes, bvh.topRoot) + deepestBottom;
 }
 

@@ -8,6 +8,11 @@
 //    fetch, a further ~10% (host/vulkan/README.md).
 //    Integer texels are returned bit-exact, so float fields are stored as their bit patterns and
 //    decoded with uintBitsToFloat; no denormal or NaN canonicalisation can touch the integers.
+//  - A packed vec4/uvec4 slot (Instance::info, FrameParams::scene, ...) is read through the free
+//    function named for its meaning, below its struct (GLSL has no methods; VKRT_FN makes them
+//    inline in C++). Each returns one lane, so it costs nothing once inlined. A function takes the
+//    whole struct, except where the kernel fetches one texel of a larger struct alone (Instance
+//    info, a Primitive's first texel): then it takes that texel.
 #ifndef VKRT_DEVICE_HOST_H
 #define VKRT_DEVICE_HOST_H
 
@@ -20,11 +25,15 @@ using uint = std::uint32_t;
 using vec2 = glm::vec2;
 using vec3 = glm::vec3;
 using vec4 = glm::vec4;
+using uvec2 = glm::uvec2;
+using uvec3 = glm::uvec3;
 using uvec4 = glm::uvec4;
 using ivec4 = glm::ivec4;
 #define VKRT_CONST static constexpr
+#define VKRT_FN inline
 #else
 #define VKRT_CONST const
+#define VKRT_FN
 #endif
 
 // ---------------------------------------------------------------------------------------------
@@ -114,6 +123,8 @@ struct Primitive {
     uvec4 b;
     uvec4 c;
 };
+// PRIM_KIND_* of the primitive whose first texel (Primitive::a) is `a`.
+VKRT_FN uint primitiveKind(uvec4 a) { return a.w & PRIM_KIND_MASK; }
 
 // Per primitive, fetched once at the closest hit (never during traversal). 16 bytes.
 //   x: material index (the prototype's or the loose shape's own; an instance override wins)
@@ -122,6 +133,9 @@ VKRT_CONST uint ATTRIB_NONE = 0xffffffffu;
 struct PrimInfo {
     uvec4 data;
 };
+VKRT_FN uint primitiveMaterial(PrimInfo p) { return p.data.x; }
+// The vertex attributes of corners 0, 1, 2 (ATTRIB_NONE: a flat normal).
+VKRT_FN uvec3 primitiveCornerAttribs(PrimInfo p) { return uvec3(p.data.y, p.data.z, p.data.w); }
 VKRT_CONST uint PRIM_INFO_TEXELS = 1;
 
 // Mesh vertex attributes: normal.xyz + u, then v. 32 bytes.
@@ -129,6 +143,8 @@ struct VertexAttrib {
     vec4 normalU;
     vec4 vPad;
 };
+VKRT_FN vec3 vertexNormal(VertexAttrib v) { return vec3(v.normalU.x, v.normalU.y, v.normalU.z); }
+VKRT_FN vec2 vertexUv(VertexAttrib v) { return vec2(v.normalU.w, v.vPad.x); }
 VKRT_CONST uint VERTEX_ATTRIB_TEXELS = 2;
 
 // ---------------------------------------------------------------------------------------------
@@ -145,6 +161,10 @@ struct Instance {
 };
 VKRT_CONST uint INSTANCE_TEXELS = 10;     // worldToObject rows at texels 0-2, objectToWorld 3-5, normalToWorld 6-8
 VKRT_CONST uint INSTANCE_INFO_TEXEL = 9;
+// Of an Instance::info texel (the kernels fetch it alone: bindings.glsl instanceInfo).
+VKRT_FN uint instanceRootNode(uvec4 info) { return info.x; }
+VKRT_FN uint instanceMaterialOverride(uvec4 info) { return info.y; }
+VKRT_FN uint instanceGroup(uvec4 info) { return info.z; }
 
 // ---------------------------------------------------------------------------------------------
 // Material (the format's <shader>). 80 bytes.
@@ -164,6 +184,13 @@ struct Material {
     uvec4 ids;         // x = SHADER_* type, y = diffuse texture, z = specular texture, w unused
 };
 VKRT_CONST uint MATERIAL_TEXELS = 5;
+VKRT_FN uint materialType(Material m) { return m.ids.x; }
+VKRT_FN uint materialDiffuseTexture(Material m) { return m.ids.y; }
+VKRT_FN uint materialSpecularTexture(Material m) { return m.ids.z; }
+VKRT_FN float materialPhongExponent(Material m) { return m.specular.w; }
+VKRT_FN float materialRefractiveIndex(Material m) { return m.attenuation.w; }
+VKRT_FN float materialMirrorCoef(Material m) { return m.params.x; }
+VKRT_FN float materialRoughness(Material m) { return m.params.y; }
 
 // ---------------------------------------------------------------------------------------------
 // Light. 80 bytes. A point light has zero edges; an area light is the rectangle
@@ -178,6 +205,8 @@ struct Light {
     uvec4 info;      // x: LIGHT_* type, y: area-light ordinal (sampling dimension), z, w unused
 };
 VKRT_CONST uint LIGHT_TEXELS = 5;
+VKRT_FN uint lightType(Light l) { return l.info.x; }
+VKRT_FN uint lightAreaOrdinal(Light l) { return l.info.y; }
 
 // Texture: texels[offset .. offset + width*height), row 0 = top row of the image, RGBA8 packed
 // little-endian (r in the low byte), values used linearly (no sRGB decode, like the course).
@@ -185,6 +214,9 @@ struct TextureInfo {
     uvec4 info;  // x: offset, y: width, z: height, w: unused
 };
 VKRT_CONST uint TEXTURE_INFO_TEXELS = 1;
+VKRT_FN uint textureFirstTexel(TextureInfo t) { return t.info.x; }
+VKRT_FN uint textureWidth(TextureInfo t) { return t.info.y; }
+VKRT_FN uint textureHeight(TextureInfo t) { return t.info.z; }
 
 // ---------------------------------------------------------------------------------------------
 // Per-render constants (UBO, std140-compatible because every member is a 16-byte vector).
@@ -215,6 +247,24 @@ struct FrameParams {
                           // InlinedWorld): x its first node texel, y its node texels, z its first
                           // primitive, w its primitive count; y = w = 0 when none is
 };
+VKRT_FN float framePlaneWidth(FrameParams f) { return f.cameraU.w; }
+VKRT_FN float framePlaneHeight(FrameParams f) { return f.cameraV.w; }
+VKRT_FN float frameFocalLength(FrameParams f) { return f.cameraW.w; }
+VKRT_FN uint frameWidth(FrameParams f) { return f.image.x; }
+VKRT_FN uint frameHeight(FrameParams f) { return f.image.y; }
+VKRT_FN uint frameCameraType(FrameParams f) { return f.image.z; }
+VKRT_FN uint frameSampler(FrameParams f) { return f.sampling.x; }
+VKRT_FN uint frameSamplesPerPixel(FrameParams f) { return f.sampling.y; }
+VKRT_FN uint frameLightSamples(FrameParams f) { return f.sampling.z; }
+VKRT_FN uint frameGlossSamples(FrameParams f) { return f.sampling.w; }
+VKRT_FN uint frameSeed(FrameParams f) { return f.scene.x; }
+VKRT_FN uint frameMaxDepth(FrameParams f) { return f.scene.y; }
+VKRT_FN uint frameLightCount(FrameParams f) { return f.scene.z; }
+VKRT_FN uint frameTopLevelRoot(FrameParams f) { return f.scene.w; }
+// Whether a node entry / a primitive belongs to the inlined world group (FrameParams::world):
+// unsigned differences, so each range test is one compare.
+VKRT_FN bool worldHoldsNodeEntry(uvec4 world, uint entry) { return entry - world.x < world.y; }
+VKRT_FN bool worldHoldsPrimitive(uvec4 world, uint prim) { return prim - world.z < world.w; }
 
 // Written by the kernel, read by the host after each submission.
 VKRT_CONST uint STATUS_LOOP_BUDGET_EXCEEDED = 1u;
@@ -224,6 +274,11 @@ struct RenderStatus {
     uvec4 flags;       // x: STATUS_* bits, y: first offending pixel index + 1 (0: none), z: its sample,
                        // w: number of samples whose radiance was NaN/Inf (replaced by black)
 };
+// The host's reads (render.comp writes the lanes with atomics, which need the member itself).
+VKRT_FN uint statusFailures(RenderStatus s) { return s.flags.x; }
+VKRT_FN uint statusPixelPlusOne(RenderStatus s) { return s.flags.y; }
+VKRT_FN uint statusSample(RenderStatus s) { return s.flags.z; }
+VKRT_FN uint statusNonFiniteSamples(RenderStatus s) { return s.flags.w; }
 
 // Push constants: which pixels and which samples this dispatch computes.
 // Dispatches may cover a run of the tile's workgroups only (vkCmdDispatchBase offsets
@@ -234,6 +289,12 @@ struct PassParams {
     uvec4 pass;        // x first sample index, y workgroup interleave stride, z workgroups,
                        // w samples per pixel this dispatch computes (x .. x + w - 1; sample_batching.h)
 };
+VKRT_FN uvec2 passTileOrigin(PassParams p) { return uvec2(p.tile.x, p.tile.y); }
+VKRT_FN uvec2 passTileSize(PassParams p) { return uvec2(p.tile.z, p.tile.w); }
+VKRT_FN uint passFirstSample(PassParams p) { return p.pass.x; }
+VKRT_FN uint passStride(PassParams p) { return p.pass.y; }
+VKRT_FN uint passWorkgroups(PassParams p) { return p.pass.z; }
+VKRT_FN uint passSamples(PassParams p) { return p.pass.w; }
 
 // Ray-throughput benchmark (shaders/trace_rays.comp, tools/bench): rays in, hits out, so the GPU
 // traces exactly the rays the CPU traversal and the Embree peer trace.
@@ -246,6 +307,10 @@ struct TraceRayInput {
 struct TraceHitOutput {
     uvec4 hit;       // x = floatBits(t) or TRACE_MISS, y = primitive, z = instance, w = STATUS_* failures
 };
+VKRT_FN uint traceHitTBits(TraceHitOutput h) { return h.hit.x; }
+VKRT_FN uint traceHitPrimitive(TraceHitOutput h) { return h.hit.y; }
+VKRT_FN uint traceHitInstance(TraceHitOutput h) { return h.hit.z; }
+VKRT_FN uint traceHitFailures(TraceHitOutput h) { return h.hit.w; }
 // What trace_rays.comp writes per ray: 32-bit words in an R32UI texel buffer, as few as the BVH
 // needs, because lavapipe stores a texel one component at a time, each a loop over the 8 lanes
 // (profile_jit.py: the four-word hit was 5% of a primary-ray trace on buddha).
@@ -259,6 +324,8 @@ VKRT_CONST uint TRACE_HIT_WORDS_INSTANCED = 3u;  // with one
 struct TraceParams {
     uvec4 rays;      // x = ray count, y = 1 for any-hit (shadow) queries, 0 for closest hit, z, w unused
 };
+VKRT_FN uint traceRayCount(TraceParams t) { return t.rays.x; }
+VKRT_FN bool traceAnyHit(TraceParams t) { return t.rays.y != 0u; }
 
 // Specialization constant ids: the scene's feature set (the kernel is specialised per scene).
 VKRT_CONST uint SPEC_HAS_TRIANGLES = 0;

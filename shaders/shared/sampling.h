@@ -20,7 +20,6 @@
 // C++: the CPU reference and the GPU renderer's host side both call these, so they live in a
 // namespace of their own, with the GLSL names they use.
 namespace vkrt::sampling {
-#define VKRT_FN inline
 using glm::min;
 using gpu::uint;
 using gpu::uvec4;
@@ -28,8 +27,6 @@ using gpu::vec2;
 using gpu::SAMPLER_RANDOM;
 using gpu::SAMPLER_REGULAR;
 using gpu::SAMPLER_SOBOL;
-#else
-#define VKRT_FN
 #endif
 
 // How a loop reports that a driver's loop limiter ended it early: the GLSL kernels define it
@@ -211,7 +208,6 @@ inline uvec4 makeSampleGrid(uint count) {
     uint gy = count / gx;
     return uvec4(count, gx, glm::floatBitsToUint(1.0f / float(gx)), glm::floatBitsToUint(1.0f / float(gy)));
 }
-#undef VKRT_FN
 }  // namespace vkrt::sampling
 #endif
 
