@@ -14,8 +14,8 @@ namespace {
 
 // Above this many references a node's binning is spread over the pool, and its children are
 // split further before being handed out as subtree jobs; below it one thread builds the subtree.
-// 8K rather than 16K: a 16K-triangle mesh was a single job on one thread (4.7 -> 3.0 ms on
-// sphere:64 with 2 threads), and smaller jobs balance better at the end of larger builds.
+// 8K rather than 16K: a 16K-triangle mesh was a single job on one thread, and smaller jobs
+// balance better at the end of larger builds (commit 0bdb3cf).
 constexpr std::uint32_t kParallelNodeSize = 8 * 1024;
 // References per binning chunk: large enough that merging bins is negligible, small enough that
 // a range just above kParallelNodeSize is binned by 2 threads.
@@ -57,9 +57,8 @@ int levelsNeeded(std::uint32_t n, std::uint32_t maxLeaf) {
 // nodes for m references) but typically half used; with a fixed slice per job every 2 MiB page
 // of the array was touched (zeroed by the kernel when fresh) and half of it never used. A job never
 // takes more than its worst case, so the array's size is unchanged; which slots a job gets depends
-// on timing, but nothing downstream depends on build-node indices, only on the tree. sphere:256,
-// 2 threads: page zeroing under the subtree jobs 4.4% -> 2.9% of a profile's samples; builds
-// x0.991 / x0.978 single-thread (8 alternating pairs each: within this machine's noise).
+// on timing, but nothing downstream depends on build-node indices, only on the tree. It takes
+// page zeroing out of the subtree jobs' profile (docs/lab/2026-12-02-bvh-build.md).
 class NodeAllocator {
 public:
     NodeAllocator(std::atomic<std::uint32_t>& cursor, std::uint32_t worstCase) : cursor_(cursor), budget_(worstCase) {}
@@ -125,8 +124,8 @@ void Builder::childRanges(const Range& r, std::uint32_t mid, Range& left, Range&
 // The same children as childRanges after a binned partition, their boxes taken from the bins: the
 // bins of the split axis below the plane hold exactly the left child's references (binning and
 // partitioning map a reference to the same bin), and min/max are exact, so the boxes are
-// identical. Only the centroid bounds need a pass over the references. Dragon builds, alternating
-// pairs: x0.985 with 2 threads, x0.984 single-thread CPU time (10 pairs each, 6 faster).
+// identical. Only the centroid bounds need a pass over the references (commit f79e8ba,
+// docs/lab/2026-12-02-bvh-build.md).
 void Builder::childRangesFromBins(const Range& r, std::uint32_t mid, const Bins& bins, int axis, int plane,
                                   int binCount, Range& left, Range& right) {
     Box4 lb, rb, lc, rc;
@@ -152,8 +151,8 @@ void Builder::partitionByBin(const Range& r, const BinMapper::Axis& map, int pla
             // Whole 32-byte moves (memcpy), the side read from the array: with x as a value the
             // compiler spilled it to the stack to read its axis lane, and stored it into base[l]
             // as two 16-byte halves that the next iteration's 32-byte load of base[l] (the same
-            // slot when x went right) could not be forwarded from: a stall per reference.
-            // Dragon, 2 threads, 25 builds per run, 4 alternating pairs: median build 4-5% faster.
+            // slot when x went right) could not be forwarded from: a stall per reference
+            // (commit 098522a, docs/lab/2026-12-02-bvh-build.md).
             const auto goesLeft = static_cast<std::uint32_t>(map(base[i]) < plane);
             alignas(32) unsigned char x[sizeof(PrimRef)], front[sizeof(PrimRef)];
             std::memcpy(x, base + i, sizeof x);
@@ -263,8 +262,8 @@ bool Builder::split(const Range& r, bool branchFree, Range& left, Range& right) 
 
 // The same bytes as BuildNode{box.lo, box.hi, a, b}, assembled in two SSE registers: built as a
 // value, the node went through the stack as 4- and 8-byte stores read back by one 32-byte load,
-// which cannot be store-forwarded (a stall twice per node). buildSubtree 7.4% -> 1.7% of a dragon
-// build's samples; builds 4.5% faster (median of 10 alternating pairs, 9 of 10 faster).
+// which cannot be store-forwarded (a stall twice per node; commit 93ae134,
+// docs/lab/2026-12-02-bvh-build.md).
 static_assert(offsetof(BuildNode, lo) == 0 && offsetof(BuildNode, hi) == 12 && offsetof(BuildNode, a) == 24 &&
               offsetof(BuildNode, b) == 28);
 inline void storeNode(BuildNode* dst, const Box4& box, std::uint32_t a, std::uint32_t b) {

@@ -41,8 +41,7 @@ void binRefs(const PrimRef* refs, std::uint32_t n, const BinMapper& mapper, Bins
         // Two passes per block of 256: the bin indices of the whole block first (4 lanes per
         // reference, a small array in L1), then the bin updates, whose addresses then come from
         // plain loads instead of each reference's convert-and-extract chain, so the updates'
-        // loads and stores can issue early. Single-thread builds: sphere:512 0.41-0.44 s ->
-        // 0.31-0.33 s, dragon 38-46 ms -> 32-38 ms (docs/BVH.md §4, 2026-12-01 19:55).
+        // loads and stores can issue early (docs/lab/2026-12-02-bvh-build.md).
         constexpr std::uint32_t kBlock = 256;
         alignas(16) std::int32_t idx[kBlock][4];
         for (; i + 3 < n;) {

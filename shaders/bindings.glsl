@@ -40,11 +40,10 @@ layout(set = 0, binding = BINDING_TEXELS, r32ui) uniform readonly uimageBuffer t
 // but not a compile-time constant. lavapipe (Mesa 22.3, update_inline_shader_state) inlines
 // uniforms that feed branches or loop bounds into a copy of the kernel and recompiles it whenever
 // push constants or uniform bindings change: here, at every submission. With Mesa's shader disk
-// cache those recompiles were cache hits (22-27 copies of the kernel in memory during one render);
-// without it each was a full LLVM compile (a 64x64, 4 rpp render took 63 s; now 64x64 at 16 rpp
-// renders in 0.04 s), and a cold cache added ~0.5 s to the first render of each scene. The inliner
-// only follows loads at constant offsets; an index it cannot fold leaves one compile per pipeline.
-// Every dispatch is (n, 1, 1) workgroups (host/vulkan), so gl_NumWorkGroups.z - 1 is 0.
+// cache those recompiles were cache hits (yet a copy of the kernel each, in memory); without it
+// each was a full LLVM compile (host/gpu/README.md, fact 7). The inliner only follows loads at
+// constant offsets; an index it cannot fold leaves one compile per pipeline.
+// Every dispatch is (n, 1, 1) workgroups (host/gpu/submission_recorder), so gl_NumWorkGroups.z - 1 is 0.
 #define VKRT_UNIFORM_INDEX (gl_NumWorkGroups.z - 1u)
 layout(std140, set = 0, binding = BINDING_FRAME) uniform FrameBuffer { FrameParams frames[1]; };
 #define frame frames[VKRT_UNIFORM_INDEX]
@@ -54,7 +53,7 @@ layout(std140, set = 0, binding = BINDING_FRAME) uniform FrameBuffer { FramePara
 uint samplerKind() { return SAMPLER_KIND == SAMPLER_FROM_FRAME ? frameSampler(frame) : SAMPLER_KIND; }
 // The per-pixel sums, a texel buffer rather than an SSBO: on lavapipe an SSBO load at per-lane
 // addresses is a loop over the lanes, one scalar load (and cache miss) at a time, while imageLoad
-// is a gather (host/vulkan/README.md).
+// is a gather (host/gpu/README.md, fact 3).
 layout(set = 0, binding = BINDING_ACCUM, rgba32ui) uniform uimageBuffer accumTexels;
 layout(std430, set = 0, binding = BINDING_STATUS) coherent buffer StatusBuffer { RenderStatus status; };
 

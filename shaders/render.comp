@@ -2,7 +2,7 @@
 // The render kernel: one invocation computes pass.w consecutive samples of one pixel and adds
 // them to the pixel's running sum. One dispatch = one pass of samples over one tile; the host
 // sizes the pass so that an invocation stays far below lavapipe's loop limit and each submission
-// short (host/vulkan: sample_batching.h, tile_planner.h).
+// short (host/gpu: sample_batching.h, tile_planner.h).
 #extension GL_GOOGLE_include_directive : require
 
 #include "device_host.h"
@@ -71,7 +71,8 @@ void main() {
     uint nonFinite = 0u;
     uint failedSample = NO_SAMPLE;
     if (SAMPLES_PER_DISPATCH == 1u) {
-        // No loop: a loop around the path, even of one pass, made happyBuddha_100K 28% slower.
+        // No loop: a loop around the path, even of one pass, made meshes slower
+        // (docs/lab/2026-12-02-lavapipe-kernel.md).
         addSample(x, y, passFirstSample(pass), key, sum, nonFinite, failedSample);
     } else {
         uint j = 0u;

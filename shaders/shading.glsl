@@ -54,8 +54,8 @@ vec3 directLighting(Surface s, vec3 N, vec3 V, uint type, vec3 kd, vec3 ks, floa
         if (!chargeLoop()) break;
         Light light = loadLight(l);
         // Point and area lights share one sample loop (a point light: one sample at its position)
-        // so the shadow-ray traversal is inlined once here, not twice: a smaller kernel, measured
-        // ~8% faster on threeEggs_SoftShadows on lavapipe.
+        // so the shadow-ray traversal is inlined once here, not twice: a smaller kernel, and a
+        // faster one on lavapipe (docs/lab/2026-12-02-lavapipe-kernel.md).
         bool area = HAS_AREA_LIGHTS && lightType(light) == LIGHT_AREA;
         uint k = area ? frameLightSamples(frame) : 1u;
         vec3 acc = vec3(0.0);

@@ -11,7 +11,7 @@
 #include "traverse.glsl"
 
 // Rays through a texel buffer, like the BVH (bindings.glsl): on lavapipe an SSBO load at a
-// per-lane address is a scalar loop over the lanes (host/vulkan/README.md).
+// per-lane address is a scalar loop over the lanes (host/gpu/README.md, fact 3).
 layout(set = 0, binding = BINDING_RAYS, rgba32ui) uniform readonly uimageBuffer rays;
 layout(set = 0, binding = BINDING_HITS, r32ui) uniform writeonly uimageBuffer hits;  // device_host.h: TRACE_HIT_WORDS
 layout(push_constant) uniform TracePush { TraceParams traces[1]; };

@@ -131,7 +131,7 @@ Shader parseShader(const ParseContext& context, pugi::xml_node node, const Textu
     }
     if (pugi::xml_node e = parameter("attenuationCoef")) shader.attenuation = parseVec3(context, e);
 
-    // 2011/12 files write a mirrored Blinn-Phong as BlinnPhong + mirrorCoef (FORMAT.md §6).
+    // 2011/12 files write a mirrored Blinn-Phong as BlinnPhong + mirrorCoef (docs/XML_FORMAT.md §6).
     if (shader.type == ShaderType::BlinnPhong && shader.mirrorCoef > 0.0f) shader.type = ShaderType::BlinnPhongMirrored;
     return shader;
 }

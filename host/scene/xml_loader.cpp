@@ -25,7 +25,7 @@ bool isElement(pugi::xml_node node, std::string_view name) {
     return node.type() == pugi::node_element && name == node.name();
 }
 
-// Two passes over the document (FORMAT.md §7.2), so that child and element order never matter:
+// Two passes over the document (docs/XML_FORMAT.md §7.2), so that child and element order never matter:
 //   1. definitions by name: textures, shaders (top-level and inline in shapes), prototypes;
 //   2. everything placed in the scene: cameras, lights, shapes and instances, scene parameters.
 class SceneBuilder {
@@ -204,7 +204,7 @@ private:
     }
 
     // Background and environment map: <sceneParameters> children win over the root attributes
-    // (FORMAT.md §7.3). Environment maps are recorded, not rendered; a warning says so.
+    // (docs/XML_FORMAT.md §7.3). Environment maps are recorded, not rendered; a warning says so.
     void readSceneParameters(pugi::xml_node root, pugi::xml_node parameters) {
         if (const pugi::xml_attribute bg = root.attribute("bgColor"))
             scene_.background = parseVec3Text(context_, root, "scene bgColor", bg.value());

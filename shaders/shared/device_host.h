@@ -3,9 +3,9 @@
 //  - SSBO structs follow std430: vec4/uvec4 members only, so C++ and GLSL agree without padding
 //    surprises; the static_asserts below pin every size.
 //  - BVH nodes and primitives are read through RGBA32UI read-only storage texel buffers
-//    (uimageBuffer, imageLoad): on Mesa 22.3 lavapipe texelFetch was x1.45 faster than SSBO loads
+//    (uimageBuffer, imageLoad): on Mesa 22.3 lavapipe texelFetch was faster than SSBO loads
 //    (../shared/LAVAPIPE.md), and imageLoad, which its JIT inlines where texelFetch is a call per
-//    fetch, a further ~10% (host/vulkan/README.md).
+//    fetch, faster again (host/gpu/README.md, facts 3 and 4).
 //    Integer texels are returned bit-exact, so float fields are stored as their bit patterns and
 //    decoded with uintBitsToFloat; no denormal or NaN canonicalisation can touch the integers.
 //  - A packed vec4/uvec4 slot (Instance::info, FrameParams::scene, ...) is read through the free
@@ -229,7 +229,7 @@ VKRT_CONST uint SAMPLER_SOBOL = 3u;
 // SPEC_SAMPLER's value for "any": the kernel reads the sampler from FrameParams::sampling.x (the
 // general kernel). A specialised kernel gets the render's sampler as a constant instead, so only
 // that sampler's code is compiled: sample2D's branches on the kind are not skipped on lavapipe,
-// which runs every path for all 8 lanes (host/vulkan/README.md).
+// which runs every path for all 8 lanes (host/gpu/README.md, fact 2).
 VKRT_CONST uint SAMPLER_FROM_FRAME = 0xffffffffu;
 struct FrameParams {
     vec4 cameraPosition;  // xyz eye, w unused
