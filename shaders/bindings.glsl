@@ -47,10 +47,25 @@ layout(set = 0, binding = BINDING_TEXELS, r32ui) uniform readonly uimageBuffer t
 #define VKRT_UNIFORM_INDEX (gl_NumWorkGroups.z - 1u)
 layout(std140, set = 0, binding = BINDING_FRAME) uniform FrameBuffer { FrameParams frames[1]; };
 #define frame frames[VKRT_UNIFORM_INDEX]
+// FrameParams' lanes by name (device_host.h), each read straight from the block: a function taking
+// `frame` would load whole vec4s and keep them live across the kernel's loops.
+float framePlaneWidth() { return frame.cameraU.w; }
+float framePlaneHeight() { return frame.cameraV.w; }
+float frameFocalLength() { return frame.cameraW.w; }
+uint frameWidth() { return frame.image.x; }
+uint frameHeight() { return frame.image.y; }
+uint frameCameraType() { return frame.image.z; }
+uint frameSampler() { return frame.sampling.x; }
+uint frameLightSamples() { return frame.sampling.z; }
+uint frameGlossSamples() { return frame.sampling.w; }
+uint frameSeed() { return frame.scene.x; }
+uint frameMaxDepth() { return frame.scene.y; }
+uint frameLightCount() { return frame.scene.z; }
+uint frameTopLevelRoot() { return frame.scene.w; }
 
 // The render's sampler (SAMPLER_*): the specialization constant, or for the general kernel the
 // frame's value. Every sample2D call takes it from here.
-uint samplerKind() { return SAMPLER_KIND == SAMPLER_FROM_FRAME ? frameSampler(frame) : SAMPLER_KIND; }
+uint samplerKind() { return SAMPLER_KIND == SAMPLER_FROM_FRAME ? frameSampler() : SAMPLER_KIND; }
 // The per-pixel sums, a texel buffer rather than an SSBO: on lavapipe an SSBO load at per-lane
 // addresses is a loop over the lanes, one scalar load (and cache miss) at a time, while imageLoad
 // is a gather (host/gpu/README.md, fact 3).

@@ -75,14 +75,14 @@ vec3 glossyDirection(vec3 r, float roughness, vec2 u) {
 
 // Reflection rays of a reflective material (mirror direction, or glossy samples of it).
 void emitReflection(inout PathQueue q, PathRay ray, Surface s, vec3 N, float roughness, vec3 weight, SampleKey key) {
-    if (ray.depth >= MAX_DEPTH || ray.depth >= frameMaxDepth(frame)) return;
+    if (ray.depth >= MAX_DEPTH || ray.depth >= frameMaxDepth()) return;
     vec3 r = reflect(ray.dir, N);
     if (!HAS_GLOSS || roughness <= 0.0) {
         if (dot(r, s.geomNormal) > 0.0) emitRay(q, offsetTowards(s, r), r, weight, ray.depth + 1u);
         return;
     }
     bool fanOut = ray.depth == 0u;  // gloss samples apply at primary hits only (RENDERING.md §5)
-    uint g = fanOut ? frameGlossSamples(frame) : 1u;
+    uint g = fanOut ? frameGlossSamples() : 1u;
     vec3 w = weight / float(g);
     uint j = 0u;
     for (; j < g; ++j) {
@@ -102,7 +102,7 @@ void emitDielectric(inout PathQueue q, PathRay ray, Surface s, Material m, float
     vec3 weight = ray.weight;
     // Leaving the medium: Beer-Lambert over the distance travelled inside (per-unit transmittance).
     if (!entering) weight *= pow(max(m.attenuation.rgb, vec3(0.0)), vec3(hitDistance));
-    if (ray.depth >= MAX_DEPTH || ray.depth >= frameMaxDepth(frame)) return;
+    if (ray.depth >= MAX_DEPTH || ray.depth >= frameMaxDepth()) return;
     float eta = materialRefractiveIndex(m);
     vec3 n = entering ? s.shadeNormal : -s.shadeNormal;  // faces the incoming ray
     float n1 = entering ? 1.0 : eta;

@@ -62,8 +62,8 @@ void main() {
     uint y = tileOrigin.y + localY;
 
     SampleKey key;
-    key.pixel = y * frameWidth(frame) + x;
-    key.seed = frameSeed(frame);
+    key.pixel = y * frameWidth() + x;
+    key.seed = frameSeed();
     // The pixel's sum is loaded once and stored once per pass (each stored word is a loop over
     // the lanes on lavapipe); the samples are added to it one by one in sample order, so the image
     // does not depend on the pass size (sample_batching.h).

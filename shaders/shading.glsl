@@ -48,7 +48,7 @@ vec3 lightFrom(Surface s, vec3 N, vec3 V, uint type, vec3 kd, vec3 ks, float pho
 
 vec3 directLighting(Surface s, vec3 N, vec3 V, uint type, vec3 kd, vec3 ks, float phongExp, uint depth, SampleKey key) {
     vec3 sum = vec3(0.0);
-    uint lightCount = frameLightCount(frame);
+    uint lightCount = frameLightCount();
     uint l = 0u;
     for (; l < lightCount; ++l) {
         if (!chargeLoop()) break;
@@ -57,7 +57,7 @@ vec3 directLighting(Surface s, vec3 N, vec3 V, uint type, vec3 kd, vec3 ks, floa
         // so the shadow-ray traversal is inlined once here, not twice: a smaller kernel, and a
         // faster one on lavapipe (docs/lab/2026-12-02-lavapipe-kernel.md).
         bool area = HAS_AREA_LIGHTS && lightType(light) == LIGHT_AREA;
-        uint k = area ? frameLightSamples(frame) : 1u;
+        uint k = area ? frameLightSamples() : 1u;
         vec3 acc = vec3(0.0);
         uint j = 0u;
         for (; j < k; ++j) {

@@ -170,7 +170,7 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
     bool spilling = false;
     uint spillEntry = ENTRY_NONE;
     uint instance = 0u;
-    uint entry = rootEntry(HAS_INSTANCES ? frameTopLevelRoot(frame) : instanceRootNode(instanceInfo(0u)));
+    uint entry = rootEntry(HAS_INSTANCES ? frameTopLevelRoot() : instanceRootNode(instanceInfo(0u)));
     // The top level's nodes come last in the node array, from its root on (bvh.h, SceneBvh::nodes;
     // the host checks it: node_packing.h), so an entry at or past the root's is a top-level node.
     // The world group's nodes (frame.world, node_packing.h InlinedWorld: the loose shapes of

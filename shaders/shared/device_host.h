@@ -8,11 +8,13 @@
 //    fetch, faster again (host/gpu/README.md, facts 3 and 4).
 //    Integer texels are returned bit-exact, so float fields are stored as their bit patterns and
 //    decoded with uintBitsToFloat; no denormal or NaN canonicalisation can touch the integers.
-//  - A packed vec4/uvec4 slot (Instance::info, FrameParams::scene, ...) is read through the free
+//  - A packed vec4/uvec4 slot (Instance::info, Material::ids, ...) is read through the free
 //    function named for its meaning, below its struct (GLSL has no methods; VKRT_FN makes them
-//    inline in C++). Each returns one lane, so it costs nothing once inlined. A function takes the
-//    whole struct, except where the kernel fetches one texel of a larger struct alone (Instance
-//    info, a Primitive's first texel): then it takes that texel.
+//    inline in C++). Each returns one lane of a value the caller holds, so it costs nothing once
+//    inlined. A function takes the whole struct, except where the kernel fetches one texel of a
+//    larger struct alone (Instance info, a Primitive's first texel): then it takes that texel.
+//    The uniform blocks (FrameParams, TraceParams) are the exception: the kernels name their lanes
+//    with functions that read the block itself (bindings.glsl, trace_rays.comp; see FrameParams).
 #ifndef VKRT_DEVICE_HOST_H
 #define VKRT_DEVICE_HOST_H
 
@@ -247,20 +249,13 @@ struct FrameParams {
                           // InlinedWorld): x its first node texel, y its node texels, z its first
                           // primitive, w its primitive count; y = w = 0 when none is
 };
-VKRT_FN float framePlaneWidth(FrameParams f) { return f.cameraU.w; }
-VKRT_FN float framePlaneHeight(FrameParams f) { return f.cameraV.w; }
-VKRT_FN float frameFocalLength(FrameParams f) { return f.cameraW.w; }
-VKRT_FN uint frameWidth(FrameParams f) { return f.image.x; }
-VKRT_FN uint frameHeight(FrameParams f) { return f.image.y; }
-VKRT_FN uint frameCameraType(FrameParams f) { return f.image.z; }
-VKRT_FN uint frameSampler(FrameParams f) { return f.sampling.x; }
-VKRT_FN uint frameSamplesPerPixel(FrameParams f) { return f.sampling.y; }
-VKRT_FN uint frameLightSamples(FrameParams f) { return f.sampling.z; }
-VKRT_FN uint frameGlossSamples(FrameParams f) { return f.sampling.w; }
-VKRT_FN uint frameSeed(FrameParams f) { return f.scene.x; }
-VKRT_FN uint frameMaxDepth(FrameParams f) { return f.scene.y; }
-VKRT_FN uint frameLightCount(FrameParams f) { return f.scene.z; }
-VKRT_FN uint frameTopLevelRoot(FrameParams f) { return f.scene.w; }
+// The kernels read these lanes straight from the uniform block, one lane each, through
+// bindings.glsl's frameSeed(), frameMaxDepth(), ...: passing the block's struct to a function makes
+// lavapipe load whole vec4s and keep them live (the traversal's JIT loops grew). The host's reads:
+#ifdef __cplusplus
+inline uint frameWidth(const FrameParams& f) { return f.image.x; }
+inline uint frameHeight(const FrameParams& f) { return f.image.y; }
+#endif
 // Whether a node entry / a primitive belongs to the inlined world group (FrameParams::world):
 // unsigned differences, so each range test is one compare.
 VKRT_FN bool worldHoldsNodeEntry(uvec4 world, uint entry) { return entry - world.x < world.y; }
@@ -324,8 +319,8 @@ VKRT_CONST uint TRACE_HIT_WORDS_INSTANCED = 3u;  // with one
 struct TraceParams {
     uvec4 rays;      // x = ray count, y = 1 for any-hit (shadow) queries, 0 for closest hit, z, w unused
 };
-VKRT_FN uint traceRayCount(TraceParams t) { return t.rays.x; }
-VKRT_FN bool traceAnyHit(TraceParams t) { return t.rays.y != 0u; }
+// Read in trace_rays.comp straight from the push constants (traceRayCount(), traceAnyHit()), as
+// FrameParams is; the host only writes it.
 
 // Specialization constant ids: the scene's feature set (the kernel is specialised per scene).
 VKRT_CONST uint SPEC_HAS_TRIANGLES = 0;
