@@ -62,8 +62,8 @@ struct BuildStats {
     std::size_t leafCount = 0;
     std::size_t bytes = 0;        // nodes + primitives + instances as uploaded
     int bottomDepth = 0;          // nodes on the longest root-to-leaf path of any bottom level
-    int topDepth = 0;             // the same for the top level; a kernel's traversal stack needs at
-                                  // most topDepth + 1 + bottomDepth entries
+    int topDepth = 0;             // the same for the top level; the kernel's traversal stack needs at
+                                  // most topDepth + bottomDepth entries (host/gpu/traversal_stack.h)
 };
 
 // The flattened two-level BVH: prims and instances are uploaded as they are, nodes after packing

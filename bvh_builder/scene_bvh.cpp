@@ -222,13 +222,14 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
         worldBoxes[i] = worldBounds(Aabb{g.lo, g.hi}, instances[i].objectToWorld);
     }
     // The top level may use what the bottom levels leave of the kernels' stack: a kernel needs
-    // topDepth + 1 + bottomDepth entries (host/vulkan/traversal_stack.cpp), at most
-    // TRAVERSAL_STACK_SIZE; but never less than a balanced tree over the instances needs.
+    // topDepth + bottomDepth entries (one per inner node on the path in each level; nothing is
+    // pushed to leave an instance: host/gpu/traversal_stack.h), at most TRAVERSAL_STACK_SIZE;
+    // but never less than a balanced tree over the instances needs.
     int balancedDepth = 1;
     while ((std::size_t{1} << balancedDepth) < instances.size()) ++balancedDepth;
     SahParams topParams = params;
     topParams.maxDepth = std::min(kMaxTreeDepth, std::max(balancedDepth,
-        static_cast<int>(gpu::TRAVERSAL_STACK_SIZE) - 1 - bvh.stats.bottomDepth));
+        static_cast<int>(gpu::TRAVERSAL_STACK_SIZE) - bvh.stats.bottomDepth));
     const FlattenResult top = buildTopLevel(worldBoxes, topParams, pool, bvh.nodes);
     bvh.topRoot = top.root;
     bvh.stats.topDepth = top.depth;

@@ -204,7 +204,7 @@ void expectWellFormed(const TestScene& scene, const SceneBvh& bvh, const BuildOp
     std::sort(widePlaced.begin(), widePlaced.end());
     EXPECT_EQ(widePlaced, expected) << "top level (4-wide copy)";
     EXPECT_EQ(bvh.stats.topDepth, top.depth);
-    EXPECT_LE(bvh.stats.topDepth + 1 + bvh.stats.bottomDepth, static_cast<int>(gpu::TRAVERSAL_STACK_SIZE));
+    EXPECT_LE(bvh.stats.topDepth + bvh.stats.bottomDepth, static_cast<int>(gpu::TRAVERSAL_STACK_SIZE));
     // Every node belongs to exactly one tree.
     EXPECT_EQ(reachable + top.nodes, bvh.nodes.size());
     EXPECT_EQ(bvh.stats.nodeCount, bvh.nodes.size());
