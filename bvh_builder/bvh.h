@@ -1,6 +1,8 @@
-// bvh_builder: a two-level SAH BVH over spheres, boxes and triangles, flattened into the layout
-// the GLSL kernels read (shaders/shared/device_host.h), plus the CPU traversal that the reference
-// renderer and the benchmarks use. No Vulkan and no scene-format dependency.
+// bvh_builder: a two-level SAH BVH over spheres, boxes and triangles, flattened into binary nodes
+// (node_layout.h; host/gpu/node_packing makes the kernels' layout from them) beside the primitive
+// and instance records the GLSL kernels read as they are (shaders/shared/device_host.h), plus the
+// CPU traversal that the reference renderer and the benchmarks use. No Vulkan and no scene-format
+// dependency.
 //
 // Bottom level: one BVH per geometry group (a mesh, a prototype, or the scene's loose shapes).
 // Top level: one BVH over instances = (group, object-to-world affine transform).
@@ -12,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "../shaders/shared/device_host.h"
+#include "node_layout.h"
 #include "wide_bvh.h"
 
 namespace vkrt::bvh {
@@ -28,7 +31,7 @@ struct PrimitiveInput {
 struct InstanceInput {
     std::uint32_t group = 0;
     glm::mat4 objectToWorld{1.0f};
-    std::uint32_t materialOverride = gpu::MATERIAL_NONE;  // copied into Instance::info.y
+    std::uint32_t materialOverride = gpu::MATERIAL_NONE;  // Instance::info (instanceMaterialOverride)
 };
 
 struct BuildOptions {
@@ -59,13 +62,14 @@ struct BuildStats {
     std::size_t leafCount = 0;
     std::size_t bytes = 0;        // nodes + primitives + instances as uploaded
     int bottomDepth = 0;          // nodes on the longest root-to-leaf path of any bottom level
-    int topDepth = 0;             // the same for the top level; a kernel's traversal stack needs at
-                                  // most topDepth + 1 + bottomDepth entries
+    int topDepth = 0;             // the same for the top level; the kernel's traversal stack needs at
+                                  // most topDepth + bottomDepth entries (host/gpu/traversal_stack.h)
 };
 
-// The flattened two-level BVH: exactly what is uploaded to the GPU.
+// The flattened two-level BVH: prims and instances are uploaded as they are, nodes after packing
+// (host/gpu/node_packing).
 struct SceneBvh {
-    std::vector<gpu::BvhNode> nodes;          // every bottom level (depth-first), then the top level
+    std::vector<BinaryNode> nodes;            // every bottom level (depth-first), then the top level
     std::vector<gpu::Primitive> prims;        // leaf-contiguous, group after group
     std::vector<std::uint32_t> primSource;    // flat primitive -> its index in the group's input list
     std::vector<GroupRange> groups;           // per input group

@@ -16,7 +16,7 @@ struct Emitter {
     const BuildTree& tree;
     const LeafLink& leafLink;
     const SahParams& params;
-    gpu::BvhNode* out;
+    BinaryNode* out;
     std::uint32_t next;                                // next output index
     std::function<int(std::uint32_t)> blockOf;         // top part only: block of a subtree root, or -1
     std::function<void(int block, std::uint32_t offset, int level)> placed;
@@ -67,12 +67,12 @@ struct Block {
 }  // namespace
 
 FlattenResult flatten(const BuildTree& tree, const LeafLink& leafLink, const SahParams& params, ThreadPool& pool,
-                      std::vector<gpu::BvhNode>& out) {
+                      std::vector<BinaryNode>& out) {
     FlattenResult result;
     result.root = static_cast<std::uint32_t>(out.size());
     result.depth = 1;
     if (tree.empty() || tree[tree.root].leaf()) {
-        gpu::BvhNode node{};
+        BinaryNode node{};
         setEmptyChild(node, 0);
         setEmptyChild(node, 1);
         if (!tree.empty()) {

@@ -1,4 +1,4 @@
-// BuildTree -> gpu::BvhNode array: depth-first (a node's first inner child follows it directly),
+// BuildTree -> BinaryNode array: depth-first (a node's first inner child follows it directly),
 // one 64-byte node per inner node of the build tree holding both children's boxes, leaves folded
 // into their parent's child slot. A tree that is a single leaf (or empty) still gets one node, whose
 // second slot is empty, so every group and the top level have a root node to start from.
@@ -10,7 +10,7 @@
 #include <functional>
 #include <vector>
 
-#include "../shaders/shared/device_host.h"
+#include "node_layout.h"
 #include "sah_builder.h"
 
 namespace vkrt::bvh {
@@ -30,6 +30,6 @@ struct FlattenResult {
 using LeafLink = std::function<std::uint32_t(const BuildNode&)>;
 
 FlattenResult flatten(const BuildTree& tree, const LeafLink& leafLink, const SahParams& params, ThreadPool& pool,
-                      std::vector<gpu::BvhNode>& out);
+                      std::vector<BinaryNode>& out);
 
 }  // namespace vkrt::bvh

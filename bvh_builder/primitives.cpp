@@ -96,7 +96,7 @@ gpu::Primitive encode(const PrimitiveInput& p) {
 
 PrimitiveInput decode(const gpu::Primitive& p) {
     PrimitiveInput r;
-    r.kind = p.a.w & gpu::PRIM_KIND_MASK;
+    r.kind = gpu::primitiveKind(p.a);
     r.a = floats(p.a);
     r.b = floats(p.b);
     r.c = floats(p.c);

@@ -18,8 +18,7 @@ void validate(const PrimitiveInput& p, std::size_t group, std::size_t index);
 // The reference of a triangle with finite corners, computed in SSE registers: the same bits as
 // PrimRef::make(boundsOf(p), id) (min/max with boundsOf's operand order, which decides between +0
 // and -0). Returns false, writing nothing, for anything else: those take validate() and boundsOf().
-// Reference pass (with validate and boundsOf) 3.6% -> 1.0% of a dragon build's samples; builds
-// x0.970 (10 alternating pairs, 7 faster).
+// It takes most of the reference pass's time away (commit 33fd124, docs/lab/2026-12-02-bvh-build.md).
 inline bool triangleRef(const PrimitiveInput& p, std::uint32_t id, PrimRef& out) {
     static_assert(sizeof(PrimitiveInput) == 40 && offsetof(PrimitiveInput, a) == 4 && offsetof(PrimitiveInput, b) == 16 &&
                   offsetof(PrimitiveInput, c) == 28);

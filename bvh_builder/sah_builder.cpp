@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <bit>
 #include <cstddef>
 #include <cstring>
 #include <stdexcept>
@@ -13,15 +12,10 @@ namespace vkrt::bvh {
 
 namespace {
 
-constexpr int kMaxBins = 64;
-// Nodes with at most this many references use the exact sweep instead of bins.
-constexpr std::uint32_t kSweepSize = 16;
-// Nodes with at most this many references (in subtree jobs) bin only their widest centroid axis.
-constexpr std::uint32_t kWidestAxisOnly = 64;
 // Above this many references a node's binning is spread over the pool, and its children are
 // split further before being handed out as subtree jobs; below it one thread builds the subtree.
-// 8K rather than 16K: a 16K-triangle mesh was a single job on one thread (4.7 -> 3.0 ms on
-// sphere:64 with 2 threads), and smaller jobs balance better at the end of larger builds.
+// 8K rather than 16K: a 16K-triangle mesh was a single job on one thread, and smaller jobs
+// balance better at the end of larger builds (commit 0bdb3cf).
 constexpr std::uint32_t kParallelNodeSize = 8 * 1024;
 // References per binning chunk: large enough that merging bins is negligible, small enough that
 // a range just above kParallelNodeSize is binned by 2 threads.
@@ -43,233 +37,6 @@ struct Bounds2 {
     }
 };
 
-inline float lane(__m128 v, int i) {
-    alignas(16) float f[4];
-    _mm_store_ps(f, v);
-    return f[i];
-}
-
-// Half the surface area of a box held in SSE registers, without leaving them.
-inline float halfArea(__m128 lo, __m128 hi) {
-    const __m128 e = _mm_max_ps(_mm_sub_ps(hi, lo), _mm_setzero_ps());
-    const __m128 eYZX = _mm_shuffle_ps(e, e, _MM_SHUFFLE(3, 0, 2, 1));
-    const __m128 p = _mm_mul_ps(e, eYZX);  // xy, yz, zx, -
-    const __m128 sum = _mm_add_ss(p, _mm_add_ss(_mm_shuffle_ps(p, p, 1), _mm_movehl_ps(p, p)));
-    return _mm_cvtss_f32(sum);
-}
-
-// Maps twice-centroids to bin indices per axis. Binning and partitioning use the same arithmetic
-// (the SSE lanes here, the scalar Axis below: IEEE operations give the same bits), so a reference
-// is partitioned into the bin it was counted in.
-struct BinMapper {
-    __m128 origin;
-    __m128 scale;
-    int bins = 0;
-    std::array<bool, 3> usable{};
-
-    BinMapper(const Box4& centroids, int binCount) : bins(binCount) {
-        origin = centroids.lo;
-        alignas(16) float s[4] = {0, 0, 0, 0};
-        for (int a = 0; a < 3; ++a) {
-            const float extent = lane(centroids.hi, a) - lane(centroids.lo, a);
-            // (1 - 2^-20) keeps the largest centroid inside the last bin despite rounding.
-            const float k = extent > 0.0f ? static_cast<float>(binCount) * (1.0f - 0x1p-20f) / extent : 0.0f;
-            usable[a] = extent > 0.0f && k < 1e30f;  // a denormal extent would give an infinite scale
-            s[a] = usable[a] ? k : 0.0f;
-        }
-        scale = _mm_load_ps(s);
-    }
-    bool anyUsable() const { return usable[0] || usable[1] || usable[2]; }
-    // Keeps only the usable axis of largest centroid extent (see kWidestAxisOnly).
-    void keepWidestAxis(const Box4& centroids) {
-        int w = -1;
-        for (int a = 0; a < 3; ++a)
-            if (usable[a] && (w < 0 || lane(centroids.hi, a) - lane(centroids.lo, a) >
-                                           lane(centroids.hi, w) - lane(centroids.lo, w)))
-                w = a;
-        for (int a = 0; a < 3; ++a) usable[a] = a == w;
-    }
-    // Bin index per axis; unusable axes map everything to bin 0.
-    __m128i binOf(__m128 centroid2) const {
-        __m128 f = _mm_mul_ps(_mm_sub_ps(centroid2, origin), scale);
-        f = _mm_min_ps(_mm_max_ps(f, _mm_setzero_ps()), _mm_set1_ps(static_cast<float>(bins - 1)));
-        return _mm_cvttps_epi32(f);
-    }
-    struct Axis {
-        float origin, scale, last;
-        int axis;
-        int operator()(const PrimRef& r) const {
-            const float* lo = reinterpret_cast<const float*>(&r.lo);
-            const float* hi = reinterpret_cast<const float*>(&r.hi);
-            const float f = ((lo[axis] + hi[axis]) - origin) * scale;
-            return static_cast<int>(std::min(std::max(f, 0.0f), last));
-        }
-    };
-    Axis axis(int a) const { return {lane(origin, a), lane(scale, a), static_cast<float>(bins - 1), a}; }
-};
-
-// Per-axis bins; only the first `bins` entries of each axis are reset and read.
-struct Bins {
-    __m128 lo[3][kMaxBins], hi[3][kMaxBins];
-    std::uint32_t count[3][kMaxBins];
-
-    void reset(int bins, int onlyAxis = -1) {
-        const __m128 big = _mm_set1_ps(FLT_MAX), small = _mm_set1_ps(-FLT_MAX);
-        for (int a = 0; a < 3; ++a) {
-            if (onlyAxis >= 0 && a != onlyAxis) continue;
-            for (int i = 0; i < bins; ++i) {
-                lo[a][i] = big;
-                hi[a][i] = small;
-                count[a][i] = 0;
-            }
-        }
-    }
-    void addAxis(const PrimRef& r, int b, int a) {
-        lo[a][b] = _mm_min_ps(lo[a][b], r.lo);
-        hi[a][b] = _mm_max_ps(hi[a][b], r.hi);
-        ++count[a][b];
-    }
-    void add(const PrimRef& r, const BinMapper& mapper) {
-        // Lanes are extracted in registers: storing the vector and reloading single lanes would
-        // defeat store-to-load forwarding and stall every reference.
-        const __m128i bin = mapper.binOf(r.centroid2());
-        const int b[3] = {_mm_cvtsi128_si32(bin), _mm_extract_epi32(bin, 1), _mm_extract_epi32(bin, 2)};
-        for (int a = 0; a < 3; ++a) {
-            lo[a][b[a]] = _mm_min_ps(lo[a][b[a]], r.lo);
-            hi[a][b[a]] = _mm_max_ps(hi[a][b[a]], r.hi);
-            ++count[a][b[a]];
-        }
-    }
-    // The same update as add(), the bin indices computed beforehand (lanes 0-2 of `bin`).
-    void addAt(const PrimRef& r, const std::int32_t* bin) {
-        for (int a = 0; a < 3; ++a) {
-            lo[a][bin[a]] = _mm_min_ps(lo[a][bin[a]], r.lo);
-            hi[a][bin[a]] = _mm_max_ps(hi[a][bin[a]], r.hi);
-            ++count[a][bin[a]];
-        }
-    }
-    void merge(const Bins& o, int bins) {
-        for (int a = 0; a < 3; ++a)
-            for (int i = 0; i < bins; ++i) {
-                lo[a][i] = _mm_min_ps(lo[a][i], o.lo[a][i]);
-                hi[a][i] = _mm_max_ps(hi[a][i], o.hi[a][i]);
-                count[a][i] += o.count[a][i];
-            }
-    }
-};
-
-// Bins a run of references. Neighbouring references of a mesh usually fall in the same bin, and
-// updating one bin twice in a row waits for the previous update; spreading consecutive references
-// over four sets of bins (two for short runs, where resetting and merging would dominate) breaks
-// that dependency chain. min/max merging is exact, so the result is the same.
-void binRefs(const PrimRef* refs, std::uint32_t n, const BinMapper& mapper, Bins& out) {
-    const int single = mapper.usable[0] + mapper.usable[1] + mapper.usable[2] == 1
-                           ? (mapper.usable[0] ? 0 : mapper.usable[1] ? 1 : 2) : -1;
-    if (single >= 0) {
-        // One axis (kWidestAxisOnly): the scalar mapping the partition uses, one bin update.
-        const BinMapper::Axis map = mapper.axis(single);
-        Bins odd;
-        out.reset(mapper.bins, single);
-        odd.reset(mapper.bins, single);
-        std::uint32_t i = 0;
-        for (; i + 1 < n; i += 2) {
-            out.addAxis(refs[i], map(refs[i]), single);
-            odd.addAxis(refs[i + 1], map(refs[i + 1]), single);
-        }
-        if (i < n) out.addAxis(refs[i], map(refs[i]), single);
-        for (int k = 0; k < mapper.bins; ++k) {
-            out.lo[single][k] = _mm_min_ps(out.lo[single][k], odd.lo[single][k]);
-            out.hi[single][k] = _mm_max_ps(out.hi[single][k], odd.hi[single][k]);
-            out.count[single][k] += odd.count[single][k];
-        }
-        return;
-    }
-    out.reset(mapper.bins);
-    std::uint32_t i = 0;
-    if (n >= 256) {
-        Bins b1, b2, b3;
-        b1.reset(mapper.bins);
-        b2.reset(mapper.bins);
-        b3.reset(mapper.bins);
-        // Two passes per block of 256: the bin indices of the whole block first (4 lanes per
-        // reference, a small array in L1), then the bin updates, whose addresses then come from
-        // plain loads instead of each reference's convert-and-extract chain, so the updates'
-        // loads and stores can issue early. Single-thread builds: sphere:512 0.41-0.44 s ->
-        // 0.31-0.33 s, dragon 38-46 ms -> 32-38 ms (docs/BVH.md §4, 2026-12-01 19:55).
-        constexpr std::uint32_t kBlock = 256;
-        alignas(16) std::int32_t idx[kBlock][4];
-        for (; i + 3 < n;) {
-            const std::uint32_t m = std::min(kBlock, (n - i) & ~3u);
-            for (std::uint32_t k = 0; k < m; ++k)
-                _mm_store_si128(reinterpret_cast<__m128i*>(idx[k]), mapper.binOf(refs[i + k].centroid2()));
-            for (std::uint32_t k = 0; k < m; k += 4) {
-                out.addAt(refs[i + k], idx[k]);
-                b1.addAt(refs[i + k + 1], idx[k + 1]);
-                b2.addAt(refs[i + k + 2], idx[k + 2]);
-                b3.addAt(refs[i + k + 3], idx[k + 3]);
-            }
-            i += m;
-        }
-        for (; i < n; ++i) out.add(refs[i], mapper);
-        b1.merge(b3, mapper.bins);
-        out.merge(b2, mapper.bins);
-        out.merge(b1, mapper.bins);
-        return;
-    }
-    Bins odd;
-    odd.reset(mapper.bins);
-    for (; i + 1 < n; i += 2) {
-        out.add(refs[i], mapper);
-        odd.add(refs[i + 1], mapper);
-    }
-    if (i < n) out.add(refs[i], mapper);
-    out.merge(odd, mapper.bins);
-}
-
-struct Split {
-    int axis = -1;  // -1: no split found
-    int plane = 0;  // bins: references with bin index < plane go left; sweep: the first `plane` in order
-    float cost = 0.0f;
-};
-
-// Sweeps the planes between non-empty bins only, so a node's cost after binning is
-// O(min(n, bins)). Ties keep the lowest axis, then the lowest plane.
-Split bestBinnedSplit(const Bins& bins, const BinMapper& mapper, float nodeArea, const SahParams& p) {
-    Split best;
-    std::array<int, kMaxBins> used{};
-    std::array<float, kMaxBins> rightArea{};
-    std::array<std::uint32_t, kMaxBins> rightCount{};
-    const float areaScale = p.intersectionCost / nodeArea;
-    for (int a = 0; a < 3; ++a) {
-        if (!mapper.usable[a]) continue;
-        int m = 0;
-        for (int i = 0; i < mapper.bins; ++i)
-            if (bins.count[a][i] > 0) used[m++] = i;
-        if (m < 2) continue;
-        __m128 lo = _mm_set1_ps(FLT_MAX), hi = _mm_set1_ps(-FLT_MAX);
-        std::uint32_t n = 0;
-        for (int j = m - 1; j > 0; --j) {  // suffix of used bins [j, m)
-            lo = _mm_min_ps(lo, bins.lo[a][used[j]]);
-            hi = _mm_max_ps(hi, bins.hi[a][used[j]]);
-            n += bins.count[a][used[j]];
-            rightArea[j] = halfArea(lo, hi);
-            rightCount[j] = n;
-        }
-        lo = _mm_set1_ps(FLT_MAX);
-        hi = _mm_set1_ps(-FLT_MAX);
-        n = 0;
-        for (int j = 1; j < m; ++j) {  // plane before used bin j
-            lo = _mm_min_ps(lo, bins.lo[a][used[j - 1]]);
-            hi = _mm_max_ps(hi, bins.hi[a][used[j - 1]]);
-            n += bins.count[a][used[j - 1]];
-            const float cost = p.traversalCost +
-                areaScale * (halfArea(lo, hi) * static_cast<float>(n) + rightArea[j] * static_cast<float>(rightCount[j]));
-            if (best.axis < 0 || cost < best.cost) best = {a, used[j], cost};
-        }
-    }
-    return best;
-}
-
 struct Decision {
     enum Kind { Leaf, Median, Binned } kind = Leaf;
     int axis = 0, plane = 0;
@@ -290,9 +57,8 @@ int levelsNeeded(std::uint32_t n, std::uint32_t maxLeaf) {
 // nodes for m references) but typically half used; with a fixed slice per job every 2 MiB page
 // of the array was touched (zeroed by the kernel when fresh) and half of it never used. A job never
 // takes more than its worst case, so the array's size is unchanged; which slots a job gets depends
-// on timing, but nothing downstream depends on build-node indices, only on the tree. sphere:256,
-// 2 threads: page zeroing under the subtree jobs 4.4% -> 2.9% of a profile's samples; builds
-// x0.991 / x0.978 single-thread (8 alternating pairs each: within this machine's noise).
+// on timing, but nothing downstream depends on build-node indices, only on the tree. It takes
+// page zeroing out of the subtree jobs' profile (docs/lab/2026-12-02-bvh-build.md).
 class NodeAllocator {
 public:
     NodeAllocator(std::atomic<std::uint32_t>& cursor, std::uint32_t worstCase) : cursor_(cursor), budget_(worstCase) {}
@@ -358,8 +124,8 @@ void Builder::childRanges(const Range& r, std::uint32_t mid, Range& left, Range&
 // The same children as childRanges after a binned partition, their boxes taken from the bins: the
 // bins of the split axis below the plane hold exactly the left child's references (binning and
 // partitioning map a reference to the same bin), and min/max are exact, so the boxes are
-// identical. Only the centroid bounds need a pass over the references. Dragon builds, alternating
-// pairs: x0.985 with 2 threads, x0.984 single-thread CPU time (10 pairs each, 6 faster).
+// identical. Only the centroid bounds need a pass over the references (commit f79e8ba,
+// docs/lab/2026-12-02-bvh-build.md).
 void Builder::childRangesFromBins(const Range& r, std::uint32_t mid, const Bins& bins, int axis, int plane,
                                   int binCount, Range& left, Range& right) {
     Box4 lb, rb, lc, rc;
@@ -385,8 +151,8 @@ void Builder::partitionByBin(const Range& r, const BinMapper::Axis& map, int pla
             // Whole 32-byte moves (memcpy), the side read from the array: with x as a value the
             // compiler spilled it to the stack to read its axis lane, and stored it into base[l]
             // as two 16-byte halves that the next iteration's 32-byte load of base[l] (the same
-            // slot when x went right) could not be forwarded from: a stall per reference.
-            // Dragon, 2 threads, 25 builds per run, 4 alternating pairs: median build 4-5% faster.
+            // slot when x went right) could not be forwarded from: a stall per reference
+            // (commit 098522a, docs/lab/2026-12-02-bvh-build.md).
             const auto goesLeft = static_cast<std::uint32_t>(map(base[i]) < plane);
             alignas(32) unsigned char x[sizeof(PrimRef)], front[sizeof(PrimRef)];
             std::memcpy(x, base + i, sizeof x);
@@ -440,64 +206,14 @@ bool Builder::keepsDepthBound(const Range& r, std::uint32_t leftSize) const {
     return fits || levelsNeeded(r.size(), maxLeaf) > room + 1;  // if even median splits cannot fit, keep the SAH
 }
 
-// Exact SAH for a small node: on each axis, references sorted by centroid (ties by position, so
-// the order is deterministic), every split between neighbours evaluated.
+// A node of at most kSweepSize references: the swept split, its references put in centroid order
+// when it is taken.
 bool Builder::splitSmall(const Range& r, Range& left, Range& right) {
     const std::uint32_t n = r.size();
     PrimRef* base = refs_.data() + r.begin;
-    const float nodeArea = r.bounds.halfArea();
-    const float areaScale = nodeArea > 0.0f ? p_.intersectionCost / nodeArea : 0.0f;
-    // Sort keys: the centroid's bits mapped to an order-preserving signed integer whose low 4 bits
-    // are replaced by the position (centroids closer than 2^-19 relative sort by position), so
-    // the keys are distinct and the order is deterministic.
-    alignas(16) std::int32_t keys[kSweepSize];
-    std::array<std::uint8_t, kSweepSize> order;
-    std::array<float, kSweepSize> rightArea;
-    Split best;
-    // Only the widest centroid axis: measured on dragon, evaluating all three cost 15% more
-    // build instructions for a 0.8% lower SAH cost.
-    int a = 0;
-    for (int k = 1; k < 3; ++k)
-        if (lane(r.centroids.hi, k) - lane(r.centroids.lo, k) > lane(r.centroids.hi, a) - lane(r.centroids.lo, a)) a = k;
-    if (nodeArea > 0.0f && lane(r.centroids.hi, a) > lane(r.centroids.lo, a)) {
-        for (std::uint32_t i = 0; i < kSweepSize; ++i) {
-            if (i >= n) {
-                keys[i] = INT32_MAX;  // padding: never below a real key
-                continue;
-            }
-            const auto bits = std::bit_cast<std::uint32_t>(lane(base[i].centroid2(), a));
-            const std::uint32_t ordered = (bits & 0x80000000u) ? ~bits : (bits | 0x80000000u);
-            keys[i] = static_cast<std::int32_t>(((ordered ^ 0x80000000u) & ~0xFu) | i);
-        }
-        // Sorted by rank, 4 keys per SSE comparison: branch-free, where an insertion sort's
-        // branches are coin flips.
-        const __m128i k0 = _mm_load_si128(reinterpret_cast<const __m128i*>(keys));
-        const __m128i k1 = _mm_load_si128(reinterpret_cast<const __m128i*>(keys + 4));
-        const __m128i k2 = _mm_load_si128(reinterpret_cast<const __m128i*>(keys + 8));
-        const __m128i k3 = _mm_load_si128(reinterpret_cast<const __m128i*>(keys + 12));
-        for (std::uint32_t i = 0; i < n; ++i) {
-            const __m128i ki = _mm_set1_epi32(keys[i]);
-            const int below = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmplt_epi32(k0, ki))) |
-                              (_mm_movemask_ps(_mm_castsi128_ps(_mm_cmplt_epi32(k1, ki))) << 4) |
-                              (_mm_movemask_ps(_mm_castsi128_ps(_mm_cmplt_epi32(k2, ki))) << 8) |
-                              (_mm_movemask_ps(_mm_castsi128_ps(_mm_cmplt_epi32(k3, ki))) << 12);
-            order[std::popcount(static_cast<unsigned>(below))] = static_cast<std::uint8_t>(i);
-        }
-        Box4 acc;
-        for (std::uint32_t j = n - 1; j > 0; --j) {
-            acc.grow(base[order[j]].lo, base[order[j]].hi);
-            rightArea[j] = halfArea(acc.lo, acc.hi);
-        }
-        acc = Box4{};
-        for (std::uint32_t j = 1; j < n; ++j) {
-            acc.grow(base[order[j - 1]].lo, base[order[j - 1]].hi);
-            const float cost = p_.traversalCost + areaScale * (halfArea(acc.lo, acc.hi) * static_cast<float>(j) +
-                                                               rightArea[j] * static_cast<float>(n - j));
-            if (best.axis < 0 || cost < best.cost) best = {a, static_cast<int>(j), cost};
-        }
-    }
-    const float leafCost = p_.intersectionCost * static_cast<float>(n);
-    if (n <= static_cast<std::uint32_t>(p_.maxLeafSize) && (best.axis < 0 || leafCost <= best.cost)) return false;
+    SweepOrder order;
+    const Split best = bestSweptSplit(base, n, r.bounds, r.centroids, p_, order);
+    if (staysLeaf(n, best, p_)) return false;
     if (best.axis < 0 || !keepsDepthBound(r, static_cast<std::uint32_t>(best.plane))) {
         splitMedian(r, left, right);
         return true;
@@ -513,8 +229,7 @@ Decision Builder::decideLarge(const Range& r, const Bins& bins, const BinMapper&
     const std::uint32_t n = r.size();
     const float area = r.bounds.halfArea();
     const Split s = area > 0.0f && mapper.anyUsable() ? bestBinnedSplit(bins, mapper, area, p_) : Split{};
-    const float leafCost = p_.intersectionCost * static_cast<float>(n);
-    if (n <= static_cast<std::uint32_t>(p_.maxLeafSize) && (s.axis < 0 || leafCost <= s.cost)) return {Decision::Leaf};
+    if (staysLeaf(n, s, p_)) return {Decision::Leaf};
     if (s.axis < 0) return {Decision::Median};
     return {Decision::Binned, s.axis, s.plane};
 }
@@ -547,8 +262,8 @@ bool Builder::split(const Range& r, bool branchFree, Range& left, Range& right) 
 
 // The same bytes as BuildNode{box.lo, box.hi, a, b}, assembled in two SSE registers: built as a
 // value, the node went through the stack as 4- and 8-byte stores read back by one 32-byte load,
-// which cannot be store-forwarded (a stall twice per node). buildSubtree 7.4% -> 1.7% of a dragon
-// build's samples; builds 4.5% faster (median of 10 alternating pairs, 9 of 10 faster).
+// which cannot be store-forwarded (a stall twice per node; commit 93ae134,
+// docs/lab/2026-12-02-bvh-build.md).
 static_assert(offsetof(BuildNode, lo) == 0 && offsetof(BuildNode, hi) == 12 && offsetof(BuildNode, a) == 24 &&
               offsetof(BuildNode, b) == 28);
 inline void storeNode(BuildNode* dst, const Box4& box, std::uint32_t a, std::uint32_t b) {

@@ -1,15 +1,5 @@
-// Binned SAH builder (Wald 2007, "On fast Construction of SAH-based Bounding Volume Hierarchies"):
-// a binary tree over primitive references, before any GPU layout is chosen (flatten.h does that).
-//
-// Rules, each in one sentence:
-//  - Split candidates: `bins` equal-width bins over the centroid bounds on each of the 3 axes;
-//    the cheapest plane of all axes wins (ties: lowest axis, then lowest plane).
-//  - Cost of a split: C_trav + C_isect * (A_left * N_left + A_right * N_right) / A_node;
-//    cost of a leaf: C_isect * N.
-//  - A node becomes a leaf when it holds <= maxLeafSize primitives and no split is cheaper;
-//    above maxLeafSize it is always split.
-//  - Nodes of at most 16 references evaluate every split between consecutive centroids along the
-//    widest centroid axis instead (on that axis a superset of the planes 16 bins could offer).
+// Binned SAH builder: a binary tree over primitive references, before any GPU layout is chosen
+// (flatten.h does that). Where a node is split, and when it stays a leaf: sah_split.h. Here:
 //  - When the centroids cannot be binned (all identical), or the SAH split would let the tree grow
 //    deeper than maxDepth, the node is split at the median along its widest centroid axis (by count
 //    when every centroid is identical), so the build always terminates and the depth stays bounded.
@@ -26,17 +16,10 @@
 
 #include "aabb.h"
 #include "huge_pages.h"
+#include "sah_split.h"
 #include "thread_pool.h"
 
 namespace vkrt::bvh {
-
-struct SahParams {
-    int bins = 16;
-    int maxLeafSize = 8;
-    float traversalCost = 1.0f;
-    float intersectionCost = 1.0f;
-    int maxDepth = 64;  // inner-node levels, root = 1
-};
 
 // A leaf over refs[first, first + count), or an inner node with two children. 32 bytes, and no
 // member initialisers: the node array is allocated uninitialised (only used slots are written).
@@ -47,9 +30,6 @@ struct BuildNode {
     std::uint32_t a;  // inner: left child; leaf: first reference
     std::uint32_t b;  // inner: right child; leaf: kLeafBit | count
 
-    static BuildNode leafNode(const Aabb& box, std::uint32_t first, std::uint32_t count) {
-        return {box.lo, box.hi, first, kLeafBit | count};
-    }
     static BuildNode innerNode(const Aabb& box, std::uint32_t left, std::uint32_t right) {
         return {box.lo, box.hi, left, right};
     }

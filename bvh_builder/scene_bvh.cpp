@@ -28,7 +28,7 @@ constexpr std::size_t kLargeGroup = 32 * 1024;
 // References are made in chunks of this many primitives (bounds + validation in parallel).
 constexpr std::size_t kRefChunk = 4 * 1024;
 // References ahead whose input primitive is prefetched while the records are written in leaf
-// order (16 measured best of 0/8/16: subtree jobs 15 -> 13 ms on dragon, 2 threads).
+// order (16 measured best of 0, 8, 16 and 48: commit 3637d13, docs/lab/2026-12-02-bvh-build.md).
 constexpr std::uint32_t kEncodePrefetch = 16;
 // No tree can be deeper than the CPU traversal's stack (traverse.cpp).
 constexpr int kMaxTreeDepth = 64;
@@ -66,8 +66,8 @@ void buildGroup(const std::vector<PrimitiveInput>& prims, std::size_t groupIndex
         const std::size_t c = item - first;
         const std::size_t end = std::min(prims.size(), (c + 1) * kRefChunk);
         // A local box: partial[c] in memory was reloaded on every primitive right after its stores
-        // (the compiler cannot tell it from out.refs), a store-forwarding chain. Reference pass
-        // 4.2% -> 1.5% of a dragon build's samples; builds x0.971 (10 alternating pairs, 9 faster).
+        // (the compiler cannot tell it from out.refs), a store-forwarding chain (commit 64cef83,
+        // docs/lab/2026-12-02-bvh-build.md).
         // Grown as Aabb::grow does (new operand first), so the group's bounds keep their bits.
         Box4 box;
         for (std::size_t i = c * kRefChunk; i < end; ++i) {
@@ -95,8 +95,8 @@ void buildGroup(const std::vector<PrimitiveInput>& prims, std::size_t groupIndex
                                 // Constructed in place (guaranteed elision), so encode writes the
                                 // record itself: `records[i] = encode(...)` went through a stack
                                 // temporary written in pieces and read back 32 bytes at a time,
-                                // which cannot be store-forwarded. Samples of the record writing
-                                // 5.2% -> 4.1% of a dragon build (what is left: reading the input).
+                                // which cannot be store-forwarded (commit 64cef83); what is left
+                                // of the record writing's time is reading the input.
                                 ::new (static_cast<void*>(records + i)) gpu::Primitive(encode(prims[source]));
                                 sources[i] = source;
                             }
@@ -139,7 +139,7 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
                                         std::to_string(groups.size()) + " groups");
     std::size_t totalPrims = 0;
     for (const auto& g : groups) totalPrims += g.size();
-    if (totalPrims >= gpu::NODE_NONE)
+    if (totalPrims >= NODE_NONE)
         throw std::invalid_argument("bvh: " + std::to_string(totalPrims) + " primitives exceed the 32-bit index range");
 
     const SahParams params{options.bins, options.maxLeafSize, options.traversalCost, options.intersectionCost,
@@ -153,8 +153,7 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
     prefaultCapacity(bvh.primSource, totalPrims, pool);
     // The resizes value-initialise (a memset on one thread while the others waited). They run
     // alongside the first pool-wide group's reference pass instead, on whichever thread claims
-    // them first. Builds, 2 threads, alternating pairs: dragon x0.974 (10 pairs, 6 faster),
-    // sphere:256 x0.967 (8 pairs, 6 faster).
+    // them first (commit b88cf53, docs/lab/2026-12-02-bvh-build.md).
     bool resized = false;
     auto resize = [&] {
         bvh.prims.resize(totalPrims);
@@ -223,13 +222,14 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
         worldBoxes[i] = worldBounds(Aabb{g.lo, g.hi}, instances[i].objectToWorld);
     }
     // The top level may use what the bottom levels leave of the kernels' stack: a kernel needs
-    // topDepth + 1 + bottomDepth entries (host/vulkan/traversal_stack.cpp), at most
-    // TRAVERSAL_STACK_SIZE; but never less than a balanced tree over the instances needs.
+    // topDepth + bottomDepth entries (one per inner node on the path in each level; nothing is
+    // pushed to leave an instance: host/gpu/traversal_stack.h), at most TRAVERSAL_STACK_SIZE;
+    // but never less than a balanced tree over the instances needs.
     int balancedDepth = 1;
     while ((std::size_t{1} << balancedDepth) < instances.size()) ++balancedDepth;
     SahParams topParams = params;
     topParams.maxDepth = std::min(kMaxTreeDepth, std::max(balancedDepth,
-        static_cast<int>(gpu::TRAVERSAL_STACK_SIZE) - 1 - bvh.stats.bottomDepth));
+        static_cast<int>(gpu::TRAVERSAL_STACK_SIZE) - bvh.stats.bottomDepth));
     const FlattenResult top = buildTopLevel(worldBoxes, topParams, pool, bvh.nodes);
     bvh.topRoot = top.root;
     bvh.stats.topDepth = top.depth;
@@ -241,7 +241,7 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
         bvh.stats.cpuCopySeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - copyStart).count();
     }
     bvh.stats.nodeCount = bvh.nodes.size();
-    bvh.stats.bytes = bvh.nodes.size() * sizeof(gpu::BvhNode) + bvh.prims.size() * sizeof(gpu::Primitive) +
+    bvh.stats.bytes = bvh.nodes.size() * sizeof(BinaryNode) + bvh.prims.size() * sizeof(gpu::Primitive) +
                       bvh.instances.size() * sizeof(gpu::Instance);
     bvh.stats.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return bvh;

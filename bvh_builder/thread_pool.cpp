@@ -10,11 +10,10 @@ namespace vkrt::bvh {
 
 namespace {
 
-// How long an idle thread spins before it blocks. Measured on this VM: a parallelFor of two 200 us
-// items took 247 us with sleeping workers (the worker started ~50 us late, every call), 204 us with
-// spinning ones; a build's gaps between parallelFors are mostly microseconds, the longest (one
-// thread partitioning the root range at 100K references) ~0.5 ms. Dragon builds, 2 threads:
-// x0.972, 10 of 10 alternating pairs faster.
+// How long an idle thread spins before it blocks: on this VM a sleeping worker started ~50 us late
+// on every parallelFor, and a build's gaps between parallelFors are mostly microseconds, the
+// longest (one thread partitioning the root range at 100K references) ~0.5 ms (commit 590e360,
+// docs/lab/2026-12-02-bvh-build.md).
 constexpr std::chrono::microseconds kSpin{1000};
 
 }  // namespace

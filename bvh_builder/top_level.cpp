@@ -81,7 +81,7 @@ Aabb worldBounds(const Aabb& objectBox, const glm::mat4& objectToWorld) {
 }
 
 FlattenResult buildTopLevel(const std::vector<Aabb>& worldBoxes, const SahParams& params, ThreadPool& pool,
-                            std::vector<gpu::BvhNode>& nodes) {
+                            std::vector<BinaryNode>& nodes) {
     std::vector<PrimRef> refs;
     refs.reserve(worldBoxes.size());
     for (std::size_t i = 0; i < worldBoxes.size(); ++i)

@@ -26,6 +26,6 @@ Aabb worldBounds(const Aabb& objectBox, const glm::mat4& objectToWorld);
 // Appends the top-level tree over worldBoxes (instances with an empty box are left out: nothing
 // can hit them) to nodes.
 FlattenResult buildTopLevel(const std::vector<Aabb>& worldBoxes, const SahParams& params, ThreadPool& pool,
-                            std::vector<gpu::BvhNode>& nodes);
+                            std::vector<BinaryNode>& nodes);
 
 }  // namespace vkrt::bvh

@@ -88,7 +88,7 @@ void walk(const std::vector<WideNode>& nodes, std::uint32_t root, const NodeRay&
             mask &= mask - 1;
             if (node.count[k] > 0) {
                 if (leaf(node.link[k], node.count[k])) return;
-            } else if (node.link[k] != gpu::NODE_NONE) {
+            } else if (node.link[k] != NODE_NONE) {
                 inner[innerCount++] = {node.link[k], t[k]};
             }
         }
@@ -121,7 +121,7 @@ inline bool intersectPrim(const gpu::Primitive& p, const WatertightRay& wr, cons
                           float tmax, PrimHit& hit) {
     const glm::vec3 a{bitsFloat(p.a.x), bitsFloat(p.a.y), bitsFloat(p.a.z)};
     const glm::vec3 b{bitsFloat(p.b.x), bitsFloat(p.b.y), bitsFloat(p.b.z)};
-    switch (p.a.w & gpu::PRIM_KIND_MASK) {
+    switch (gpu::primitiveKind(p.a)) {
     case gpu::PRIM_KIND_TRIANGLE: {
         const glm::vec3 c{bitsFloat(p.c.x), bitsFloat(p.c.y), bitsFloat(p.c.z)};
         return intersectTriangleInline(wr, a, b, c, tmax, hit);
@@ -175,7 +175,7 @@ bool trace(const SceneBvh& bvh, const Ray& ray, Hit* out) {
             const NodeRay objectRay = identity ? worldRay : NodeRay(o, d);
             const WatertightRay wr(o, d);
             bool stop = false;
-            walk(bvh.cpu.nodes, bvh.cpu.groupRoots[inst.info.z], objectRay, tmax, [&](std::uint32_t first, std::uint32_t n) {
+            walk(bvh.cpu.nodes, bvh.cpu.groupRoots[gpu::instanceGroup(inst.info)], objectRay, tmax, [&](std::uint32_t first, std::uint32_t n) {
                 for (std::uint32_t p = first; p < first + n; ++p) {
                     PrimHit h;
                     if (!intersectPrim(bvh.prims[p], wr, o, d, tmax, h)) continue;

@@ -1,7 +1,8 @@
 // The CPU traversal's own layout: the same trees as SceneBvh::nodes, collapsed to 4 children per
 // node (each node absorbs the largest inner children of its two-child node until it has 4), with
 // the 4 boxes stored as rows of 4 floats so one SSE instruction per plane tests all children.
-// The GPU layout stays the documented two-child gpu::BvhNode; this one never leaves the CPU.
+// The GPU's nodes are made from the two-child BinaryNode instead (node_layout.h,
+// host/gpu/node_packing); this layout never leaves the CPU.
 // Measured on this machine: see docs/BVH.md (CPU traversal, BVH2 vs. 4-wide).
 #pragma once
 
@@ -15,7 +16,7 @@ struct alignas(64) WideNode {
     // lo = +FLT_MAX, hi = -FLT_MAX, link = NODE_NONE, count = 0.
     float bounds[6][4];
     std::uint32_t link[4];   // count == 0: index of an inner WideNode; count > 0: first primitive
-    std::uint32_t count[4];  // (bottom level) or instance (top level), as in gpu::BvhNode
+    std::uint32_t count[4];  // (bottom level) or instance (top level), as in BinaryNode
 };
 static_assert(sizeof(WideNode) == 128);
 

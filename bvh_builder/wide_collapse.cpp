@@ -15,7 +15,7 @@ struct Slot {
     int k;               // which of its two children
     float area;  // half surface area, computed once
     std::uint32_t link, count;
-    bool inner() const { return count == 0 && link != gpu::NODE_NONE; }
+    bool inner() const { return count == 0 && link != NODE_NONE; }
 };
 
 // Links in the part above the blocks that point at a block's root, patched once blocks are placed.
@@ -29,7 +29,7 @@ class Collapser {
 public:
     // blockRoots: sorted two-child nodes rooting separately collapsed blocks (never opened here;
     // their slot's link becomes kBlockLink | block index), or null.
-    Collapser(const std::vector<gpu::BvhNode>& nodes, const std::vector<std::uint32_t>* blockRoots)
+    Collapser(const std::vector<BinaryNode>& nodes, const std::vector<std::uint32_t>* blockRoots)
         : nodes_(nodes), blockRoots_(blockRoots) {}
 
     // Records the subtree at `node` depth-first into out (a node's index is its position there,
@@ -42,7 +42,7 @@ public:
         PlannedNode p{};
         for (int k = 0; k < 4; ++k) {
             if (k >= n) {
-                p.source[k] = gpu::NODE_NONE;
+                p.source[k] = NODE_NONE;
                 continue;
             }
             p.source[k] = slots[k].node;
@@ -74,11 +74,11 @@ private:
     int gather(std::uint32_t node, std::array<Slot, 4>& slots) const {
         int n = 0;
         auto addChildren = [&](std::uint32_t index, int at) {
-            const gpu::BvhNode& src = nodes_[index];
+            const BinaryNode& src = nodes_[index];
             const auto* f = reinterpret_cast<const float*>(&src);
             for (int k = 0; k < 2; ++k) {
                 const std::uint32_t link = childLink(src, k), count = childCount(src, k);
-                if (count == 0 && link == gpu::NODE_NONE) continue;
+                if (count == 0 && link == NODE_NONE) continue;
                 const float* xy = f + 4 * k;
                 const float* z = f + 8 + 2 * k;
                 const float ex = xy[1] - xy[0], ey = xy[3] - xy[2], ez = z[1] - z[0];
@@ -102,20 +102,20 @@ private:
         return n;
     }
 
-    const std::vector<gpu::BvhNode>& nodes_;
+    const std::vector<BinaryNode>& nodes_;
     const std::vector<std::uint32_t>* blockRoots_;
 };
 
 // Writes a planned 4-wide node; base: the output index of its part's first node.
-void writeNode(const std::vector<gpu::BvhNode>& nodes, const PlannedNode& p, std::uint32_t base, WideNode& w) {
+void writeNode(const std::vector<BinaryNode>& nodes, const PlannedNode& p, std::uint32_t base, WideNode& w) {
     for (int k = 0; k < 4; ++k) {
-        if (p.source[k] == gpu::NODE_NONE) {  // empty slot: the empty box (see wide_bvh.h)
+        if (p.source[k] == NODE_NONE) {  // empty slot: the empty box (see wide_bvh.h)
             for (int row = 0; row < 6; ++row) w.bounds[row][k] = (row % 2) ? -FLT_MAX : FLT_MAX;
-            w.link[k] = gpu::NODE_NONE;
+            w.link[k] = NODE_NONE;
             w.count[k] = 0;
             continue;
         }
-        const gpu::BvhNode& src = nodes[p.source[k]];
+        const BinaryNode& src = nodes[p.source[k]];
         const auto* f = reinterpret_cast<const float*>(&src);
         const float* xy = f + 4 * p.side[k];
         const float* z = f + 8 + 2 * p.side[k];
@@ -132,7 +132,7 @@ void writeNode(const std::vector<gpu::BvhNode>& nodes, const PlannedNode& p, std
 
 }  // namespace
 
-CollapsePlan planCollapse(const std::vector<gpu::BvhNode>& nodes, std::uint32_t root,
+CollapsePlan planCollapse(const std::vector<BinaryNode>& nodes, std::uint32_t root,
                           const std::vector<std::uint32_t>& blockRoots, ThreadPool& pool) {
     CollapsePlan plan;
     plan.root = root;
@@ -155,7 +155,7 @@ CollapsePlan planCollapse(const std::vector<gpu::BvhNode>& nodes, std::uint32_t 
     return plan;
 }
 
-std::uint32_t writeCollapse(const std::vector<gpu::BvhNode>& nodes, const CollapsePlan& plan, ThreadPool& pool,
+std::uint32_t writeCollapse(const std::vector<BinaryNode>& nodes, const CollapsePlan& plan, ThreadPool& pool,
                             WideNode* out, std::uint32_t first) {
     std::vector<std::uint32_t> offsets(plan.blocks.size());
     std::uint32_t total = first + plan.topCount;
@@ -168,7 +168,7 @@ std::uint32_t writeCollapse(const std::vector<gpu::BvhNode>& nodes, const Collap
         WideNode& w = out[first + i];
         writeNode(nodes, plan.top[i], first, w);
         for (int k = 0; k < 4; ++k)
-            if (w.count[k] == 0 && w.link[k] != gpu::NODE_NONE && (w.link[k] & kBlockLink))
+            if (w.count[k] == 0 && w.link[k] != NODE_NONE && (w.link[k] & kBlockLink))
                 w.link[k] = offsets[w.link[k] & ~kBlockLink];
     }
     pool.parallelFor(plan.blocks.size(), [&](std::size_t i) {

@@ -34,12 +34,12 @@ struct CollapsePlan {
     std::vector<PlannedNode> top;           // the part above the blocks, in output order
     std::vector<std::vector<PlannedNode>> blockNodes;  // each block's, in output order
 };
-CollapsePlan planCollapse(const std::vector<gpu::BvhNode>& nodes, std::uint32_t root,
+CollapsePlan planCollapse(const std::vector<BinaryNode>& nodes, std::uint32_t root,
                           const std::vector<std::uint32_t>& blockRoots, ThreadPool& pool);
 
 // Writes the planned tree into out[first, first + plan.total) (links are indices into the whole
 // array out belongs to); returns the wide root's index.
-std::uint32_t writeCollapse(const std::vector<gpu::BvhNode>& nodes, const CollapsePlan& plan, ThreadPool& pool,
+std::uint32_t writeCollapse(const std::vector<BinaryNode>& nodes, const CollapsePlan& plan, ThreadPool& pool,
                             WideNode* out, std::uint32_t first);
 
 }  // namespace vkrt::bvh

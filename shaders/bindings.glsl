@@ -40,25 +40,43 @@ layout(set = 0, binding = BINDING_TEXELS, r32ui) uniform readonly uimageBuffer t
 // but not a compile-time constant. lavapipe (Mesa 22.3, update_inline_shader_state) inlines
 // uniforms that feed branches or loop bounds into a copy of the kernel and recompiles it whenever
 // push constants or uniform bindings change: here, at every submission. With Mesa's shader disk
-// cache those recompiles were cache hits (22-27 copies of the kernel in memory during one render);
-// without it each was a full LLVM compile (a 64x64, 4 rpp render took 63 s; now 64x64 at 16 rpp
-// renders in 0.04 s), and a cold cache added ~0.5 s to the first render of each scene. The inliner
-// only follows loads at constant offsets; an index it cannot fold leaves one compile per pipeline.
-// Every dispatch is (n, 1, 1) workgroups (host/vulkan), so gl_NumWorkGroups.z - 1 is 0.
+// cache those recompiles were cache hits (yet a copy of the kernel each, in memory); without it
+// each was a full LLVM compile (host/gpu/README.md, fact 7). The inliner only follows loads at
+// constant offsets; an index it cannot fold leaves one compile per pipeline.
+// Every dispatch is (n, 1, 1) workgroups (host/gpu/submission_recorder), so gl_NumWorkGroups.z - 1 is 0.
 #define VKRT_UNIFORM_INDEX (gl_NumWorkGroups.z - 1u)
 layout(std140, set = 0, binding = BINDING_FRAME) uniform FrameBuffer { FrameParams frames[1]; };
 #define frame frames[VKRT_UNIFORM_INDEX]
+// FrameParams' lanes by name (device_host.h), each read straight from the block: a function taking
+// `frame` would load whole vec4s and keep them live across the kernel's loops.
+float framePlaneWidth() { return frame.cameraU.w; }
+float framePlaneHeight() { return frame.cameraV.w; }
+float frameFocalLength() { return frame.cameraW.w; }
+uint frameWidth() { return frame.image.x; }
+uint frameHeight() { return frame.image.y; }
+uint frameCameraType() { return frame.image.z; }
+uint frameSampler() { return frame.sampling.x; }
+uint frameLightSamples() { return frame.sampling.z; }
+uint frameGlossSamples() { return frame.sampling.w; }
+uint frameSeed() { return frame.scene.x; }
+uint frameMaxDepth() { return frame.scene.y; }
+uint frameLightCount() { return frame.scene.z; }
+uint frameTopLevelRoot() { return frame.scene.w; }
 
 // The render's sampler (SAMPLER_*): the specialization constant, or for the general kernel the
 // frame's value. Every sample2D call takes it from here.
-uint samplerKind() { return SAMPLER_KIND == SAMPLER_FROM_FRAME ? frame.sampling.x : SAMPLER_KIND; }
+uint samplerKind() { return SAMPLER_KIND == SAMPLER_FROM_FRAME ? frameSampler() : SAMPLER_KIND; }
 // The per-pixel sums, a texel buffer rather than an SSBO: on lavapipe an SSBO load at per-lane
 // addresses is a loop over the lanes, one scalar load (and cache miss) at a time, while imageLoad
-// is a gather (host/vulkan/README.md).
+// is a gather (host/gpu/README.md, fact 3).
 layout(set = 0, binding = BINDING_ACCUM, rgba32ui) uniform uimageBuffer accumTexels;
 layout(std430, set = 0, binding = BINDING_STATUS) coherent buffer StatusBuffer { RenderStatus status; };
 
-uvec4 loadPrimInfo(uint i) { return imageLoad(primInfoTexels, int(i)); }
+PrimInfo loadPrimInfo(uint i) {
+    PrimInfo p;
+    p.data = imageLoad(primInfoTexels, int(i));
+    return p;
+}
 
 // A pixel's running sum (rgb; w unused), read and written by the one invocation that computes the
 // pixel's samples of a pass: no race.
@@ -99,6 +117,10 @@ Light loadLight(uint i) {
     return l;
 }
 
-uvec4 loadTextureInfo(uint i) { return imageLoad(textureInfoTexels, int(i)); }
+TextureInfo loadTextureInfo(uint i) {
+    TextureInfo t;
+    t.info = imageLoad(textureInfoTexels, int(i));
+    return t;
+}
 
 #endif

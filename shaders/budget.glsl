@@ -1,6 +1,6 @@
 // Loop accounting. Mesa before 25 silently ends every loop after 65,535 passes per invocation
 // (one counter per group of 8 lanes, shared by every loop of the inlined kernel and charged for
-// the slowest lane, so a lane's own count cannot predict it: host/vulkan/README.md). Two guards:
+// the slowest lane, so a lane's own count cannot predict it: host/gpu/README.md). Two guards:
 //  - every loop checks on exit that it finished its work (its own condition ended it, or a
 //    deliberate break) and otherwise sets g_loopCutOff: this catches the limiter whatever the
 //    divergence, because once it fires every loop still running ends early;

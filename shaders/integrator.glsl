@@ -75,14 +75,14 @@ vec3 glossyDirection(vec3 r, float roughness, vec2 u) {
 
 // Reflection rays of a reflective material (mirror direction, or glossy samples of it).
 void emitReflection(inout PathQueue q, PathRay ray, Surface s, vec3 N, float roughness, vec3 weight, SampleKey key) {
-    if (ray.depth >= MAX_DEPTH || ray.depth >= frame.scene.y) return;
+    if (ray.depth >= MAX_DEPTH || ray.depth >= frameMaxDepth()) return;
     vec3 r = reflect(ray.dir, N);
     if (!HAS_GLOSS || roughness <= 0.0) {
         if (dot(r, s.geomNormal) > 0.0) emitRay(q, offsetTowards(s, r), r, weight, ray.depth + 1u);
         return;
     }
     bool fanOut = ray.depth == 0u;  // gloss samples apply at primary hits only (RENDERING.md §5)
-    uint g = fanOut ? frame.sampling.w : 1u;
+    uint g = fanOut ? frameGlossSamples() : 1u;
     vec3 w = weight / float(g);
     uint j = 0u;
     for (; j < g; ++j) {
@@ -102,8 +102,8 @@ void emitDielectric(inout PathQueue q, PathRay ray, Surface s, Material m, float
     vec3 weight = ray.weight;
     // Leaving the medium: Beer-Lambert over the distance travelled inside (per-unit transmittance).
     if (!entering) weight *= pow(max(m.attenuation.rgb, vec3(0.0)), vec3(hitDistance));
-    if (ray.depth >= MAX_DEPTH || ray.depth >= frame.scene.y) return;
-    float eta = m.attenuation.w;
+    if (ray.depth >= MAX_DEPTH || ray.depth >= frameMaxDepth()) return;
+    float eta = materialRefractiveIndex(m);
     vec3 n = entering ? s.shadeNormal : -s.shadeNormal;  // faces the incoming ray
     float n1 = entering ? 1.0 : eta;
     float n2 = entering ? eta : 1.0;
@@ -149,7 +149,7 @@ vec3 cameraSampleRadiance(vec3 origin, vec3 dir, SampleKey key) {
         } else {
             Surface s = surfaceAt(ray.origin, ray.dir, hit);
             Material m = loadMaterial(s.material);
-            uint type = m.ids.x;
+            uint type = materialType(m);
             if (HAS_DIELECTRIC && type == SHADER_DIELECTRIC) {
                 emitDielectric(q, ray, s, m, hit.t);
             } else {
@@ -163,23 +163,25 @@ vec3 cameraSampleRadiance(vec3 origin, vec3 dir, SampleKey key) {
                 vec3 kd = m.diffuse.rgb;
                 vec3 ks = m.specular.rgb;
                 if (HAS_TEXTURES) {
-                    if (m.ids.y != TEXTURE_NONE) kd *= sampleTexture(m.ids.y, s.uv);
-                    if (m.ids.z != TEXTURE_NONE) ks *= sampleTexture(m.ids.z, s.uv);
+                    uint diffuseTexture = materialDiffuseTexture(m);
+                    uint specularTexture = materialSpecularTexture(m);
+                    if (diffuseTexture != TEXTURE_NONE) kd *= sampleTexture(diffuseTexture, s.uv);
+                    if (specularTexture != TEXTURE_NONE) ks *= sampleTexture(specularTexture, s.uv);
                 }
                 vec3 local = vec3(0.0);
                 if (type != SHADER_MIRROR)
-                    local = directLighting(s, N, V, type, kd, ks, m.specular.w, ray.depth, key);
+                    local = directLighting(s, N, V, type, kd, ks, materialPhongExponent(m), ray.depth, key);
                 // The shares of local shading and of reflection: mirror 0 and 1, glaze 1 and m,
                 // mirrored Blinn-Phong 1 - m and m, the others 1 and none (RENDERING.md §5). One
                 // emitReflection call for the three reflecting shaders, not one each: lavapipe runs
                 // every inlined copy of its gloss loop on every path step, whatever the shader.
-                float mirror = m.params.x;
+                float mirror = materialMirrorCoef(m);
                 bool reflects = HAS_REFLECTION && (type == SHADER_MIRROR || type == SHADER_GLAZE ||
                                                    type == SHADER_BLINN_PHONG_MIRRORED);
                 float localShare = !reflects || type == SHADER_GLAZE ? 1.0 : (type == SHADER_MIRROR ? 0.0 : 1.0 - mirror);
                 radiance += ray.weight * localShare * local;
                 if (reflects)
-                    emitReflection(q, ray, s, N, m.params.y, ray.weight * (type == SHADER_MIRROR ? 1.0 : mirror), key);
+                    emitReflection(q, ray, s, N, materialRoughness(m), ray.weight * (type == SHADER_MIRROR ? 1.0 : mirror), key);
             }
         }
         flushQueue(q);

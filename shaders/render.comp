@@ -2,7 +2,7 @@
 // The render kernel: one invocation computes pass.w consecutive samples of one pixel and adds
 // them to the pixel's running sum. One dispatch = one pass of samples over one tile; the host
 // sizes the pass so that an invocation stays far below lavapipe's loop limit and each submission
-// short (host/vulkan: sample_batching.h, tile_planner.h).
+// short (host/gpu: sample_batching.h, tile_planner.h).
 #extension GL_GOOGLE_include_directive : require
 
 #include "device_host.h"
@@ -43,26 +43,27 @@ void addSample(uint x, uint y, uint index, inout SampleKey key, inout vec4 sum, 
 
 void main() {
     PassParams pass = passes[VKRT_UNIFORM_INDEX];
-    uvec4 tile = pass.tile;
+    uvec2 tileOrigin = passTileOrigin(pass);
+    uvec2 tileSize = passTileSize(pass);
     // Workgroups are handed to lavapipe's threads in contiguous chunks; visiting blocks in a
     // strided order spreads expensive regions of the image over all threads.
     // The host keeps groups <= 65536 and stride < groups, so the product fits in 32 bits.
-    uint groups = pass.pass.z;
-    uint block = (gl_WorkGroupID.x * pass.pass.y) % groups;
-    uint blocksX = (tile.z + 7u) / 8u;
+    uint groups = passWorkgroups(pass);
+    uint block = (gl_WorkGroupID.x * passStride(pass)) % groups;
+    uint blocksX = (tileSize.x + 7u) / 8u;
     uint lane = gl_LocalInvocationIndex;
     uint laneGroup = lane >> 3u;
     uint px = (laneGroup & 1u) * 4u + (lane & 3u);
     uint py = (laneGroup >> 1u) * 2u + ((lane >> 2u) & 1u);
     uint localX = (block % blocksX) * 8u + px;
     uint localY = (block / blocksX) * 8u + py;
-    if (localX >= tile.z || localY >= tile.w) return;
-    uint x = tile.x + localX;
-    uint y = tile.y + localY;
+    if (localX >= tileSize.x || localY >= tileSize.y) return;
+    uint x = tileOrigin.x + localX;
+    uint y = tileOrigin.y + localY;
 
     SampleKey key;
-    key.pixel = y * frame.image.x + x;
-    key.seed = frame.scene.x;
+    key.pixel = y * frameWidth() + x;
+    key.seed = frameSeed();
     // The pixel's sum is loaded once and stored once per pass (each stored word is a loop over
     // the lanes on lavapipe); the samples are added to it one by one in sample order, so the image
     // does not depend on the pass size (sample_batching.h).
@@ -70,15 +71,17 @@ void main() {
     uint nonFinite = 0u;
     uint failedSample = NO_SAMPLE;
     if (SAMPLES_PER_DISPATCH == 1u) {
-        // No loop: a loop around the path, even of one pass, made happyBuddha_100K 28% slower.
-        addSample(x, y, pass.pass.x, key, sum, nonFinite, failedSample);
+        // No loop: a loop around the path, even of one pass, made meshes slower
+        // (docs/lab/2026-12-02-lavapipe-kernel.md).
+        addSample(x, y, passFirstSample(pass), key, sum, nonFinite, failedSample);
     } else {
         uint j = 0u;
-        for (; j < pass.pass.w; ++j) {
+        uint samples = passSamples(pass);
+        for (; j < samples; ++j) {
             if (!chargeLoop()) break;
-            addSample(x, y, pass.pass.x + j, key, sum, nonFinite, failedSample);
+            addSample(x, y, passFirstSample(pass) + j, key, sum, nonFinite, failedSample);
         }
-        if (j < pass.pass.w) markLoopCutOff();
+        if (j < samples) markLoopCutOff();
     }
 
     // One atomic site for every failure (each inlined atomic is a per-lane loop that runs whether
@@ -87,7 +90,7 @@ void main() {
     if (failures != 0u) {
         atomicOr(status.flags.x, failures);
         if (atomicCompSwap(status.flags.y, 0u, key.pixel + 1u) == 0u)
-            status.flags.z = failedSample != NO_SAMPLE ? failedSample : pass.pass.x;
+            status.flags.z = failedSample != NO_SAMPLE ? failedSample : passFirstSample(pass);
     }
     if (nonFinite != 0u) atomicAdd(status.flags.w, nonFinite);
     storePixelSum(key.pixel, sum);

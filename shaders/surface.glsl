@@ -54,8 +54,8 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
 
     int base = int(hit.prim * PRIM_TEXELS);
     uvec4 a = imageLoad(primitives, base);
-    uint kind = a.w & PRIM_KIND_MASK;
-    uvec4 info = loadPrimInfo(hit.prim);
+    uint kind = primitiveKind(a);
+    PrimInfo info = loadPrimInfo(hit.prim);
     vec3 p;
     vec3 ng;
     vec3 ns;
@@ -71,15 +71,14 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
         ng = cross(v1 - v0, v2 - v0);
         ns = ng;
         s.uv = hit.bary;
-        if (info.y != ATTRIB_NONE) {
-            VertexAttrib a0 = loadVertexAttrib(info.y);
-            VertexAttrib a1 = loadVertexAttrib(info.z);
-            VertexAttrib a2 = loadVertexAttrib(info.w);
-            vec3 n = b0 * a0.normalU.xyz + hit.bary.x * a1.normalU.xyz + hit.bary.y * a2.normalU.xyz;
+        uvec3 corners = primitiveCornerAttribs(info);
+        if (corners.x != ATTRIB_NONE) {
+            VertexAttrib a0 = loadVertexAttrib(corners.x);
+            VertexAttrib a1 = loadVertexAttrib(corners.y);
+            VertexAttrib a2 = loadVertexAttrib(corners.z);
+            vec3 n = b0 * vertexNormal(a0) + hit.bary.x * vertexNormal(a1) + hit.bary.y * vertexNormal(a2);
             ns = dot(n, n) > 0.0 ? n : ng;
-            if (HAS_TEXTURES)
-                s.uv = b0 * vec2(a0.normalU.w, a0.vPad.x) + hit.bary.x * vec2(a1.normalU.w, a1.vPad.x) +
-                       hit.bary.y * vec2(a2.normalU.w, a2.vPad.x);
+            if (HAS_TEXTURES) s.uv = b0 * vertexUv(a0) + hit.bary.x * vertexUv(a1) + hit.bary.y * vertexUv(a2);
         }
     } else if (kind == PRIM_KIND_SPHERE) {
         vec3 center = texelFloats(a);
@@ -129,14 +128,14 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
     if (HAS_INSTANCES) {
         vec4 w0 = instanceRow(hit.instance, 3u), w1 = instanceRow(hit.instance, 4u), w2 = instanceRow(hit.instance, 5u);
         vec4 n0 = instanceRow(hit.instance, 6u), n1 = instanceRow(hit.instance, 7u), n2 = instanceRow(hit.instance, 8u);
-        uint override = instanceInfo(hit.instance).y;
+        uint override = instanceMaterialOverride(instanceInfo(hit.instance));
         p = rowTransformPoint(w0, w1, w2, p);
         objectMagnitude = transformedMagnitude(w0, w1, w2, objectMagnitude);
         ng = rowTransformVector(n0, n1, n2, ng);
         ns = rowTransformVector(n0, n1, n2, ns);
-        s.material = override != MATERIAL_NONE ? override : info.x;
+        s.material = override != MATERIAL_NONE ? override : primitiveMaterial(info);
     } else {
-        s.material = info.x;
+        s.material = primitiveMaterial(info);
     }
     s.position = p;
     s.errorMagnitude = max(objectMagnitude, maxAbs(p));

@@ -14,9 +14,10 @@ int wrapIndex(int i, int n) {
 }
 
 vec3 sampleTexture(uint texture, vec2 uv) {
-    uvec4 info = loadTextureInfo(texture);
-    int w = int(info.y);
-    int h = int(info.z);
+    TextureInfo info = loadTextureInfo(texture);
+    uint first = textureFirstTexel(info);
+    int w = int(textureWidth(info));
+    int h = int(textureHeight(info));
     // Keep the coordinates small before scaling so huge uv cannot overflow the int conversion.
     vec2 f = uv - floor(uv);
     float x = f.x * float(w) - 0.5;
@@ -29,8 +30,8 @@ vec3 sampleTexture(uint texture, vec2 uv) {
     int y0 = wrapIndex(int(fy0), h);
     int x1 = wrapIndex(x0 + 1, w);
     int y1 = wrapIndex(y0 + 1, h);
-    vec3 top = mix(texelColor(info.x, w, x0, y0), texelColor(info.x, w, x1, y0), tx);
-    vec3 bottom = mix(texelColor(info.x, w, x0, y1), texelColor(info.x, w, x1, y1), tx);
+    vec3 top = mix(texelColor(first, w, x0, y0), texelColor(first, w, x1, y0), tx);
+    vec3 bottom = mix(texelColor(first, w, x0, y1), texelColor(first, w, x1, y1), tx);
     return mix(top, bottom, ty);
 }
 

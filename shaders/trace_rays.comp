@@ -11,21 +11,26 @@
 #include "traverse.glsl"
 
 // Rays through a texel buffer, like the BVH (bindings.glsl): on lavapipe an SSBO load at a
-// per-lane address is a scalar loop over the lanes (host/vulkan/README.md).
+// per-lane address is a scalar loop over the lanes (host/gpu/README.md, fact 3).
 layout(set = 0, binding = BINDING_RAYS, rgba32ui) uniform readonly uimageBuffer rays;
 layout(set = 0, binding = BINDING_HITS, r32ui) uniform writeonly uimageBuffer hits;  // device_host.h: TRACE_HIT_WORDS
 layout(push_constant) uniform TracePush { TraceParams traces[1]; };
 #define trace traces[VKRT_UNIFORM_INDEX]  // bindings.glsl: why not a plain member
+// TraceParams' lanes by name (device_host.h), read straight from the push constants like
+// bindings.glsl's frame lanes: a function taking `trace` loads the whole uvec4 at the bounds check,
+// and the any-hit flag then stays live (and spilled) through the traversal.
+uint traceRayCount() { return trace.rays.x; }
+bool traceAnyHit() { return trace.rays.y != 0u; }
 
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 
 void main() {
     uint i = gl_GlobalInvocationID.x;
-    if (i >= trace.rays.x) return;
+    if (i >= traceRayCount()) return;
     vec4 origin = uintBitsToFloat(imageLoad(rays, int(2u * i)));  // TraceRayInput: origin + tMax, direction
     vec3 direction = uintBitsToFloat(imageLoad(rays, int(2u * i + 1u)).xyz);
     Hit hit;
-    bool found = traceScene(origin.xyz, direction, origin.w, trace.rays.y != 0u, hit);
+    bool found = traceScene(origin.xyz, direction, origin.w, traceAnyHit(), hit);
     // Failures travel in the hit's words (TRACE_FAILED and the STATUS_* bits), read by the host
     // with the hits: no atomics, which would be a per-lane loop for every ray on lavapipe. Each
     // word stored is such a loop too, so a BVH without a top level stores no instance.

@@ -8,23 +8,21 @@
 // the ray of its level, told by the node's index (the top level and the inlined world group: the
 // world ray). A far leaf is pushed like a node, as a packed entry (device_host.h, ENTRY_LEAF_BIT).
 // Why this shape: lavapipe (Mesa 22.3) runs every statement of a loop body for all 8 lanes, masked,
-// whatever the branch conditions, and a loop body runs at least once (host/vulkan/README.md). So
-// the walk, the loop that runs most, holds only what every pass needs:
+// whatever the branch conditions, and a loop body runs at least once (host/gpu/README.md, fact 2).
+// So the walk, the loop that runs most, holds only what every pass needs (each step below measured
+// faster in alternating runs: docs/lab/2026-12-02-gpu-rays-and-scenes.md):
 //  - the leaf's primitive tests are a loop of their own, run once per leaf round. Inside the walk's
-//    pass they cost one full primitive test per pass even when no lane had a leaf. Measured against
-//    that (alternating runs, GPU/CPU rays/s on sphere:64, dragon, sphere:512): primary 0.61-0.74 ->
-//    0.75-0.86, shadow 0.59-0.69 -> 0.74-1.00, diffuse 0.48-0.66 -> 0.68-0.85;
-//  - instance steps moved out too: 400x400x16 pt_objects 4.2 -> 3.3 s;
+//    pass they cost one full primitive test per pass even when no lane had a leaf;
+//  - instance steps moved out too;
 //  - the stack's top REG_STACK entries live in registers, shifted on push and pop. A private array
 //    indexed per lane is a scalar load or masked store per lane (with a branch per lane that
 //    mispredicts); the walk touched it twice per pass. Now only the main loop does: it stores the
 //    entry that a push with full registers shifted out, and refills when a pop finds them empty.
-//    Against the array in the walk: primary 0.62-0.76 -> 0.75-0.90, shadow 0.65-0.92 -> 0.92-1.22,
-//    diffuse 0.60-0.67 -> 0.79-0.94. A CPU simulation put the extra leaf rounds from spills and
-//    refills at +12% (primary) to +16% (dragon shadow) with 4 registers; 6 or 8 measured no better.
+//    A CPU simulation put the extra leaf rounds from spills and refills at 12-16% with 4
+//    registers; 6 or 8 measured no better.
 // Letting a lane that holds a leaf walk on while the others look for theirs (speculative,
 // subgroupAll to end the walk, or a lane stopping at its second leaf) was slower, and so was a
-// 4-wide node (host/vulkan/README.md, "Tried and not kept").
+// 4-wide node (docs/BENCHMARKS.md, "Tried and not kept").
 #ifndef VKRT_TRAVERSE_GLSL
 #define VKRT_TRAVERSE_GLSL
 
@@ -44,8 +42,8 @@ vec3 texelFloats(uvec4 t) { return uintBitsToFloat(t.xyz); }
 
 // min and max as selects: GLSL's min/max must return the other operand for a NaN, which lavapipe
 // spells as three instructions (min, unordered compare, blend); the slab distances are never NaN
-// (box bounds finite, invDir never 0: safeInverse), and a select of a compare is one vminps/vmaxps.
-// +6% rays/s on lavapipe (alternating runs).
+// (box bounds finite, invDir never 0: safeInverse), and a select of a compare is one vminps/vmaxps
+// (host/gpu/README.md, fact 5).
 float fmin(float a, float b) { return a < b ? a : b; }
 float fmax(float a, float b) { return a > b ? a : b; }
 vec3 vmin(vec3 a, vec3 b) { return vec3(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z)); }
@@ -69,7 +67,7 @@ bool intersectPrimitive(TraceRay ray, int base, float tBest, out float tHit, out
     tHit = 0.0;
     bary = vec2(0.0);
     uvec4 a = imageLoad(primitives, base);
-    uint kind = a.w & PRIM_KIND_MASK;
+    uint kind = primitiveKind(a);
     if (HAS_TRIANGLES && kind == PRIM_KIND_TRIANGLE) {
         vec3 v1 = texelFloats(imageLoad(primitives, base + 1));
         vec3 v2 = texelFloats(imageLoad(primitives, base + 2));
@@ -132,8 +130,8 @@ uint shiftOut(inout uint r0, inout uint r1, inout uint r2, uint r3) {
 
 // The next entry: the top register, else ENTRY_REFILL. The caller tells a refill (the next round
 // takes the array's top) from the end of the ray (the array is empty too) after the walk, so the
-// walk keeps neither the array's depth nor a finished flag live: a pass of 326 instructions
-// instead of 347, 38 of them on the stack frame instead of 47 (profile_jit.py, buddha).
+// walk keeps neither the array's depth nor a finished flag live: a shorter pass, with fewer
+// stack-frame accesses (profile_jit.py; docs/lab/2026-12-02-lavapipe-kernel.md).
 void popEntry(inout uint entry, inout uint held, inout uint r0, inout uint r1, inout uint r2, uint r3) {
     if (held > 0u) {
         entry = shiftOut(r0, r1, r2, r3);
@@ -172,7 +170,7 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
     bool spilling = false;
     uint spillEntry = ENTRY_NONE;
     uint instance = 0u;
-    uint entry = rootEntry(HAS_INSTANCES ? frame.scene.w : instanceInfo(0u).x);
+    uint entry = rootEntry(HAS_INSTANCES ? frameTopLevelRoot() : instanceRootNode(instanceInfo(0u)));
     // The top level's nodes come last in the node array, from its root on (bvh.h, SceneBvh::nodes;
     // the host checks it: node_packing.h), so an entry at or past the root's is a top-level node.
     // The world group's nodes (frame.world, node_packing.h InlinedWorld: the loose shapes of
@@ -188,9 +186,9 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
         // 0. The array's only load: a refill (the walk or the last pop found the registers empty)
         // takes its top as the entry; otherwise an empty register stack tops up from it, so the
         // walk's next pop does not end the walk for a refill round (each round pays a primitive-test
-        // pass). Top-up, GPU/CPU primary: buddha 0.65-0.67 -> 0.67-0.70, sphere:512 0.76 -> 0.84.
-        // One load site and one store site (step 3): each is a per-lane loop that every lane runs
-        // on every round (host/vulkan/README.md).
+        // pass; docs/lab/2026-12-02-gpu-rays-and-scenes.md). One load site and one store site
+        // (step 3): each is a per-lane loop that every lane runs on every round (host/gpu/README.md,
+        // fact 3).
         bool refill = entry == ENTRY_REFILL;
         if ((refill || held == 0u) && sp > 0u) {
             --sp;
@@ -210,7 +208,7 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             int base = int(entry);  // a node's entry is its first texel (node_packing.h)
             // A top-level node (or the inlined world group's) tests the world ray, a bottom-level
             // one the instance's (see the instance step below).
-            bool topLevelNode = HAS_INSTANCES && (entry >= topLevelStart || entry - world.x < world.y);
+            bool topLevelNode = HAS_INSTANCES && (entry >= topLevelStart || worldHoldsNodeEntry(world, entry));
             vec3 boxOrigin = topLevelNode ? worldRay.origin : ray.origin;
             vec3 boxInvDir = topLevelNode ? worldRay.invDir : ray.invDir;
             uvec4 xy0 = imageLoad(bvhNodes, base);
@@ -252,17 +250,17 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
         // the way back: the walk tests each node against the ray of its level (topLevelNode), and
         // every entry pushed inside an instance is popped before the top-level entries beneath
         // them, so the leaves it meets belong to the instance entered last. Against a marker
-        // pushed on entry and a round to leave (restoring the world ray), 400x400x16 renders:
-        // pt_objects 1.49 -> 1.21 s, dielectric_dragon 3.08 -> 2.59 s (host/vulkan/README.md).
+        // pushed on entry and a round to leave (restoring the world ray), renders with instances
+        // are faster (docs/lab/2026-12-02-lavapipe-kernel.md, "No marker for leaving an instance").
         bool consumed = false;  // `entry` is done with: take the next one
         if (HAS_INSTANCES && isInstanceEntry(entry)) {
             instance = entry & ~ENTRY_INSTANCE_BIT;
             ray = rayIntoInstance(origin, dir, instance);
-            entry = rootEntry(instanceInfo(instance).x);
+            entry = rootEntry(instanceRootNode(instanceInfo(instance)));
         } else if (isLeafEntry(entry)) {
             uint first = (entry & ~ENTRY_LEAF_BIT) >> 4u;
             uint count = entry & 15u;
-            if (HAS_INSTANCES && first - world.z < world.w) {
+            if (HAS_INSTANCES && worldHoldsPrimitive(world, first)) {
                 // A world leaf: no instance's entries are on the stack (they are all popped before
                 // the top-level entries beneath them, and world entries sit among those), so the
                 // instance ray can be overwritten; the next instance entered sets it again.
@@ -306,7 +304,7 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
         if (finished) break;
     }
     // Reported by the kernel's entry point, once per invocation: an atomic is a per-lane loop on
-    // lavapipe that runs wherever it is inlined, taken or not (host/vulkan/README.md).
+    // lavapipe that runs wherever it is inlined, taken or not (host/gpu/README.md, fact 3).
     if (overflow) g_rayStackOverflow = true;
     else if (!finished) markLoopCutOff();
     return found;

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Alternating A/B runs of two vkrt builds, or of one build with two kernel directories: the
-measurement behind every "before -> after" figure in host/vulkan/README.md.
+measurement behind the before -> after figures in docs/lab/ and the commit messages.
 
     # renders: the GPU render time vkrt prints, per scene
     tools/ab_compare.py renders --a /tmp/old/build/vkrt --b build/vkrt [--pairs 4] [--size 400] [--rpp 16] \\

@@ -27,12 +27,12 @@ struct SceneAccel {
 
     // The primitive a hit refers to.
     const PrimOrigin& origin(std::uint32_t instance, std::uint32_t flatPrim) const {
-        const std::uint32_t group = bvh.instances[instance].info.z;
+        const std::uint32_t group = gpu::instanceGroup(bvh.instances[instance].info);
         return groupPrims[group][bvh.primSource[flatPrim]];
     }
     // The shader index a hit shades with: the instance's override, else the shape's own.
     int shaderOf(std::uint32_t instance, std::uint32_t flatPrim) const {
-        const std::uint32_t override = bvh.instances[instance].info.y;
+        const std::uint32_t override = gpu::instanceMaterialOverride(bvh.instances[instance].info);
         return override != gpu::MATERIAL_NONE ? static_cast<int>(override) : origin(instance, flatPrim).shape->shader;
     }
 };

@@ -38,7 +38,7 @@ glm::vec3 renderPixel(const RenderContext& ctx, Integrator& integrator, int i, i
     glm::vec3 sum(0.0f);
     glm::dvec3 sumD(0.0), sumSqD(0.0);
     for (std::uint32_t s = 0; s < ctx.samplesPerPixel; ++s) {
-        const glm::vec2 offset = gpu::sample2D(ctx.sampler, ctx.pixelGrid, pixel, s, gpu::DIM_CAMERA, ctx.seed);
+        const glm::vec2 offset = sampling::sample2D(ctx.sampler, ctx.pixelGrid, pixel, s, sampling::DIM_CAMERA, ctx.seed);
         glm::vec3 c = integrator.cameraRadiance(cpu::cameraRay(ctx.camera, i, j, offset), {pixel, s});
         if (!isFinite(c)) {
             ++nonFinite;

@@ -114,9 +114,9 @@ glm::vec3 Integrator::directLight(const Shader& shader, const SurfacePoint& sp, 
             continue;
         }
         glm::vec3 lightSum(0.0f);
-        const std::uint32_t dim = gpu::dimLight(static_cast<std::uint32_t>(depth), light.areaOrdinal);
+        const std::uint32_t dim = sampling::dimLight(static_cast<std::uint32_t>(depth), light.areaOrdinal);
         for (std::uint32_t j = 0; j < ctx_.lightSamples; ++j) {
-            const glm::vec2 s = gpu::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel,
+            const glm::vec2 s = sampling::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel,
                                               key.sample * ctx_.lightSamples + j, dim, ctx_.seed);
             lightSum += contribution(lightPoint(light, s), light.intensity);
         }
@@ -148,10 +148,10 @@ glm::vec3 Integrator::reflection(const bvh::Ray& ray, const SurfacePoint& sp, co
     const std::uint32_t g = fanOut ? ctx_.glossSamples : 1u;
     const glm::uvec4& grid = fanOut ? ctx_.glossGrid : ctx_.pixelGrid;
     const float invG = 1.0f / static_cast<float>(g);
-    const std::uint32_t dim = gpu::dimGloss(static_cast<std::uint32_t>(depth));
+    const std::uint32_t dim = sampling::dimGloss(static_cast<std::uint32_t>(depth));
     glm::vec3 sum(0.0f);
     for (std::uint32_t j = 0; j < g; ++j) {
-        const glm::vec2 s = gpu::sample2D(ctx_.sampler, grid, key.pixel, key.sample * g + j, dim, ctx_.seed);
+        const glm::vec2 s = sampling::sample2D(ctx_.sampler, grid, key.pixel, key.sample * g + j, dim, ctx_.seed);
         sum += traceFrom(glossyDirection(r, roughness, s), weight * invG);
     }
     return sum / static_cast<float>(g);

@@ -47,9 +47,9 @@ RenderContext makeRenderContext(const Scene& scene, const SceneAccel& accel, con
     ctx.samplesPerPixel = static_cast<unsigned>(options.samplesPerPixel);
     ctx.lightSamples = static_cast<unsigned>(options.lightSamples);
     ctx.glossSamples = static_cast<unsigned>(options.glossSamples);
-    ctx.pixelGrid = gpu::makeSampleGrid(ctx.samplesPerPixel);
-    ctx.lightGrid = gpu::makeSampleGrid(static_cast<unsigned>(lightCount));
-    ctx.glossGrid = gpu::makeSampleGrid(static_cast<unsigned>(glossCount));
+    ctx.pixelGrid = sampling::makeSampleGrid(ctx.samplesPerPixel);
+    ctx.lightGrid = sampling::makeSampleGrid(static_cast<unsigned>(lightCount));
+    ctx.glossGrid = sampling::makeSampleGrid(static_cast<unsigned>(glossCount));
     return ctx;
 }
 

@@ -18,7 +18,7 @@ std::uint32_t pathStack(std::uint32_t maxDepth, const RenderOptions& options) {
 // A scene where no hit emits a second ray needs no path stack: 0 compiles its push and pop out of
 // the kernel. They are not free when unused: lavapipe runs every statement for all 8 lanes whatever
 // the branches decide, and a store to the per-lane indexed stack is a per-lane loop of masked
-// stores, at each push site (integrator.glsl, host/vulkan/README.md).
+// stores, at each push site (integrator.glsl, host/gpu/README.md).
 std::uint32_t scenePathStack(const FeatureSet& f, const RenderOptions& options) {
     const bool glossFanOut = f.reflection && f.gloss && options.glossSamples > 1;
     return (f.dielectric || glossFanOut) ? pathStack(f.maxDepth, options) : 0u;
@@ -39,7 +39,7 @@ FeatureSet geometryFeatures(const bvh::SceneBvh& bvh, bool packedNodes) {
     FeatureSet f;
     f.triangles = f.spheres = f.boxes = false;
     for (const gpu::Primitive& p : bvh.prims) {
-        const std::uint32_t kind = p.a.w & gpu::PRIM_KIND_MASK;
+        const std::uint32_t kind = gpu::primitiveKind(p.a);
         f.triangles |= kind == gpu::PRIM_KIND_TRIANGLE;
         f.spheres |= kind == gpu::PRIM_KIND_SPHERE;
         f.boxes |= kind == gpu::PRIM_KIND_BOX;

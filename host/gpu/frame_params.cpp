@@ -62,9 +62,9 @@ gpu::FrameParams makeFrameParams(const Scene& scene, const SceneAccel& accel, co
     f.sampling = glm::uvec4(static_cast<std::uint32_t>(options.sampler), rpp, lightSamples, glossSamples);
     f.scene = glm::uvec4(options.seed, static_cast<std::uint32_t>(options.maxDepth), static_cast<std::uint32_t>(scene.lights.size()),
                          accel.bvh.topRoot);
-    f.pixelGrid = gpu::makeSampleGrid(rpp);
-    f.lightGrid = gpu::makeSampleGrid(rpp * lightSamples);
-    f.glossGrid = gpu::makeSampleGrid(rpp * glossSamples);
+    f.pixelGrid = sampling::makeSampleGrid(rpp);
+    f.lightGrid = sampling::makeSampleGrid(rpp * lightSamples);
+    f.glossGrid = sampling::makeSampleGrid(rpp * glossSamples);
     return f;
 }
 

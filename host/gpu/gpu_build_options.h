@@ -4,11 +4,10 @@
 // The kernel walks a binary tree in 8-lane lockstep and tests a leaf's primitives in a loop of
 // its own (shaders/traverse.glsl), so a node visited costs the group a walk pass (~330
 // instructions) while a primitive costs a leaf pass that only the lanes in that leaf need.
-// Charging a node twice a primitive (C_trav = 2) gives fewer, larger leaves and a shallower tree:
-// `vkrt-bench gpu rays SOURCE --ctrav C`, 4 alternating runs of 5 rounds each, median GPU
-// Mrays/s at C_trav 1 -> 2: dragon shadow 4.30 -> 4.82, buddha shadow 6.18 -> 7.11, dragon primary
-// 19.4 -> 20.7, buddha primary 17.8 -> 17.6 (docs/BENCHMARKS.md). The CPU's 4-wide traversal
-// is slower on that tree (shadow -5% to -16%), so the CPU keeps C_trav = 1.
+// Charging a node twice a primitive (C_trav = 2) gives fewer, larger leaves and a shallower tree,
+// which traces shadow rays faster and the others no slower (docs/BVH.md §4, "SAH constants":
+// `vkrt-bench gpu rays SOURCE --ctrav C`). The CPU's 4-wide traversal is slower on that tree, so
+// the CPU keeps C_trav = 1.
 #pragma once
 
 #include "bvh.h"

@@ -99,7 +99,7 @@ Image GpuRenderer::render(const GpuSceneData& data, const RenderOptions& options
         progress.update(planner.fractionDone());
     }
     stats.renderSeconds = secondsSince(start);
-    stats.nonFiniteSamples = gpuScene.status().flags.w;
+    stats.nonFiniteSamples = gpu::statusNonFiniteSamples(gpuScene.status());
 
     start = Clock::now();
     std::vector<glm::vec4> sums(static_cast<std::size_t>(options.width) * options.height);

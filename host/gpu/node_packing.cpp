@@ -60,12 +60,12 @@ std::uint32_t nodeEntry(std::uint32_t index, std::uint32_t nodeTexels) {
 InlinedWorld inlinedWorld(const bvh::SceneBvh& bvh) {
     InlinedWorld world;
     if (bvh.instances.size() < 2 || !bvh::isIdentity(bvh.instances[0])) return world;
-    const std::uint32_t group = bvh.instances[0].info.z;
+    const std::uint32_t group = gpu::instanceGroup(bvh.instances[0].info);
     for (std::size_t i = 1; i < bvh.instances.size(); ++i)
-        if (bvh.instances[i].info.z == group) return world;
+        if (gpu::instanceGroup(bvh.instances[i].info) == group) return world;
     if (group >= bvh.groups.size() || bvh.groups[group].primCount == 0) return world;
     const std::uint32_t root = bvh.groups[group].rootNode;
-    if (root >= bvh.nodes.size() || root != bvh.instances[0].info.x) return world;
+    if (root >= bvh.nodes.size() || root != gpu::instanceRootNode(bvh.instances[0].info)) return world;
     // The group's nodes, from its root: the kernel tells them by one index range.
     std::uint32_t lo = root, hi = root, count = 0;
     std::vector<std::uint32_t> pending{root};
@@ -93,11 +93,11 @@ glm::uvec4 inlinedWorldParams(const InlinedWorld& world, std::uint32_t nodeTexel
     return {nodeEntry(world.firstNode, nodeTexels), world.nodeCount * nodeTexels, world.firstPrim, world.primCount};
 }
 
-std::uint32_t childStackEntry(const gpu::BvhNode& node, int k, bool topLevel, std::uint32_t nodeTexels, const InlinedWorld& world) {
+std::uint32_t childStackEntry(const bvh::BinaryNode& node, int k, bool topLevel, std::uint32_t nodeTexels, const InlinedWorld& world) {
     const std::uint32_t link = bvh::childLink(node, k);
     const std::uint32_t count = bvh::childCount(node, k);
     if (count == 0) {
-        if (link == gpu::NODE_NONE) return gpu::ENTRY_NONE;
+        if (link == bvh::NODE_NONE) return gpu::ENTRY_NONE;
         return nodeEntry(link, nodeTexels);
     }
     if (topLevel) {
@@ -143,7 +143,7 @@ std::vector<gpu::GpuBvhNode> packNodes(const bvh::SceneBvh& bvh, const InlinedWo
     constexpr unsigned xyBits = gpu::NODE_ENTRY_XY_BITS, zBits = gpu::NODE_ENTRY_Z_BITS;
     std::vector<gpu::GpuBvhNode> packed(bvh.nodes.size());
     for (std::size_t i = 0; i < bvh.nodes.size(); ++i) {
-        const gpu::BvhNode& node = bvh.nodes[i];
+        const bvh::BinaryNode& node = bvh.nodes[i];
         gpu::GpuBvhNode& out = packed[i];
         for (int k = 0; k < 2; ++k) {
             const std::uint32_t entry = childStackEntry(node, k, topLevel[i], gpu::GPU_NODE_TEXELS, world);
@@ -173,9 +173,9 @@ double treeAreaGrowth(const bvh::SceneBvh& bvh, const std::vector<gpu::GpuBvhNod
     while (!pending.empty()) {
         const std::uint32_t i = pending.back();
         pending.pop_back();
-        const gpu::BvhNode& node = bvh.nodes[i];
+        const bvh::BinaryNode& node = bvh.nodes[i];
         for (int k = 0; k < 2; ++k) {
-            if (bvh::childCount(node, k) == 0 && bvh::childLink(node, k) == gpu::NODE_NONE) continue;  // empty slot
+            if (bvh::childCount(node, k) == 0 && bvh::childLink(node, k) == bvh::NODE_NONE) continue;  // empty slot
             if (bvh::childIsInner(node, k)) pending.push_back(bvh::childLink(node, k));
             exactArea += bvh::childBox(node, k).halfArea();
             packedArea += packedChildBox(packed[i], k).halfArea();
@@ -212,7 +212,7 @@ GpuNodes gpuNodes(const bvh::SceneBvh& bvh) {
     }
     out.texels.reserve(bvh.nodes.size() * gpu::GPU_EXACT_NODE_TEXELS);
     for (std::size_t i = 0; i < bvh.nodes.size(); ++i) {
-        const gpu::BvhNode& n = bvh.nodes[i];
+        const bvh::BinaryNode& n = bvh.nodes[i];
         const bool topLevel = i >= bvh.topRoot;  // checkTopLevelLast above: no second walk of the top level
         const glm::uvec4 entries(childStackEntry(n, 0, topLevel, gpu::GPU_EXACT_NODE_TEXELS, world),
                                  childStackEntry(n, 1, topLevel, gpu::GPU_EXACT_NODE_TEXELS, world), 0u, 0u);

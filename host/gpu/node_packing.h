@@ -1,4 +1,4 @@
-// The builder's BVH nodes (gpu::BvhNode: exact boxes, explicit link and count) -> the 48-byte
+// The builder's BVH nodes (bvh::BinaryNode: exact boxes, explicit link and count) -> the 48-byte
 // nodes the kernels read (gpu::GpuBvhNode: each child's stack entry in the low bits of its box
 // floats, the boxes rounded outward to make room; shaders/shared/device_host.h).
 #pragma once
@@ -47,7 +47,7 @@ glm::uvec4 inlinedWorldParams(const InlinedWorld& world, std::uint32_t nodeTexel
 // child's entry is its node's first texel (link * nodeTexels, the layout's texels per node), so
 // the walk fetches without a multiply (traverse.glsl). The inlined world's instance (instance 0)
 // is the entry of the world group's root node.
-std::uint32_t childStackEntry(const gpu::BvhNode& node, int k, bool topLevel, std::uint32_t nodeTexels,
+std::uint32_t childStackEntry(const bvh::BinaryNode& node, int k, bool topLevel, std::uint32_t nodeTexels,
                               const InlinedWorld& world = {});
 
 // Every node of bvh.nodes, in the same order (indices stay valid). Leaf entries must fit

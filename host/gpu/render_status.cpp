@@ -8,13 +8,13 @@
 namespace vkrt {
 
 void throwIfKernelFailed(const gpu::RenderStatus& status, std::uint32_t imageWidth) {
-    const std::uint32_t flags = status.flags.x;
+    const std::uint32_t flags = gpu::statusFailures(status);
     if (flags == 0) return;
     std::string where = "(the kernel did not record the pixel)";
-    if (status.flags.y != 0 && imageWidth > 0) {
-        const std::uint32_t pixel = status.flags.y - 1;  // stored + 1 so that 0 means "none"
+    if (gpu::statusPixelPlusOne(status) != 0 && imageWidth > 0) {
+        const std::uint32_t pixel = gpu::statusPixelPlusOne(status) - 1;  // stored + 1 so that 0 means "none"
         where = "at pixel (" + std::to_string(pixel % imageWidth) + ", " + std::to_string(pixel / imageWidth) + "), sample " +
-                std::to_string(status.flags.z);
+                std::to_string(gpu::statusSample(status));
     }
     std::string message = "the GPU kernel could not compute the image correctly " + where + ":";
     if (flags & gpu::STATUS_LOOP_BUDGET_EXCEEDED)

@@ -33,7 +33,7 @@ std::uint64_t sampleLoopBound(const Scene& scene, const bvh::SceneBvh& bvh, cons
                               const RenderOptions& options) {
     // One traversal: the top level (one leaf per instance), then each instance's group whole.
     std::uint64_t traversal = treePasses(bvh.instances.size());
-    for (const gpu::Instance& instance : bvh.instances) traversal += treePasses(bvh.groups.at(instance.info.z).primCount);
+    for (const gpu::Instance& instance : bvh.instances) traversal += treePasses(bvh.groups.at(gpu::instanceGroup(instance.info)).primCount);
 
     // Shadow rays per hit: one per point light, lightSamples per area light.
     const auto lightSamples = static_cast<std::uint64_t>(std::max(options.lightSamples, 1));

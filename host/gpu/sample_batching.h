@@ -21,14 +21,12 @@
 
 namespace vkrt {
 
-// The largest k: 8 takes the per-dispatch work out of cheap scenes' time (400x400x32 renders,
-// samples per second against k = 1 with k = 4: oneTriangle x1.39, simpleSphereScene x1.31,
-// test_oneBox_00 x1.14), while a dispatch stays short enough for the planner's submissions.
+// The largest k: 8 takes the per-dispatch work out of cheap scenes' time, while a dispatch stays
+// short enough for the planner's submissions (docs/lab/2026-12-02-lavapipe-kernel.md).
 constexpr std::uint32_t kMaxSamplesPerDispatch = 8;
 
 // Below this k, one sample per dispatch: the loop around the path costs about what a few samples
-// save (400x400x16, k = 2 on threeEggs_SoftShadows 0.641 -> 0.657 s, k = 3 on glossinessTest
-// 0.601 -> 0.655 s; k = 4 on bneumann_00_2011 0.506 -> 0.423 s, k = 5 on mirrorTest 0.331 -> 0.258 s).
+// save (docs/BENCHMARKS.md, "Tried and not kept").
 constexpr std::uint32_t kMinSamplesPerDispatch = 4;
 
 // A group of 8 lanes may pass a loop more often than its busiest lane, but each of its passes is

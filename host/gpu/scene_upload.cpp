@@ -71,7 +71,7 @@ SceneUpload::SceneUpload(const Context& context, Transfers& transfers, const Ker
     const SceneTables& tables = data.tables;
     const bvh::SceneBvh& bvh = data.accel.bvh;
     const GpuNodes& nodes = data.nodes;
-    const std::uint64_t pixels = static_cast<std::uint64_t>(frame.image.x) * frame.image.y;
+    const std::uint64_t pixels = static_cast<std::uint64_t>(gpu::frameWidth(frame)) * gpu::frameHeight(frame);
     const std::vector<BufferPlan> plan = planSceneBuffers(tables, bvh, nodeBytes(nodes), pixels);
     checkSceneBuffers(context.limits(), plan);
 

@@ -11,8 +11,8 @@
 
 namespace vkrt {
 
-std::uint32_t innerDepth(const std::vector<gpu::BvhNode>& nodes, std::uint32_t root) {
-    if (root == gpu::NODE_NONE) return 0;
+std::uint32_t innerDepth(const std::vector<bvh::BinaryNode>& nodes, std::uint32_t root) {
+    if (root == bvh::NODE_NONE) return 0;
     // Iterative: a degenerate BVH can be thousands of levels deep.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pending{{root, 1}};
     std::uint32_t deepest = 0;
@@ -24,20 +24,18 @@ std::uint32_t innerDepth(const std::vector<gpu::BvhNode>& nodes, std::uint32_t r
                                    " nodes");
         if (depth > nodes.size()) throw std::logic_error("the BVH's node links form a cycle");
         deepest = std::max(deepest, depth);
-        const gpu::BvhNode& node = nodes[index];
+        const bvh::BinaryNode& node = nodes[index];
         for (int child = 0; child < 2; ++child) {
-            const std::uint32_t link = node.link[child];
-            const std::uint32_t count = node.link[2 + child];
-            if (count == 0 && link != gpu::NODE_NONE) pending.emplace_back(link, depth + 1);
+            if (bvh::childIsInner(node, child)) pending.emplace_back(bvh::childLink(node, child), depth + 1);
         }
     }
     return deepest;
 }
 
 std::uint32_t traversalStackNeed(const bvh::SceneBvh& bvh, bool instancing) {
-    if (!instancing) return bvh.instances.empty() ? 0 : innerDepth(bvh.nodes, bvh.instances[0].info.x);
+    if (!instancing) return bvh.instances.empty() ? 0 : innerDepth(bvh.nodes, gpu::instanceRootNode(bvh.instances[0].info));
     std::uint32_t deepestBottom = 0;
-    for (const gpu::Instance& instance : bvh.instances) deepestBottom = std::max(deepestBottom, innerDepth(bvh.nodes, instance.info.x));
+    for (const gpu::Instance& instance : bvh.instances) deepestBottom = std::max(deepestBottom, innerDepth(bvh.nodes, gpu::instanceRootNode(instance.info)));
     return innerDepth(bvh.nodes, bvh.topRoot) + deepestBottom;
 }
 
@@ -47,7 +45,7 @@ void checkLeafEntries(const bvh::SceneBvh& bvh) {
     const std::vector<bool> topLevel = topLevelNodes(bvh);
     for (std::uint32_t index = 0; index < bvh.nodes.size(); ++index) {
         if (topLevel[index]) continue;
-        const gpu::BvhNode& node = bvh.nodes[index];
+        const bvh::BinaryNode& node = bvh.nodes[index];
         for (int child = 0; child < 2; ++child) {
             const std::uint32_t link = bvh::childLink(node, child);
             const std::uint32_t count = bvh::childCount(node, child);

@@ -11,7 +11,7 @@
 namespace vkrt {
 
 // Inner nodes on the longest path from `root` to a leaf (a root whose children are leaves: 1).
-std::uint32_t innerDepth(const std::vector<gpu::BvhNode>& nodes, std::uint32_t root);
+std::uint32_t innerDepth(const std::vector<bvh::BinaryNode>& nodes, std::uint32_t root);
 
 // The most stack entries traverse.glsl can hold: one per inner node on the path (the far child)
 // in the top level, then one per inner node of the deepest bottom level. Without instancing only

@@ -1,4 +1,4 @@
-// <camera name=".." type="perspective|orthographic"> -> Camera (FORMAT.md §3.3).
+// <camera name=".." type="perspective|orthographic"> -> Camera (docs/XML_FORMAT.md §3.3).
 #pragma once
 
 #include <pugixml.hpp>

@@ -1,4 +1,4 @@
-// <light type="point|area"> -> Light (FORMAT.md §3.4).
+// <light type="point|area"> -> Light (docs/XML_FORMAT.md §3.4).
 #pragma once
 
 #include <optional>

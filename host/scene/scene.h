@@ -115,7 +115,7 @@ struct Instance {
     std::string name;
     int prototype = 0;                // index into Scene::prototypes
     int shaderOverride = -1;          // index into Scene::shaders, or -1: the prototype's shader
-    glm::mat4 objectToWorld{1.0f};    // M = T0 * T1 * ... * Tn-1 (FORMAT.md §3.9)
+    glm::mat4 objectToWorld{1.0f};    // M = T0 * T1 * ... * Tn-1 (docs/XML_FORMAT.md §3.9)
     SourceLocation where;
 };
 

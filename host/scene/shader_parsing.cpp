@@ -97,7 +97,7 @@ Shader parseShader(const ParseContext& context, pugi::xml_node node, const Textu
         if (pugi::xml_node e = parameter("emission")) shader.emission = parseVec3(context, e);
     }
 
-    rules::resolveLegacyShaderType(shader);  // FORMAT.md §6
+    rules::resolveLegacyShaderType(shader);  // docs/XML_FORMAT.md §6
     return shader;
 }
 

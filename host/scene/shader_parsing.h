@@ -1,4 +1,4 @@
-// <shader name=".." type=".."> definitions -> Shader (FORMAT.md §3.5, defaults of §7).
+// <shader name=".." type=".."> definitions -> Shader (docs/XML_FORMAT.md §3.5, defaults of §7).
 #pragma once
 
 #include <map>

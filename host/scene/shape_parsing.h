@@ -1,4 +1,4 @@
-// The geometry of <shape> and <instance> elements: sphere, box, triangle, mesh (FORMAT.md §3.6-3.8).
+// The geometry of <shape> and <instance> elements: sphere, box, triangle, mesh (docs/XML_FORMAT.md §3.6-3.8).
 #pragma once
 
 #include <pugixml.hpp>

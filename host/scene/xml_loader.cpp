@@ -27,7 +27,7 @@ bool isElement(pugi::xml_node node, std::string_view name) {
     return node.type() == pugi::node_element && name == node.name();
 }
 
-// Two passes over the document (FORMAT.md §7.2), so that child and element order never matter:
+// Two passes over the document (docs/XML_FORMAT.md §7.2), so that child and element order never matter:
 //   1. definitions by name: textures, shaders (top-level and inline in shapes), prototypes;
 //   2. everything placed in the scene: cameras, lights, shapes and instances, scene parameters.
 class SceneBuilder {
@@ -209,7 +209,7 @@ private:
     }
 
     // Background and environment map: <sceneParameters> children win over the root attributes
-    // (FORMAT.md §7.3). Environment maps are recorded (resolved against the scene file), not
+    // (docs/XML_FORMAT.md §7.3). Environment maps are recorded (resolved against the scene file), not
     // rendered; a warning says so (render_fallbacks.h).
     void readSceneParameters(pugi::xml_node root, pugi::xml_node parameters) {
         if (const pugi::xml_attribute bg = root.attribute("bgColor"))

@@ -1,4 +1,4 @@
-// Course XML scene file -> Scene (FORMAT.md). Accepts every variant the real files use; malformed
+// Course XML scene file -> Scene (docs/XML_FORMAT.md). Accepts every variant the real files use; malformed
 // input is a SceneError naming file:line, the element and the value; recoverable oddities are
 // warnings in Diagnostics (errors when strict). Callers use loadScene (scene_loader.h).
 #pragma once

@@ -67,11 +67,6 @@ public:
     void download(const Buffer& source, std::span<std::byte> out);
     void zero(const Buffer& buffer);
 
-    template <class T>
-    void uploadArray(const Buffer& destination, std::span<const T> items) {
-        upload(destination, std::as_bytes(items));
-    }
-
 private:
     const Context& context_;
     CommandRunner& runner_;

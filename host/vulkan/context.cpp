@@ -61,10 +61,9 @@ void Context::openDevice(vk::raii::PhysicalDevice physical, const DeviceInfo& in
     vk::DeviceQueueCreateInfo queueInfo({}, family, 1, &priority);
     device_ = vk::raii::Device(physical, vk::DeviceCreateInfo({}, queueInfo));  // unchanged if this throws
     queue_ = vk::raii::Queue(device_, family, 0);
-    physical_ = std::move(physical);
     info_ = info;
     queueFamily_ = family;
-    memory_ = physical_.getMemoryProperties();
+    memory_ = physical.getMemoryProperties();
 }
 
 Context::~Context() {

@@ -36,7 +36,6 @@ public:
     Context& operator=(const Context&) = delete;
 
     const vk::raii::Device& device() const { return device_; }
-    const vk::raii::PhysicalDevice& physicalDevice() const { return physical_; }
     const vk::raii::Queue& queue() const { return queue_; }
     std::uint32_t queueFamily() const { return queueFamily_; }
     const DeviceInfo& info() const { return info_; }
@@ -54,7 +53,6 @@ private:
 
     std::shared_ptr<ValidationLog> log_;  // declared first: outlives the messenger
     VulkanInstance instance_;
-    vk::raii::PhysicalDevice physical_ = nullptr;
     vk::raii::Device device_ = nullptr;
     vk::raii::Queue queue_ = nullptr;
     std::uint32_t queueFamily_ = 0;

@@ -3,11 +3,18 @@
 //  - SSBO structs follow std430: vec4/uvec4 members only, so C++ and GLSL agree without padding
 //    surprises; the static_asserts below pin every size.
 //  - BVH nodes and primitives are read through RGBA32UI read-only storage texel buffers
-//    (uimageBuffer, imageLoad): on Mesa 22.3 lavapipe texelFetch was x1.45 faster than SSBO loads
+//    (uimageBuffer, imageLoad): on Mesa 22.3 lavapipe texelFetch was faster than SSBO loads
 //    (../shared/LAVAPIPE.md), and imageLoad, which its JIT inlines where texelFetch is a call per
-//    fetch, a further ~10% (host/vulkan/README.md).
+//    fetch, faster again (host/gpu/README.md, facts 3 and 4).
 //    Integer texels are returned bit-exact, so float fields are stored as their bit patterns and
 //    decoded with uintBitsToFloat; no denormal or NaN canonicalisation can touch the integers.
+//  - A packed vec4/uvec4 slot (Instance::info, Material::ids, ...) is read through the free
+//    function named for its meaning, below its struct (GLSL has no methods; VKRT_FN makes them
+//    inline in C++). Each returns one lane of a value the caller holds, so it costs nothing once
+//    inlined. A function takes the whole struct, except where the kernel fetches one texel of a
+//    larger struct alone (Instance info, a Primitive's first texel): then it takes that texel.
+//    The uniform blocks (FrameParams, TraceParams) are the exception: the kernels name their lanes
+//    with functions that read the block itself (bindings.glsl, trace_rays.comp; see FrameParams).
 #ifndef VKRT_DEVICE_HOST_H
 #define VKRT_DEVICE_HOST_H
 
@@ -20,11 +27,15 @@ using uint = std::uint32_t;
 using vec2 = glm::vec2;
 using vec3 = glm::vec3;
 using vec4 = glm::vec4;
+using uvec2 = glm::uvec2;
+using uvec3 = glm::uvec3;
 using uvec4 = glm::uvec4;
 using ivec4 = glm::ivec4;
 #define VKRT_CONST static constexpr
+#define VKRT_FN inline
 #else
 #define VKRT_CONST const
+#define VKRT_FN
 #endif
 
 // ---------------------------------------------------------------------------------------------
@@ -47,38 +58,15 @@ VKRT_CONST uint BINDING_RAYS = 12;         // trace_rays.comp only: readonly uim
 VKRT_CONST uint BINDING_HITS = 13;         // trace_rays.comp only: writeonly uimageBuffer R32UI, TRACE_HIT_WORDS(_INSTANCED) per ray
 
 // ---------------------------------------------------------------------------------------------
-// BVH node as the builder writes it (SceneBvh::nodes; the CPU traversal's 4-wide copy is made from
-// it): 64 bytes, both children's boxes side by side (Aila & Laine 2009), so one contiguous fetch
-// per inner step decides both children. The kernels read it packed into 48 bytes (GpuBvhNode).
+// BVH node as the kernels read it: 48 bytes = 3 RGBA32UI texels, both children's boxes side by
+// side (Aila & Laine 2009), so one contiguous fetch per inner step decides both children. The host
+// makes one per node of the builder's tree (bvh::BinaryNode, bvh_builder/node_layout.h), in the
+// same order (host/gpu/node_packing.h).
 //   texel 0: child 0 box  lo.x hi.x lo.y hi.y   (float bits)
 //   texel 1: child 1 box  lo.x hi.x lo.y hi.y   (float bits)
 //   texel 2: lo0.z hi0.z lo1.z hi1.z            (float bits)
-//   texel 3: link0 link1 count0 count1
-// countK == 0: linkK is the index of an inner node (NODE_NONE: empty child, box is empty).
-// countK  > 0: child K is a leaf holding primitives [linkK, linkK + countK) of the global primitive
-//              array (bottom level) or instances [linkK, linkK + countK) (top level).
-// An empty child (countK == 0, linkK == NODE_NONE) stores lo = +FLT_MAX, hi = -FLT_MAX; a
-// min/max slab test would treat that inverted box as everything, so traversals skip an empty
-// child by its link, never by its box.
-VKRT_CONST uint NODE_NONE = 0xffffffffu;
-// traverse.glsl keeps a bottom-level leaf on its stack as one 32-bit entry: ENTRY_LEAF_BIT, the
-// first primitive in bits 4..29 and the count in bits 0..3 (an inner node's entry is its first
-// texel, below 2^30). The host refuses a BVH with a leaf that does not fit (host/vulkan/traversal_stack.h);
-// the builder's leaves hold at most 8 primitives and a 128 MiB buffer at most 2.8M primitives.
-VKRT_CONST uint ENTRY_LEAF_BIT = 0x40000000u;
-VKRT_CONST uint LEAF_ENTRY_MAX_COUNT = 15u;
-VKRT_CONST uint LEAF_ENTRY_MAX_FIRST = 0x3ffffffu;
-struct BvhNode {
-    uvec4 xy0;
-    uvec4 xy1;
-    uvec4 z01;
-    uvec4 link;
-};
-
-// The node as the kernels read it: the builder's BvhNode above in 48 bytes = 3 RGBA32UI texels
-// (host/vulkan/node_packing.h packs it at upload). Texels 0-2 as in BvhNode, but each child's
-// link and count travel as its ready stack entry (traverse.glsl: an inner node's first texel,
-// index * GPU_NODE_TEXELS, so the walk's fetch waits on no multiply;
+// Each child's link and count travel as its ready stack entry (traverse.glsl: an inner node's first
+// texel, index * GPU_NODE_TEXELS, so the walk's fetch waits on no multiply;
 // ENTRY_LEAF_BIT | first << 4 | count for a bottom-level leaf, ENTRY_INSTANCE_BIT | instance for a
 // top-level leaf, ENTRY_NONE for an empty child) in the low bits of the child's own box floats:
 // NODE_ENTRY_XY_BITS bits in each of lo.x hi.x lo.y hi.y (entry bits 0-23), NODE_ENTRY_Z_BITS in
@@ -93,12 +81,21 @@ struct BvhNode {
 // packs only when that costs little (node_packing.h: the child boxes' total surface area grows by
 // at most 1%) and otherwise uploads GpuExactBvhNode: the builder's boxes unchanged, with the two
 // ready entries in a fourth texel (x, y; z and w zero). SPEC_PACKED_NODES tells the kernel which.
+// An empty child's box is inverted (lo = +FLT_MAX, hi = -FLT_MAX), which the kernel's min/max slab
+// test accepts as everything: the walk skips an empty child by its entry, never by its box.
 VKRT_CONST uint GPU_NODE_TEXELS = 3;
 VKRT_CONST uint GPU_EXACT_NODE_TEXELS = 4;
 VKRT_CONST uint NODE_ENTRY_XY_BITS = 6u;
 VKRT_CONST uint NODE_ENTRY_Z_BITS = 4u;
 VKRT_CONST uint ENTRY_INSTANCE_BIT = 0x80000000u;
 VKRT_CONST uint ENTRY_NONE = 0xfffffffeu;
+// traverse.glsl keeps a bottom-level leaf on its stack as one 32-bit entry: ENTRY_LEAF_BIT, the
+// first primitive in bits 4..29 and the count in bits 0..3 (an inner node's entry is its first
+// texel, below 2^30). The host refuses a BVH with a leaf that does not fit (host/gpu/traversal_stack.h);
+// the builder's leaves hold at most 8 primitives and a 128 MiB buffer at most 2.8M primitives.
+VKRT_CONST uint ENTRY_LEAF_BIT = 0x40000000u;
+VKRT_CONST uint LEAF_ENTRY_MAX_COUNT = 15u;
+VKRT_CONST uint LEAF_ENTRY_MAX_FIRST = 0x3ffffffu;
 struct GpuBvhNode {
     uvec4 xy0;
     uvec4 xy1;
@@ -128,6 +125,8 @@ struct Primitive {
     uvec4 b;
     uvec4 c;
 };
+// PRIM_KIND_* of the primitive whose first texel (Primitive::a) is `a`.
+VKRT_FN uint primitiveKind(uvec4 a) { return a.w & PRIM_KIND_MASK; }
 
 // Per primitive, fetched once at the closest hit (never during traversal). 16 bytes.
 //   x: material index (the prototype's or the loose shape's own; an instance override wins)
@@ -136,6 +135,9 @@ VKRT_CONST uint ATTRIB_NONE = 0xffffffffu;
 struct PrimInfo {
     uvec4 data;
 };
+VKRT_FN uint primitiveMaterial(PrimInfo p) { return p.data.x; }
+// The vertex attributes of corners 0, 1, 2 (ATTRIB_NONE: a flat normal).
+VKRT_FN uvec3 primitiveCornerAttribs(PrimInfo p) { return uvec3(p.data.y, p.data.z, p.data.w); }
 VKRT_CONST uint PRIM_INFO_TEXELS = 1;
 
 // Mesh vertex attributes: normal.xyz + u, then v. 32 bytes.
@@ -143,6 +145,8 @@ struct VertexAttrib {
     vec4 normalU;
     vec4 vPad;
 };
+VKRT_FN vec3 vertexNormal(VertexAttrib v) { return vec3(v.normalU.x, v.normalU.y, v.normalU.z); }
+VKRT_FN vec2 vertexUv(VertexAttrib v) { return vec2(v.normalU.w, v.vPad.x); }
 VKRT_CONST uint VERTEX_ATTRIB_TEXELS = 2;
 
 // ---------------------------------------------------------------------------------------------
@@ -159,6 +163,10 @@ struct Instance {
 };
 VKRT_CONST uint INSTANCE_TEXELS = 10;     // worldToObject rows at texels 0-2, objectToWorld 3-5, normalToWorld 6-8
 VKRT_CONST uint INSTANCE_INFO_TEXEL = 9;
+// Of an Instance::info texel (the kernels fetch it alone: bindings.glsl instanceInfo).
+VKRT_FN uint instanceRootNode(uvec4 info) { return info.x; }
+VKRT_FN uint instanceMaterialOverride(uvec4 info) { return info.y; }
+VKRT_FN uint instanceGroup(uvec4 info) { return info.z; }
 
 // ---------------------------------------------------------------------------------------------
 // Material (the format's <shader>). 80 bytes.
@@ -178,6 +186,13 @@ struct Material {
     uvec4 ids;         // x = SHADER_* type, y = diffuse texture, z = specular texture, w unused
 };
 VKRT_CONST uint MATERIAL_TEXELS = 5;
+VKRT_FN uint materialType(Material m) { return m.ids.x; }
+VKRT_FN uint materialDiffuseTexture(Material m) { return m.ids.y; }
+VKRT_FN uint materialSpecularTexture(Material m) { return m.ids.z; }
+VKRT_FN float materialPhongExponent(Material m) { return m.specular.w; }
+VKRT_FN float materialRefractiveIndex(Material m) { return m.attenuation.w; }
+VKRT_FN float materialMirrorCoef(Material m) { return m.params.x; }
+VKRT_FN float materialRoughness(Material m) { return m.params.y; }
 
 // ---------------------------------------------------------------------------------------------
 // Light. 80 bytes. A point light has zero edges; an area light is the rectangle
@@ -192,6 +207,8 @@ struct Light {
     uvec4 info;      // x: LIGHT_* type, y: area-light ordinal (sampling dimension), z, w unused
 };
 VKRT_CONST uint LIGHT_TEXELS = 5;
+VKRT_FN uint lightType(Light l) { return l.info.x; }
+VKRT_FN uint lightAreaOrdinal(Light l) { return l.info.y; }
 
 // Texture: texels[offset .. offset + width*height), row 0 = top row of the image, RGBA8 packed
 // little-endian (r in the low byte), values used linearly (no sRGB decode, like the course).
@@ -199,6 +216,9 @@ struct TextureInfo {
     uvec4 info;  // x: offset, y: width, z: height, w: unused
 };
 VKRT_CONST uint TEXTURE_INFO_TEXELS = 1;
+VKRT_FN uint textureFirstTexel(TextureInfo t) { return t.info.x; }
+VKRT_FN uint textureWidth(TextureInfo t) { return t.info.y; }
+VKRT_FN uint textureHeight(TextureInfo t) { return t.info.z; }
 
 // ---------------------------------------------------------------------------------------------
 // Per-render constants (UBO, std140-compatible because every member is a 16-byte vector).
@@ -211,7 +231,7 @@ VKRT_CONST uint SAMPLER_SOBOL = 3u;
 // SPEC_SAMPLER's value for "any": the kernel reads the sampler from FrameParams::sampling.x (the
 // general kernel). A specialised kernel gets the render's sampler as a constant instead, so only
 // that sampler's code is compiled: sample2D's branches on the kind are not skipped on lavapipe,
-// which runs every path for all 8 lanes (host/vulkan/README.md).
+// which runs every path for all 8 lanes (host/gpu/README.md, fact 2).
 VKRT_CONST uint SAMPLER_FROM_FRAME = 0xffffffffu;
 struct FrameParams {
     vec4 cameraPosition;  // xyz eye, w unused
@@ -229,6 +249,17 @@ struct FrameParams {
                           // InlinedWorld): x its first node texel, y its node texels, z its first
                           // primitive, w its primitive count; y = w = 0 when none is
 };
+// The kernels read these lanes straight from the uniform block, one lane each, through
+// bindings.glsl's frameSeed(), frameMaxDepth(), ...: passing the block's struct to a function makes
+// lavapipe load whole vec4s and keep them live (the traversal's JIT loops grew). The host's reads:
+#ifdef __cplusplus
+inline uint frameWidth(const FrameParams& f) { return f.image.x; }
+inline uint frameHeight(const FrameParams& f) { return f.image.y; }
+#endif
+// Whether a node entry / a primitive belongs to the inlined world group (FrameParams::world):
+// unsigned differences, so each range test is one compare.
+VKRT_FN bool worldHoldsNodeEntry(uvec4 world, uint entry) { return entry - world.x < world.y; }
+VKRT_FN bool worldHoldsPrimitive(uvec4 world, uint prim) { return prim - world.z < world.w; }
 
 // Written by the kernel, read by the host after each submission.
 VKRT_CONST uint STATUS_LOOP_BUDGET_EXCEEDED = 1u;
@@ -238,6 +269,11 @@ struct RenderStatus {
     uvec4 flags;       // x: STATUS_* bits, y: first offending pixel index + 1 (0: none), z: its sample,
                        // w: number of samples whose radiance was NaN/Inf (replaced by black)
 };
+// The host's reads (render.comp writes the lanes with atomics, which need the member itself).
+VKRT_FN uint statusFailures(RenderStatus s) { return s.flags.x; }
+VKRT_FN uint statusPixelPlusOne(RenderStatus s) { return s.flags.y; }
+VKRT_FN uint statusSample(RenderStatus s) { return s.flags.z; }
+VKRT_FN uint statusNonFiniteSamples(RenderStatus s) { return s.flags.w; }
 
 // Push constants: which pixels and which samples this dispatch computes.
 // Dispatches may cover a run of the tile's workgroups only (vkCmdDispatchBase offsets
@@ -248,6 +284,12 @@ struct PassParams {
     uvec4 pass;        // x first sample index, y workgroup interleave stride, z workgroups,
                        // w samples per pixel this dispatch computes (x .. x + w - 1; sample_batching.h)
 };
+VKRT_FN uvec2 passTileOrigin(PassParams p) { return uvec2(p.tile.x, p.tile.y); }
+VKRT_FN uvec2 passTileSize(PassParams p) { return uvec2(p.tile.z, p.tile.w); }
+VKRT_FN uint passFirstSample(PassParams p) { return p.pass.x; }
+VKRT_FN uint passStride(PassParams p) { return p.pass.y; }
+VKRT_FN uint passWorkgroups(PassParams p) { return p.pass.z; }
+VKRT_FN uint passSamples(PassParams p) { return p.pass.w; }
 
 // Ray-throughput benchmark (shaders/trace_rays.comp, tools/bench): rays in, hits out, so the GPU
 // traces exactly the rays the CPU traversal and the Embree peer trace.
@@ -260,6 +302,10 @@ struct TraceRayInput {
 struct TraceHitOutput {
     uvec4 hit;       // x = floatBits(t) or TRACE_MISS, y = primitive, z = instance, w = STATUS_* failures
 };
+VKRT_FN uint traceHitTBits(TraceHitOutput h) { return h.hit.x; }
+VKRT_FN uint traceHitPrimitive(TraceHitOutput h) { return h.hit.y; }
+VKRT_FN uint traceHitInstance(TraceHitOutput h) { return h.hit.z; }
+VKRT_FN uint traceHitFailures(TraceHitOutput h) { return h.hit.w; }
 // What trace_rays.comp writes per ray: 32-bit words in an R32UI texel buffer, as few as the BVH
 // needs, because lavapipe stores a texel one component at a time, each a loop over the 8 lanes
 // (profile_jit.py: the four-word hit was 5% of a primary-ray trace on buddha).
@@ -273,6 +319,8 @@ VKRT_CONST uint TRACE_HIT_WORDS_INSTANCED = 3u;  // with one
 struct TraceParams {
     uvec4 rays;      // x = ray count, y = 1 for any-hit (shadow) queries, 0 for closest hit, z, w unused
 };
+// Read in trace_rays.comp straight from the push constants (traceRayCount(), traceAnyHit()), as
+// FrameParams is; the host only writes it.
 
 // Specialization constant ids: the scene's feature set (the kernel is specialised per scene).
 VKRT_CONST uint SPEC_HAS_TRIANGLES = 0;
@@ -305,7 +353,6 @@ VKRT_CONST uint TRAVERSAL_STACK_SIZE = 48u;
 VKRT_CONST uint LOOP_BUDGET = 60000u;
 
 #ifdef __cplusplus
-static_assert(sizeof(BvhNode) == 64);
 static_assert(sizeof(GpuBvhNode) == 16 * GPU_NODE_TEXELS);
 static_assert(sizeof(GpuExactBvhNode) == 16 * GPU_EXACT_NODE_TEXELS);
 static_assert(4 * NODE_ENTRY_XY_BITS + 2 * NODE_ENTRY_Z_BITS == 32);

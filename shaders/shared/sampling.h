@@ -17,12 +17,16 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 #include "device_host.h"
-namespace vkrt::gpu {
-#define VKRT_FN inline
+// C++: the CPU reference and the GPU renderer's host side both call these, so they live in a
+// namespace of their own, with the GLSL names they use.
+namespace vkrt::sampling {
 using glm::min;
-using uvec2 = glm::uvec2;
-#else
-#define VKRT_FN
+using gpu::uint;
+using gpu::uvec4;
+using gpu::vec2;
+using gpu::SAMPLER_RANDOM;
+using gpu::SAMPLER_REGULAR;
+using gpu::SAMPLER_SOBOL;
 #endif
 
 // How a loop reports that a driver's loop limiter ended it early: the GLSL kernels define it
@@ -204,8 +208,7 @@ inline uvec4 makeSampleGrid(uint count) {
     uint gy = count / gx;
     return uvec4(count, gx, glm::floatBitsToUint(1.0f / float(gx)), glm::floatBitsToUint(1.0f / float(gy)));
 }
-#undef VKRT_FN
-}  // namespace vkrt::gpu
+}  // namespace vkrt::sampling
 #endif
 
 #endif  // VKRT_SAMPLING_H

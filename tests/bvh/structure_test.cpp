@@ -30,11 +30,11 @@ WalkResult walkTree(const SceneBvh& bvh, std::uint32_t root, int maxLeaf, Conten
         if (index >= bvh.nodes.size()) return r;
         ++r.nodes;
         r.depth = std::max(r.depth, depth);
-        const gpu::BvhNode& node = bvh.nodes[index];
+        const bvh::BinaryNode& node = bvh.nodes[index];
         for (int k = 0; k < 2; ++k) {
             const Aabb box = childBox(node, k);
             const std::uint32_t link = childLink(node, k), count = childCount(node, k);
-            if (count == 0 && link == gpu::NODE_NONE) {
+            if (count == 0 && link == bvh::NODE_NONE) {
                 EXPECT_TRUE(box.empty()) << "node " << index << " slot " << k << ": empty slot with a box";
                 EXPECT_EQ(box.lo, glm::vec3(FLT_MAX));
                 EXPECT_EQ(box.hi, glm::vec3(-FLT_MAX));
@@ -46,7 +46,7 @@ WalkResult walkTree(const SceneBvh& bvh, std::uint32_t root, int maxLeaf, Conten
                     ADD_FAILURE() << "node " << index << " links to " << link << ": children must follow their parent";
                     continue;
                 }
-                const gpu::BvhNode& child = bvh.nodes[link];
+                const bvh::BinaryNode& child = bvh.nodes[link];
                 for (int j = 0; j < 2; ++j) {
                     if (!childBox(child, j).empty()) {
                         EXPECT_TRUE(box.contains(childBox(child, j))) << "node " << index << " slot " << k;
@@ -82,7 +82,7 @@ std::vector<std::uint32_t> walkWide(const SceneBvh& bvh, std::uint32_t root, Con
         for (int k = 0; k < 4; ++k) {
             const Aabb box{{node.bounds[0][k], node.bounds[2][k], node.bounds[4][k]},
                            {node.bounds[1][k], node.bounds[3][k], node.bounds[5][k]}};
-            if (node.count[k] == 0 && node.link[k] == gpu::NODE_NONE) {
+            if (node.count[k] == 0 && node.link[k] == bvh::NODE_NONE) {
                 EXPECT_TRUE(box.empty()) << "wide node " << index << " slot " << k;
                 continue;
             }
@@ -204,7 +204,7 @@ void expectWellFormed(const TestScene& scene, const SceneBvh& bvh, const BuildOp
     std::sort(widePlaced.begin(), widePlaced.end());
     EXPECT_EQ(widePlaced, expected) << "top level (4-wide copy)";
     EXPECT_EQ(bvh.stats.topDepth, top.depth);
-    EXPECT_LE(bvh.stats.topDepth + 1 + bvh.stats.bottomDepth, static_cast<int>(gpu::TRAVERSAL_STACK_SIZE));
+    EXPECT_LE(bvh.stats.topDepth + bvh.stats.bottomDepth, static_cast<int>(gpu::TRAVERSAL_STACK_SIZE));
     // Every node belongs to exactly one tree.
     EXPECT_EQ(reachable + top.nodes, bvh.nodes.size());
     EXPECT_EQ(bvh.stats.nodeCount, bvh.nodes.size());

@@ -59,11 +59,11 @@ bool footprintIsClean(const DCamera& camera, const AnalyticScene& scene, int i, 
 
 glm::dvec3 expectedPixel(const DCamera& camera, const AnalyticScene& scene, const RenderOptions& options, int i, int j) {
     const auto rpp = static_cast<std::uint32_t>(options.samplesPerPixel);
-    const glm::uvec4 grid = gpu::makeSampleGrid(rpp);
+    const glm::uvec4 grid = sampling::makeSampleGrid(rpp);
     const std::uint32_t pixel = static_cast<std::uint32_t>(j * camera.nx + i);
     glm::dvec3 sum(0.0);
     for (std::uint32_t s = 0; s < rpp; ++s) {
-        const glm::vec2 o = gpu::sample2D(static_cast<std::uint32_t>(options.sampler), grid, pixel, s, gpu::DIM_CAMERA,
+        const glm::vec2 o = sampling::sample2D(static_cast<std::uint32_t>(options.sampler), grid, pixel, s, sampling::DIM_CAMERA,
                                           options.seed);
         sum += scene(dcameraRay(camera, i + double(o.x), j + double(o.y))).radiance;
     }

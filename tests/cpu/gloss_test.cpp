@@ -17,12 +17,12 @@ const glm::vec3 kMirrorDirections[] = {glm::normalize(glm::vec3(0.3f, 0.9f, -0.2
 
 TEST(Gloss, MeanOfManyGlossyDirectionsIsTheMirrorDirection) {
     // 4096 jittered samples per direction, through the shared sampler as the renderer draws them.
-    const glm::uvec4 grid = gpu::makeSampleGrid(4096);
+    const glm::uvec4 grid = sampling::makeSampleGrid(4096);
     for (const glm::vec3& r : kMirrorDirections)
         for (float a : {0.1f, 0.5f, 1.0f}) {
             glm::dvec3 mean(0.0);
             for (unsigned s = 0; s < 4096; ++s)
-                mean += glm::dvec3(glossyDirection(r, a, gpu::sample2D(gpu::SAMPLER_JITTERED, grid, 7, s, gpu::dimGloss(0), 3)));
+                mean += glm::dvec3(glossyDirection(r, a, sampling::sample2D(gpu::SAMPLER_JITTERED, grid, 7, s, sampling::dimGloss(0), 3)));
             const double angle = std::acos(std::min(1.0, glm::dot(glm::normalize(mean), glm::dvec3(r))));
             // Jittered 64x64 strata: the residual of a smooth integrand is O(a / 64^2) ~ 2e-4 rad at a = 1.
             EXPECT_LT(angle, 1e-3) << "roughness " << a;
@@ -32,12 +32,12 @@ TEST(Gloss, MeanOfManyGlossyDirectionsIsTheMirrorDirection) {
 TEST(Gloss, OffsetsAreUniformInTheSquareOfSideRoughness) {
     // Written in r's tangent plane, r'/dot(r', r) - r is the offset a*(su - 1/2) U + a*(sv - 1/2) V:
     // its squared length has mean 2 * a^2/12 for uniform offsets, and never exceeds a^2/2.
-    const glm::uvec4 grid = gpu::makeSampleGrid(1024);
+    const glm::uvec4 grid = sampling::makeSampleGrid(1024);
     for (const glm::vec3& r : kMirrorDirections) {
         const float a = 0.4f;
         double sum2 = 0.0, max2 = 0.0;
         for (unsigned s = 0; s < 1024; ++s) {
-            const glm::dvec3 g(glossyDirection(r, a, gpu::sample2D(gpu::SAMPLER_JITTERED, grid, 11, s, gpu::dimGloss(1), 0)));
+            const glm::dvec3 g(glossyDirection(r, a, sampling::sample2D(gpu::SAMPLER_JITTERED, grid, 11, s, sampling::dimGloss(1), 0)));
             const glm::dvec3 offset = g / glm::dot(g, glm::dvec3(r)) - glm::dvec3(r);
             EXPECT_NEAR(glm::dot(offset, glm::dvec3(r)), 0.0, 1e-6);
             sum2 += glm::dot(offset, offset);

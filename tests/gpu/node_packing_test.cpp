@@ -99,11 +99,11 @@ TEST(NodePacking, PackedNodesHoldTheBuildersEntriesAndContainItsBoxes) {
                 if (bvh::childIsInner(scene.nodes[i], k)) pending.push_back(bvh::childLink(scene.nodes[i], k));
         }
         for (std::size_t i = 0; i < packed.size(); ++i) {
-            const gpu::BvhNode& node = scene.nodes[i];
+            const bvh::BinaryNode& node = scene.nodes[i];
             for (int k = 0; k < 2; ++k) {
                 const std::uint32_t link = node.link[k], count = node.link[2 + k];
                 const std::uint32_t entry = packedChildEntry(packed[i], k);
-                if (count == 0 && link == gpu::NODE_NONE) {
+                if (count == 0 && link == bvh::NODE_NONE) {
                     EXPECT_EQ(entry, gpu::ENTRY_NONE);
                     continue;
                 }
@@ -151,7 +151,7 @@ TEST(NodePacking, FarFromItsOriginGeometryKeepsTheExactLayout) {
     ASSERT_EQ(farNodes.texels.size(), farScene.nodes.size() * gpu::GPU_EXACT_NODE_TEXELS);
     const std::vector<bool> top = topLevelNodes(farScene);
     for (std::size_t i = 0; i < farScene.nodes.size(); ++i) {
-        const gpu::BvhNode& node = farScene.nodes[i];
+        const bvh::BinaryNode& node = farScene.nodes[i];
         const glm::uvec4* t = &farNodes.texels[i * gpu::GPU_EXACT_NODE_TEXELS];
         EXPECT_EQ(t[0], node.xy0);
         EXPECT_EQ(t[1], node.xy1);
@@ -194,7 +194,7 @@ TEST(NodePacking, TheTopLevelMustComeLast) {
     // Move the top level's root to the front: nodes keep their links, the order breaks.
     const std::uint32_t root = scene.topRoot;
     std::swap(scene.nodes[0], scene.nodes[root]);
-    for (gpu::BvhNode& node : scene.nodes)
+    for (bvh::BinaryNode& node : scene.nodes)
         for (int k = 0; k < 2; ++k)
             if (bvh::childIsInner(node, k)) {
                 std::uint32_t& link = node.link[k];

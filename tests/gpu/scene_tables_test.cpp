@@ -182,9 +182,9 @@ TEST(FrameParams, CarriesOptionsAndGrids) {
     EXPECT_EQ(f.sampling, glm::uvec4(gpu::SAMPLER_REGULAR, 16u, 3u, 2u));
     EXPECT_EQ(f.scene, glm::uvec4(42u, 5u, 1u, tiny.accel.bvh.topRoot));
     EXPECT_EQ(glm::vec3(f.background), tiny.scene.background);
-    EXPECT_EQ(f.pixelGrid, gpu::makeSampleGrid(16));
-    EXPECT_EQ(f.lightGrid, gpu::makeSampleGrid(48));
-    EXPECT_EQ(f.glossGrid, gpu::makeSampleGrid(32));
+    EXPECT_EQ(f.pixelGrid, sampling::makeSampleGrid(16));
+    EXPECT_EQ(f.lightGrid, sampling::makeSampleGrid(48));
+    EXPECT_EQ(f.glossGrid, sampling::makeSampleGrid(32));
     o.background = glm::vec3(1.0f, 0.0f, 1.0f);
     f = makeFrameParams(tiny.scene, tiny.accel, o);
     EXPECT_EQ(glm::vec3(f.background), glm::vec3(1.0f, 0.0f, 1.0f));

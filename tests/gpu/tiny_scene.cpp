@@ -26,11 +26,11 @@ TinyScene::TinyScene() {
     bvh::SceneBvh& b = accel.bvh;
     const std::uint32_t minusMax = glm::floatBitsToUint(-3.402823466e38f), plusMax = glm::floatBitsToUint(3.402823466e38f);
     const std::uint32_t lo = glm::floatBitsToUint(-1.0f), hi = glm::floatBitsToUint(1.0f);
-    gpu::BvhNode node{};
+    bvh::BinaryNode node{};
     node.xy0 = glm::uvec4(lo, hi, lo, hi);
     node.xy1 = glm::uvec4(plusMax, minusMax, plusMax, minusMax);  // empty second child
     node.z01 = glm::uvec4(lo, hi, plusMax, minusMax);
-    node.link = glm::uvec4(0u, gpu::NODE_NONE, 1u, 0u);  // child 0: leaf of primitive 0
+    node.link = glm::uvec4(0u, bvh::NODE_NONE, 1u, 0u);  // child 0: leaf of primitive 0
     b.nodes = {node, node};                               // node 1: top level, leaf of instance 0
     gpu::Primitive prim{};
     prim.a = glm::uvec4(glm::floatBitsToUint(0.0f), glm::floatBitsToUint(0.0f), glm::floatBitsToUint(0.0f), gpu::PRIM_KIND_SPHERE);

@@ -1,4 +1,4 @@
-// <camera>, <light>, background and environment-map forms (FORMAT.md §3.1-3.4).
+// <camera>, <light>, background and environment-map forms (docs/XML_FORMAT.md §3.1-3.4).
 #include "scene_test_files.h"
 
 namespace vkrt::test {

@@ -1,4 +1,4 @@
-// <shader> definitions: every type, the legacy spellings, defaults (FORMAT.md §3.5, §7.7).
+// <shader> definitions: every type, the legacy spellings, defaults (docs/XML_FORMAT.md §3.5, §7.7).
 #include "scene_test_files.h"
 
 namespace vkrt::test {

@@ -1,4 +1,4 @@
-// <shape>, <instance> prototypes and <transform> (FORMAT.md §3.6-3.9).
+// <shape>, <instance> prototypes and <transform> (docs/XML_FORMAT.md §3.6-3.9).
 #include <cmath>
 
 #include "scene_test_files.h"

@@ -131,7 +131,7 @@ const Instance& instanceNamed(const Scene& scene, const std::string& name) {
 
 TEST(UpstreamFacts, ThreeEggsRightEllipsoidIsThreeUnitsTallRestingOnTheGround) {
     VKRT_SKIP_WITHOUT(vkrt::test::upstreamDir());
-    // translate 2.5 1.5 -4; rotate X 90; scale 1 0.5 1.5 in listed order, M = T*R*S (FORMAT.md
+    // translate 2.5 1.5 -4; rotate X 90; scale 1 0.5 1.5 in listed order, M = T*R*S (docs/XML_FORMAT.md
     // §3.9): the unit sphere's z poles (+-1.5 after the scale) are turned onto the y axis, giving
     // an egg from y = 0 to y = 3 centred at (2.5, 1.5, -4). Any other order moves the poles.
     Diagnostics diagnostics;

@@ -28,7 +28,7 @@ TEST(SobolSampler, ReverseBitsMatchesABitLoop) {
     std::mt19937 rng(1);
     for (int i = 0; i < 10000; ++i) {
         const uint x = static_cast<uint>(rng());
-        ASSERT_EQ(gpu::reverseBits32(x), naiveReverse(x)) << x;
+        ASSERT_EQ(sampling::reverseBits32(x), naiveReverse(x)) << x;
     }
 }
 
@@ -41,12 +41,12 @@ TEST(SobolSampler, DimensionOneMatchesTheDirectionNumberRecurrence) {
             if ((i >> b) & 1u) expected ^= v;
             v ^= v >> 1;
         }
-        ASSERT_EQ(naiveReverse(gpu::sobolDim1Reversed(i)), expected) << "index " << i;
+        ASSERT_EQ(naiveReverse(sampling::sobolDim1Reversed(i)), expected) << "index " << i;
     }
     // And the start of the sequence in natural (not Gray-code) order, by hand from v = 1/2, 3/4, 5/8:
     // 0, v1, v2, v1^v2, v3, v1^v3, v2^v3, v1^v2^v3.
     const double start[8] = {0.0, 0.5, 0.75, 0.25, 0.625, 0.125, 0.375, 0.875};
-    for (uint i = 0; i < 8; ++i) EXPECT_EQ(naiveReverse(gpu::sobolDim1Reversed(i)) / 4294967296.0, start[i]);
+    for (uint i = 0; i < 8; ++i) EXPECT_EQ(naiveReverse(sampling::sobolDim1Reversed(i)) / 4294967296.0, start[i]);
 }
 
 // The first 2^m samples of any pixel, dimension and seed put exactly one point in every elementary
@@ -55,10 +55,10 @@ TEST(SobolSampler, FirstPowerOfTwoSamplesFormA02Net) {
     for (uint m = 0; m <= 8; ++m) {
         const uint n = 1u << m;
         for (uint pixel : {0u, 1u, 77u, 123456u})
-            for (uint dim : {gpu::DIM_CAMERA, gpu::dimLight(0, 0), gpu::dimGloss(0), gpu::dimLight(3, 2)})
+            for (uint dim : {sampling::DIM_CAMERA, sampling::dimLight(0, 0), sampling::dimGloss(0), sampling::dimLight(3, 2)})
                 for (uint seed : {0u, 12345u}) {
                     std::vector<gpu::vec2> points;
-                    for (uint i = 0; i < n; ++i) points.push_back(gpu::sobolSample2D(pixel, i, dim, seed));
+                    for (uint i = 0; i < n; ++i) points.push_back(sampling::sobolSample2D(pixel, i, dim, seed));
                     for (uint k = 0; k <= m; ++k) {
                         std::vector<int> count(n, 0);
                         for (const gpu::vec2& p : points) {
@@ -88,7 +88,7 @@ TEST(SobolSampler, IndexShuffleIsABijectionOntoAnAlignedBlock) {
             std::set<uint> low;
             std::set<uint> high;
             for (uint i = 0; i < (1u << m); ++i) {
-                const uint s = gpu::reverseBits32(gpu::owenScrambleReversed(gpu::reverseBits32(i), key));
+                const uint s = sampling::reverseBits32(sampling::owenScrambleReversed(sampling::reverseBits32(i), key));
                 low.insert(s & ((1u << m) - 1u));
                 high.insert(s >> m);
             }
@@ -108,9 +108,9 @@ TEST(SobolSampler, ScrambleIsNestedAndItsFlipsAreFair) {
     std::vector<int> flips(32 * 32, 0);
     for (int t = 0; t < kTrials; ++t) {
         const uint x = static_cast<uint>(rng()), key = static_cast<uint>(rng());
-        const uint y = gpu::owenScrambleReversed(x, key);
+        const uint y = sampling::owenScrambleReversed(x, key);
         for (int j = 0; j < 32; ++j) {
-            const uint d = y ^ gpu::owenScrambleReversed(x ^ (1u << j), key);
+            const uint d = y ^ sampling::owenScrambleReversed(x ^ (1u << j), key);
             ASSERT_EQ(d & ((2u << j) - 1u), 1u << j) << "digit " << j << " changed an earlier digit or not itself";
             for (int k = j + 1; k < 32; ++k) flips[j * 32 + k] += (d >> k) & 1u;
         }
@@ -124,7 +124,7 @@ TEST(SobolSampler, ScrambleIsNestedAndItsFlipsAreFair) {
 // samples would be paired, Cook 1984): the correlation of their coordinates over 256k pairs has a
 // standard error of 0.002; 0.01 is 5 of them. Neighbouring pixels must not repeat each other either.
 TEST(SobolSampler, DimensionsAndPixelsAreDecorrelated) {
-    const uint dims[] = {gpu::DIM_CAMERA, gpu::dimLight(0, 0), gpu::dimLight(0, 1), gpu::dimGloss(0), gpu::dimLight(1, 0)};
+    const uint dims[] = {sampling::DIM_CAMERA, sampling::dimLight(0, 0), sampling::dimLight(0, 1), sampling::dimGloss(0), sampling::dimLight(1, 0)};
     constexpr int kPixels = 4096, kSamples = 64;
     auto correlation = [&](auto first, auto second) {
         double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0;
@@ -142,18 +142,18 @@ TEST(SobolSampler, DimensionsAndPixelsAreDecorrelated) {
     };
     for (uint d1 = 0; d1 < 5; ++d1)
         for (uint d2 = d1 + 1; d2 < 5; ++d2) {
-            const double rx = correlation([&](uint p, uint i) { return gpu::sobolSample2D(p, i, dims[d1], 7).x; },
-                                          [&](uint p, uint i) { return gpu::sobolSample2D(p, i, dims[d2], 7).x; });
-            const double ry = correlation([&](uint p, uint i) { return gpu::sobolSample2D(p, i, dims[d1], 7).y; },
-                                          [&](uint p, uint i) { return gpu::sobolSample2D(p, i, dims[d2], 7).x; });
+            const double rx = correlation([&](uint p, uint i) { return sampling::sobolSample2D(p, i, dims[d1], 7).x; },
+                                          [&](uint p, uint i) { return sampling::sobolSample2D(p, i, dims[d2], 7).x; });
+            const double ry = correlation([&](uint p, uint i) { return sampling::sobolSample2D(p, i, dims[d1], 7).y; },
+                                          [&](uint p, uint i) { return sampling::sobolSample2D(p, i, dims[d2], 7).x; });
             EXPECT_LT(std::abs(rx), 0.01) << "dims " << dims[d1] << ", " << dims[d2];
             EXPECT_LT(std::abs(ry), 0.01) << "dims " << dims[d1] << ", " << dims[d2];
         }
-    const double pixels = correlation([&](uint p, uint i) { return gpu::sobolSample2D(p, i, gpu::DIM_CAMERA, 7).x; },
-                                      [&](uint p, uint i) { return gpu::sobolSample2D(p + 1, i, gpu::DIM_CAMERA, 7).x; });
+    const double pixels = correlation([&](uint p, uint i) { return sampling::sobolSample2D(p, i, sampling::DIM_CAMERA, 7).x; },
+                                      [&](uint p, uint i) { return sampling::sobolSample2D(p + 1, i, sampling::DIM_CAMERA, 7).x; });
     EXPECT_LT(std::abs(pixels), 0.01);
-    const double seeds = correlation([&](uint p, uint i) { return gpu::sobolSample2D(p, i, gpu::DIM_CAMERA, 7).x; },
-                                     [&](uint p, uint i) { return gpu::sobolSample2D(p, i, gpu::DIM_CAMERA, 8).x; });
+    const double seeds = correlation([&](uint p, uint i) { return sampling::sobolSample2D(p, i, sampling::DIM_CAMERA, 7).x; },
+                                     [&](uint p, uint i) { return sampling::sobolSample2D(p, i, sampling::DIM_CAMERA, 8).x; });
     EXPECT_LT(std::abs(seeds), 0.01);
 }
 
@@ -161,8 +161,8 @@ TEST(SobolSampler, DimensionsAndPixelsAreDecorrelated) {
 TEST(SobolSampler, Sample2DUsesItForTheSobolKind) {
     for (uint count : {1u, 3u, 16u, 48u})
         for (uint i = 0; i < count; ++i) {
-            const gpu::vec2 a = gpu::sample2D(gpu::SAMPLER_SOBOL, gpu::makeSampleGrid(count), 5, i, gpu::dimLight(0, 0), 3);
-            const gpu::vec2 b = gpu::sobolSample2D(5, i, gpu::dimLight(0, 0), 3);
+            const gpu::vec2 a = sampling::sample2D(gpu::SAMPLER_SOBOL, sampling::makeSampleGrid(count), 5, i, sampling::dimLight(0, 0), 3);
+            const gpu::vec2 b = sampling::sobolSample2D(5, i, sampling::dimLight(0, 0), 3);
             EXPECT_EQ(a, b);
         }
 }

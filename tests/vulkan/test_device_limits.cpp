@@ -164,8 +164,8 @@ TEST(SceneBuffers, TexelBufferSizesAvoidLavapipesRecompileTriggers) {
 
 // A chain of `depth` inner nodes: node i has child 0 = node i+1 (inner) and child 1 = a leaf; the
 // last node has two leaves.
-std::vector<gpu::BvhNode> chain(std::uint32_t first, std::uint32_t depth) {
-    std::vector<gpu::BvhNode> nodes(depth);
+std::vector<bvh::BinaryNode> chain(std::uint32_t first, std::uint32_t depth) {
+    std::vector<bvh::BinaryNode> nodes(depth);
     for (std::uint32_t i = 0; i < depth; ++i) {
         const bool last = i + 1 == depth;
         nodes[i].link = last ? glm::uvec4(0u, 0u, 1u, 1u) : glm::uvec4(first + i + 1, 0u, 0u, 1u);
@@ -219,8 +219,8 @@ TEST(TraversalStack, LeavesMustFitOneStackEntry) {
     b.instances.resize(1);
     b.instances[0].info.x = 0;
     // The top level: one node whose only child is instance 0.
-    gpu::BvhNode top = b.nodes[2];
-    top.link = glm::uvec4(0u, gpu::NODE_NONE, 1u, 0u);
+    bvh::BinaryNode top = b.nodes[2];
+    top.link = glm::uvec4(0u, bvh::NODE_NONE, 1u, 0u);
     b.nodes.push_back(top);
     b.topRoot = 3;
     b.nodes[2].link = glm::uvec4(gpu::LEAF_ENTRY_MAX_FIRST, 0u, gpu::LEAF_ENTRY_MAX_COUNT, 1u);
@@ -236,12 +236,12 @@ TEST(TraversalStack, LeavesMustFitOneStackEntry) {
     EXPECT_THROW(checkTraversalStack(b, false), DeviceLimitExceeded);
     // Top-level leaves are pushed as instance entries: their counts are not packed.
     b.nodes[2].link = glm::uvec4(0u, 0u, 1u, 1u);
-    b.nodes[3].link = glm::uvec4(0u, gpu::NODE_NONE, gpu::LEAF_ENTRY_MAX_COUNT + 5, 0u);
+    b.nodes[3].link = glm::uvec4(0u, bvh::NODE_NONE, gpu::LEAF_ENTRY_MAX_COUNT + 5, 0u);
     EXPECT_NO_THROW(checkTraversalStack(b, true));
 }
 
 TEST(TraversalStack, CyclesAndBadLinksAreRefused) {
-    std::vector<gpu::BvhNode> nodes = chain(0, 2);
+    std::vector<bvh::BinaryNode> nodes = chain(0, 2);
     nodes[1].link = glm::uvec4(0u, 0u, 0u, 1u);  // back to the root
     EXPECT_THROW(innerDepth(nodes, 0), std::logic_error);
     nodes[1].link = glm::uvec4(9u, 0u, 0u, 1u);  // past the end

@@ -131,7 +131,7 @@ class RayTracerLeaves : public VulkanTest, public ::testing::WithParamInterface<
 TEST_P(RayTracerLeaves, MatchesTheCpuTraversal) {
     const bvh::SceneBvh scene = randomScene(GetParam());
     std::uint32_t largestLeaf = 0;
-    for (const gpu::BvhNode& node : scene.nodes) largestLeaf = std::max({largestLeaf, node.link.z, node.link.w});
+    for (const bvh::BinaryNode& node : scene.nodes) largestLeaf = std::max({largestLeaf, node.link.z, node.link.w});
     std::cout << "largest leaf: " << largestLeaf << " primitives\n";
     // With the cheap intersection cost the build fills leaves to the limit, so the kernel's
     // leaf entries really carry the largest count they can encode.

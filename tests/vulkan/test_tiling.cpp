@@ -31,7 +31,7 @@ Image expectedCameraRays(const Scene& scene, const SceneAccel& accel, const Rend
             const std::uint32_t pixel = static_cast<std::uint32_t>(y * options.width + x);
             glm::vec3 sum(0.0f);
             for (std::uint32_t s = 0; s < static_cast<std::uint32_t>(options.samplesPerPixel); ++s) {
-                const glm::vec2 j = gpu::sample2D(f.sampling.x, f.pixelGrid, pixel, s, gpu::DIM_CAMERA, f.scene.x);
+                const glm::vec2 j = sampling::sample2D(f.sampling.x, f.pixelGrid, pixel, s, sampling::DIM_CAMERA, f.scene.x);
                 const float a = f.cameraU.w * ((static_cast<float>(x) + j.x) / static_cast<float>(options.width) - 0.5f);
                 const float b = f.cameraV.w * (0.5f - (static_cast<float>(y) + j.y) / static_cast<float>(options.height));
                 const glm::vec3 dir = glm::normalize(-f.cameraW.w * glm::vec3(f.cameraW) + a * glm::vec3(f.cameraU) + b * glm::vec3(f.cameraV));

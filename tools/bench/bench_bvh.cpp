@@ -72,7 +72,7 @@ Args parseArgs(const std::vector<std::string>& args) {
 double unitSahCost(const bvh::SceneBvh& scene) {
     if (scene.groups.empty()) return 0.0;
     auto area = [](const bvh::Aabb& b) { return static_cast<double>(b.halfArea()); };
-    const gpu::BvhNode& rootNode = scene.nodes[scene.groups[0].rootNode];
+    const bvh::BinaryNode& rootNode = scene.nodes[scene.groups[0].rootNode];
     bvh::Aabb rootBox = bvh::childBox(rootNode, 0);
     if (!bvh::childBox(rootNode, 1).empty()) rootBox.grow(bvh::childBox(rootNode, 1));
     const double rootArea = area(rootBox);
@@ -83,7 +83,7 @@ double unitSahCost(const bvh::SceneBvh& scene) {
         const auto [index, nodeArea] = stack.back();
         stack.pop_back();
         cost += nodeArea / rootArea;
-        const gpu::BvhNode& node = scene.nodes[index];
+        const bvh::BinaryNode& node = scene.nodes[index];
         for (int k = 0; k < 2; ++k) {
             const double a = bvh::childBox(node, k).empty() ? 0.0 : area(bvh::childBox(node, k));
             if (bvh::childCount(node, k) > 0) cost += bvh::childCount(node, k) * a / rootArea;
@@ -218,7 +218,7 @@ int runBvhBench(const std::vector<std::string>& argv) {
     std::printf("primary rays %zu Mrays_per_s %.2f\n", v.primaryRays, v.primaryMrays);
     std::printf("shadow rays %zu Mrays_per_s %.2f\n", v.shadowRays, v.shadowMrays);
     std::printf("diffuse rays %zu Mrays_per_s %.2f\n", v.shadowRays, v.diffuseMrays);
-    const double nodeBytes = static_cast<double>(v.stats.nodeCount) * sizeof(gpu::BvhNode);
+    const double nodeBytes = static_cast<double>(v.stats.nodeCount) * sizeof(bvh::BinaryNode);
     const double primBytes = tris * sizeof(gpu::Primitive);
     std::printf("bvh sah_cost %.2f unit_sah_cost %.2f nodes %zu leaves %zu depth %d node_bytes %.0f prim_bytes %.0f "
                 "node_bytes_per_triangle %.1f bytes_per_triangle %.1f cpu_wide_bytes_per_triangle %.1f\n",

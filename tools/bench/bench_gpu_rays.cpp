@@ -167,9 +167,9 @@ std::size_t mismatches(const bvh::SceneBvh& cpuScene, const std::vector<Outcome>
                        const std::vector<gpu::TraceHitOutput>& gpu, bool any) {
     std::size_t count = 0;
     for (std::size_t i = 0; i < cpu.size(); ++i) {
-        const bool gpuHit = gpu[i].hit.x != kMiss, cpuHit = cpu[i].prim != kMiss;
+        const bool gpuHit = gpu::traceHitTBits(gpu[i]) != kMiss, cpuHit = cpu[i].prim != kMiss;
         if (gpuHit != cpuHit ||
-            (!any && gpuHit && gpuScene.primSource[gpu[i].hit.y] != cpuScene.primSource[cpu[i].prim]))
+            (!any && gpuHit && gpuScene.primSource[gpu::traceHitPrimitive(gpu[i])] != cpuScene.primSource[cpu[i].prim]))
             ++count;
     }
     return count;
