@@ -53,12 +53,12 @@ TEST(Gloss, OffsetsAreUniformInTheSquareOfSideRoughness) {
 // CornellBox_Specular.json's Mirror at 1.4 spreads its reflections up to atan(1.4 / sqrt 2) =
 // 44.7 degrees from the mirror direction, uniformly in the square, not in angle.
 TEST(Gloss, RoughnessAboveOneKeepsTheSquareOfSideRoughness) {
-    const glm::uvec4 grid = gpu::makeSampleGrid(1024);
+    const glm::uvec4 grid = sampling::makeSampleGrid(1024);
     for (const glm::vec3& r : kMirrorDirections)
         for (float a : {1.4f, 3.0f, 1e6f}) {
             double sum2 = 0.0, max2 = 0.0;
             for (unsigned s = 0; s < 1024; ++s) {
-                const glm::dvec3 g(glossyDirection(r, a, gpu::sample2D(gpu::SAMPLER_JITTERED, grid, 5, s, gpu::dimGloss(0), 1)));
+                const glm::dvec3 g(glossyDirection(r, a, sampling::sample2D(gpu::SAMPLER_JITTERED, grid, 5, s, sampling::dimGloss(0), 1)));
                 EXPECT_NEAR(glm::length(g), 1.0, 1e-6);
                 const glm::dvec3 offset = g / glm::dot(g, glm::dvec3(r)) - glm::dvec3(r);
                 EXPECT_NEAR(glm::dot(offset, glm::dvec3(r)), 0.0, 1e-5 * (1.0 + a));
