@@ -12,6 +12,8 @@ std::string sharedDir() {
 
 std::string upstreamDir() { return sharedDir() + "/scenes/upstream"; }
 
+std::string jsonSceneDir() { return sharedDir() + "/scenes/json"; }
+
 std::string sourceDir() { return VKRT_SOURCE_DIR; }
 
 std::string artifactDir() {

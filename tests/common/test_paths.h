@@ -20,6 +20,8 @@ namespace vkrt::test {
 std::string sharedDir();
 // ../shared/scenes/upstream
 std::string upstreamDir();
+// ../shared/scenes/json: the course's JSON scenes (SOURCES.md there)
+std::string jsonSceneDir();
 // The repository root (for scenes/ and shaders/).
 std::string sourceDir();
 // A scratch directory for test outputs (created on demand; kept after a failure as an artefact).

@@ -1,10 +1,12 @@
-// `vkrt-bench gpu scenes [DIR] [-w W -h H -r RPP] [--shader-dir DIR]`: every .xml under DIR (default the upstream
-// course scenes in ../shared, $VKRT_SHARED overriding as in the tests) rendered by the GPU kernel
+// `vkrt-bench gpu scenes [DIR] [-w W -h H -r RPP] [--shader-dir DIR]`: every .xml and .json scene in DIR (the
+// extension in any case, as loadScene reads them; default the upstream course scenes in ../shared,
+// $VKRT_SHARED overriding as in the tests) rendered by the GPU kernel
 // specialised to the scene, by the general kernel (every feature on), and by the CPU reference,
 // all with the same options, each device from the scene it prepared itself (its own tree). One row
 // per scene with both prepare times and both time ratios, then their median and range.
 // The mean difference GPU vs CPU is printed too, so a broken render cannot pass as a fast one.
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -59,13 +61,20 @@ Args parseArgs(const std::vector<std::string>& args) {
     return a;
 }
 
+// A scene file by its extension, as loadScene chooses the format: .xml or .json in any case.
+bool isSceneFile(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext == ".xml" || ext == ".json";
+}
+
 std::vector<std::filesystem::path> sceneFiles(const std::string& dir) {
     if (!std::filesystem::is_directory(dir)) throw std::runtime_error(dir + ": not a directory");
     std::vector<std::filesystem::path> files;
     for (const auto& entry : std::filesystem::directory_iterator(dir))
-        if (entry.is_regular_file() && entry.path().extension() == ".xml") files.push_back(entry.path());
+        if (entry.is_regular_file() && isSceneFile(entry.path())) files.push_back(entry.path());
     std::sort(files.begin(), files.end());
-    if (files.empty()) throw std::runtime_error(dir + ": no .xml scenes");
+    if (files.empty()) throw std::runtime_error(dir + ": no .xml or .json scenes");
     return files;
 }
 

@@ -1,0 +1,160 @@
+// The course's JSON scenes (../shared/scenes/json, SOURCES.md there; issue 19) on both devices:
+//  - every file renders at 64x64, 1 rpp, and the GPU agrees with the CPU by agreement_support.h's
+//    rule, as the XML scenes do (gpu_cpu_agreement_test.cpp);
+//  - each JSON twin of an XML file (the same camera, lights, shaders and shapes; the loader's
+//    JsonTwins test in tests/scene/json_scenes_test.cpp checks the scene models field by field)
+//    renders bit-identically to its XML, on the CPU and on the GPU.
+// The twins that have an instructor reference render are checked against it in
+// tests/cpu/reference_render_test.cpp (suite JsonTwins), by the XML side's rule.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "agreement_support.h"
+#include "diagnostics.h"
+#include "scene_loader.h"
+#include "test_paths.h"
+
+namespace vkrt::test {
+namespace {
+
+// Corpus files the loader refuses today (SceneError), skipped by the agreement loop below. Another
+// branch makes them load; this list must become empty. Any other refused file fails the test, and
+// a listed file that loads is rendered and compared but fails the test until it leaves the list.
+// The reasons (tests/scene/json_scenes_test.cpp, expectedErrors):
+//  - sd20200409_mirroredScene.json: a shader whose "_name=" typo leaves it without a name;
+//  - sd20190404_oneOBJ_Al.json: refers to the undefined shader whiteMat;
+//  - LittleOfEverything.json: a box whose minPt "4.5.0 0.0 -7.5" is read as 4.5 0 0, above maxPt in z.
+const std::vector<std::string> kRefusedForNow = {
+    "sd20200409_mirroredScene.json",
+    "sd20190404_oneOBJ_Al.json",
+    "LittleOfEverything.json",
+};
+
+bool refusedForNow(const std::string& file) {
+    return std::find(kRefusedForNow.begin(), kRefusedForNow.end(), file) != kRefusedForNow.end();
+}
+
+// One test over all files, as for the XML scenes: a ctest entry per file would start a process and
+// a validated Vulkan device each, which costs more than the renders.
+TEST(GpuCpuAgreement, EveryJsonSceneAt64x64With1Rpp) {
+    VKRT_SKIP_WITHOUT(jsonSceneDir());
+    const std::vector<std::string> paths = scenesIn(jsonSceneDir(), ".json");
+    ASSERT_EQ(paths.size(), 58u) << jsonSceneDir();
+    std::size_t rendered = 0, skipped = 0;
+    for (const std::string& path : paths) {
+        SCOPED_TRACE(path);
+        const std::filesystem::path file(path);
+        const std::string name = file.filename().string();
+        Scene scene;
+        try {
+            Diagnostics diagnostics;  // each file's warnings are the loader tests' concern (tests/scene)
+            scene = loadScene(path, LoadOptions{}, diagnostics);
+        } catch (const SceneError& e) {
+            if (refusedForNow(name)) {
+                std::printf("[agreement] %-40s refused by the loader (listed in kRefusedForNow): %s\n",
+                            file.stem().string().c_str(), e.what());
+                ++skipped;
+            } else {
+                ADD_FAILURE() << name << " is refused by the loader and is not in kRefusedForNow: " << e.what();
+            }
+            continue;
+        }
+        if (refusedForNow(name)) ADD_FAILURE() << name << " loads now: remove it from kRefusedForNow";
+        try {
+            renderBothAndCompare(scene, file.stem().string(), small(64, 1));
+            ++rendered;
+        } catch (const std::exception& e) {
+            ADD_FAILURE() << path << ": " << e.what();
+        }
+    }
+    std::printf("[agreement] JSON corpus: %zu of %zu rendered on both devices, %zu refused by the loader (listed)\n",
+                rendered, paths.size(), skipped);
+    EXPECT_EQ(rendered + skipped, paths.size());
+}
+
+// --- JSON twins ---
+
+struct Twin {
+    const char* json;  // in ../shared/scenes/json
+    const char* xml;   // in ../shared/scenes/upstream
+    bool sameBackground;
+};
+
+// The pairs of tests/scene/json_scenes_test.cpp (JsonTwins.EachHoldsTheSceneOfItsXmlFile), from
+// SOURCES.md. Two differ in the background only: mirrorScene01.json drops mirrorTest2.xml's
+// bgColor "1 0 0", and sd20190224_spheres_1K.json has _bgColor "0.0 0.8 1.0"; those render with
+// the same background override (vkrt --bg), kTwinBackground, on both sides.
+const Twin kTwins[] = {{"oneSphere", "oneSphere", true},
+                       {"oneTriangle", "oneTriangle", true},
+                       {"threeTriangles", "threeTriangles", true},
+                       {"sd20180202_threeTriangles", "threeTriangles", true},
+                       {"PhongExp", "PhongExp", true},
+                       {"lambertianChalkSpheres", "lambertianChalkSpheres", true},
+                       {"simpleSphereScene", "simpleSphereScene", true},
+                       {"areaLight", "areaLight", true},
+                       {"glazeTest", "glazeTest", true},
+                       {"threeEggs", "threeEggs", true},
+                       {"sd20190425_threeEggs", "threeEggs", true},
+                       {"metallicDragons", "metallicDragons", true},
+                       {"sd20190425_metallicDragons", "metallicDragons", true},
+                       {"oneBox", "sd2019_oneBox", true},
+                       {"sd20190227_mirrorScene00", "mirrorTest", true},
+                       {"mirrorScene01", "mirrorTest2", false},
+                       {"sd20190224_spheres_1K", "spheres_1K", false}};
+
+// The instructor references' background (50/255 grey, upstream/reference/README.md).
+const glm::vec3 kTwinBackground(50.0f / 255.0f);
+
+// Pixels of a and b (same size) that differ in any channel, floats compared exactly.
+std::size_t differingPixels(const Image& a, const Image& b) {
+    EXPECT_EQ(a.width, b.width);
+    EXPECT_EQ(a.height, b.height);
+    if (a.pixels.size() != b.pixels.size()) return std::max(a.pixels.size(), b.pixels.size());
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) n += a.pixels[i] != b.pixels[i];
+    return n;
+}
+
+// Bit-identical, not merely close: the twins hold equal scene models (floats exactly), so every
+// step after the loader (trees, tables, kernels, samples) sees the same input.
+TEST(JsonTwins, RenderBitIdenticallyToTheirXmlOnBothDevices) {
+    VKRT_SKIP_WITHOUT(jsonSceneDir());
+    VKRT_SKIP_WITHOUT(upstreamDir());
+    for (const Twin& twin : kTwins) {
+        const std::string label = std::string(twin.json) + ".json vs " + twin.xml + ".xml";
+        SCOPED_TRACE(label);
+        try {
+            Diagnostics diagnostics;
+            const Scene xs = loadScene(upstreamDir() + "/" + twin.xml + ".xml", LoadOptions{}, diagnostics);
+            const Scene js = loadScene(jsonSceneDir() + "/" + twin.json + ".json", LoadOptions{}, diagnostics);
+            EXPECT_EQ(xs.background == js.background, twin.sameBackground) << "the list's background flag is stale";
+            RenderOptions options = small(64, 4);
+            if (!twin.sameBackground) options.background = kTwinBackground;
+            const DeviceImages x = renderBoth(xs, options);
+            const DeviceImages j = renderBoth(js, options);
+            const std::size_t cpuDiff = differingPixels(x.cpu, j.cpu);
+            const std::size_t gpuDiff = differingPixels(x.gpu, j.gpu);
+            std::printf("[twin] %-52s 64x64 4 rpp%s: cpu %zu, gpu %zu of %zu pixels differ\n", label.c_str(),
+                        twin.sameBackground ? "" : ", bg 50/255", cpuDiff, gpuDiff, x.cpu.pixels.size());
+            EXPECT_EQ(cpuDiff, 0u) << "CPU images differ";
+            EXPECT_EQ(gpuDiff, 0u) << "GPU images differ";
+            if (cpuDiff || gpuDiff) {
+                const std::string stem = artifactDir() + "/twin_" + twin.json;
+                writeImage(x.cpu, stem + "_xml_cpu.png");
+                writeImage(j.cpu, stem + "_json_cpu.png");
+                writeImage(x.gpu, stem + "_xml_gpu.png");
+                writeImage(j.gpu, stem + "_json_gpu.png");
+            }
+        } catch (const std::exception& e) {
+            ADD_FAILURE() << label << ": " << e.what();
+        }
+    }
+}
+
+}  // namespace
+}  // namespace vkrt::test
