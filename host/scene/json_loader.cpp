@@ -287,19 +287,19 @@ private:
     }
 
     // --- transforms (§5) ---
-    glm::mat4 transformOf(const JsonNode& node) {
+    std::vector<TransformStep> transformOf(const JsonNode& node) {
         const JsonNode xform = member(node, "xform");
         const JsonNode object = member(node, "transform");
         if (xform && object) context_.warnAtKey(object, "ignored, the shape's xform is used");
         if (xform) return parseXform(xform);
         if (object) return parseTransformObject(object);
-        return glm::mat4(1.0f);
+        return {};
     }
 
     // The ordered array: M = T0 * T1 * ... * Tn-1, the last listed acting first (as XML).
-    glm::mat4 parseXform(const JsonNode& node) {
+    std::vector<TransformStep> parseXform(const JsonNode& node) {
         if (!node->is_array()) context_.fail(node, std::string("expected an array, found ") + typeName(*node), quoted(context_, node));
-        glm::mat4 m(1.0f);
+        std::vector<TransformStep> steps;
         for (std::size_t i = 0; i < node->size(); ++i) {
             const JsonNode step{&(*node)[i], elementPath(node.path, i)};
             requireObject(context_, step);
@@ -311,46 +311,48 @@ private:
                 kind = "rotation";
             }
             if (kind == "translate") {
-                m = m * rules::translation(readVec3(context_, requireMember(context_, step, "amount")));
+                steps.push_back({TransformKind::Translate, readVec3(context_, requireMember(context_, step, "amount")), 0});
             } else if (kind == "scale") {
-                m = m * rules::scaling(readScale(requireMember(context_, step, "amount")));
+                steps.push_back({TransformKind::Scale, readScale(requireMember(context_, step, "amount")), 0});
             } else if (kind == "rotation") {
                 const int axis = readAxis(requireMember(context_, step, "axis"));
-                m = m * rules::axisRotation(axis, readScalar(context_, requireMember(context_, step, "amount")));
+                const float degrees = readScalar(context_, requireMember(context_, step, "amount"));
+                steps.push_back({TransformKind::Rotate, glm::vec3(degrees, 0.0f, 0.0f), axis});
             } else {
                 context_.warn(typeNode, "unknown transform type, ignored", kind);
             }
         }
-        return m;
+        return steps;
     }
 
     // The 2019 object {"translate", "rotate": {..} or [{..}, ..], "scale"}: xml2json kept one key
     // per kind, so the order between kinds is lost. Composed as M = T * R0 * R1 * ... * S, the
     // order of the XML files these came from (threeEggs.xml, metallicDragons.xml; §5).
-    glm::mat4 parseTransformObject(const JsonNode& node) {
+    std::vector<TransformStep> parseTransformObject(const JsonNode& node) {
         requireObject(context_, node);
         checkKeys(context_, node, {"translate", "rotate", "scale"}, {"name"});
-        glm::mat4 t(1.0f), r(1.0f), s(1.0f);
+        std::vector<TransformStep> steps;
         int kinds = 0;
         if (const JsonNode e = member(node, "translate")) {
-            t = rules::translation(readVec3(context_, e));
+            steps.push_back({TransformKind::Translate, readVec3(context_, e), 0});
             ++kinds;
         }
         if (const JsonNode e = member(node, "rotate")) {
             for (const JsonNode& rotation : objectsOf(context_, e)) {
                 checkKeys(context_, rotation, {}, {"axis", "angle"});
                 const int axis = readAxis(requireAttribute(context_, rotation, "axis"));
-                r = r * rules::axisRotation(axis, readScalar(context_, requireAttribute(context_, rotation, "angle")));
+                const float degrees = readScalar(context_, requireAttribute(context_, rotation, "angle"));
+                steps.push_back({TransformKind::Rotate, glm::vec3(degrees, 0.0f, 0.0f), axis});
             }
             ++kinds;
         }
         if (const JsonNode e = member(node, "scale")) {
-            s = rules::scaling(readScale(e));
+            steps.push_back({TransformKind::Scale, readScale(e), 0});
             ++kinds;
         }
         if (kinds > 1)
             context_.warn(node, "a transform object does not keep the order of its operations, composed as translate * rotate * scale");
-        return t * r * s;
+        return steps;
     }
 
     glm::vec3 readScale(const JsonNode& node) {
@@ -456,7 +458,8 @@ private:
             emitter.shape = parseShape(shape, *type, ShapeRole::Emitter);
         }
         emitter.name = emitter.shape.name;
-        emitter.objectToWorld = transformOf(shape);
+        emitter.steps = transformOf(shape);
+        emitter.objectToWorld = rules::composeTransform(emitter.steps);
         scene_.emitters.push_back(emitter);
         scene_.lights.push_back(emitterStandInLight(scene_, static_cast<int>(scene_.emitters.size()) - 1));
         if (fallbacks_.first(Fallback::ShapeLight)) context_.warn(node, fallbackProblem(Fallback::ShapeLight), emitter.name);
@@ -490,7 +493,8 @@ private:
             Instance instance;
             instance.name = shape.name;
             instance.prototype = static_cast<int>(scene_.prototypes.size());
-            instance.objectToWorld = transformOf(node);
+            instance.steps = transformOf(node);
+            instance.objectToWorld = rules::composeTransform(instance.steps);
             instance.where = shape.where;
             scene_.prototypes.push_back(std::move(shape));
             scene_.instances.push_back(instance);
@@ -511,7 +515,8 @@ private:
         if (instance.shaderOverride < 0 && isPlaceholder(shape.shader))
             context_.fail(node, "no shader: the prototype's shader reference is unresolved and the instance names none",
                           scene_.shaders[static_cast<std::size_t>(shape.shader)].name);
-        instance.objectToWorld = transformOf(node);
+        instance.steps = transformOf(node);
+        instance.objectToWorld = rules::composeTransform(instance.steps);
         instance.where = context_.locationOf(node);
         scene_.instances.push_back(instance);
     }

@@ -110,12 +110,25 @@ struct Shape {
     SourceLocation where;
 };
 
+// One operation of a transform as the file lists it. The model keeps the list beside the matrix
+// it composes to, so a written scene (vkrt convert) lists the same operations and loads back to the
+// same matrix bit for bit, which no decomposition of a sheared matrix could promise.
+enum class TransformKind { Translate, Scale, Rotate };
+
+struct TransformStep {
+    TransformKind kind = TransformKind::Translate;
+    glm::vec3 amount{0.0f};           // translate: offset; scale: factors; rotate: x = degrees
+    int axis = 0;                     // rotate: 0 = X, 1 = Y, 2 = Z
+};
+
 // A placement of a prototype (`<shape type="instance" id=...>`).
 struct Instance {
     std::string name;
     int prototype = 0;                // index into Scene::prototypes
     int shaderOverride = -1;          // index into Scene::shaders, or -1: the prototype's shader
-    glm::mat4 objectToWorld{1.0f};    // M = T0 * T1 * ... * Tn-1 (docs/XML_FORMAT.md §3.9)
+    std::vector<TransformStep> steps; // in file order
+    glm::mat4 objectToWorld{1.0f};    // rules::composeTransform(steps): M = T0 * T1 * ... * Tn-1
+                                      // (docs/XML_FORMAT.md §3.9)
     SourceLocation where;
 };
 
@@ -128,7 +141,8 @@ struct Emitter {
     glm::vec3 radiance{1.0f};
     Shape shape;                      // unused when prototype >= 0; shape.shader may be -1
     int prototype = -1;               // index into Scene::prototypes, or -1
-    glm::mat4 objectToWorld{1.0f};
+    std::vector<TransformStep> steps; // as Instance::steps
+    glm::mat4 objectToWorld{1.0f};    // rules::composeTransform(steps)
     SourceLocation where;
 };
 

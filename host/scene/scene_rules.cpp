@@ -155,6 +155,21 @@ std::string scaleProblem(const glm::vec3& s) {
     return s.x == 0.0f || s.y == 0.0f || s.z == 0.0f ? "a zero scale factor makes the transform singular" : "";
 }
 
+glm::mat4 stepMatrix(const TransformStep& step) {
+    switch (step.kind) {
+        case TransformKind::Translate: return translation(step.amount);
+        case TransformKind::Scale: return scaling(step.amount);
+        case TransformKind::Rotate: return axisRotation(step.axis, static_cast<double>(step.amount.x));
+    }
+    return glm::mat4(1.0f);
+}
+
+glm::mat4 composeTransform(const std::vector<TransformStep>& steps) {
+    glm::mat4 m(1.0f);
+    for (const TransformStep& step : steps) m = m * stepMatrix(step);
+    return m;
+}
+
 std::string resolveScenePath(const std::filesystem::path& sceneDirectory, const std::string& relative) {
     return (sceneDirectory / relative).lexically_normal().string();
 }

@@ -75,6 +75,9 @@ glm::mat4 axisRotation(int axis, double degrees);
 glm::mat4 translation(const glm::vec3& t);
 glm::mat4 scaling(const glm::vec3& s);
 std::string scaleProblem(const glm::vec3& s);  // a zero factor: the renderers need M^-1
+glm::mat4 stepMatrix(const TransformStep& step);
+// M = I * T0 * T1 * ... multiplied left to right, the order both loaders always used.
+glm::mat4 composeTransform(const std::vector<TransformStep>& steps);
 
 // --- files named by the scene ---
 // `relative` resolved against the scene file's directory (meshes, textures, environment maps).

@@ -181,8 +181,10 @@ private:
             instance.name = name;
             instance.prototype = found->second;
             instance.shaderOverride = shaderOf(node);
-            if (const pugi::xml_node transform = node.child("transform"))
-                instance.objectToWorld = parseTransform(context_, transform);
+            if (const pugi::xml_node transform = node.child("transform")) {
+                instance.steps = parseTransform(context_, transform);
+                instance.objectToWorld = rules::composeTransform(instance.steps);
+            }
             instance.where = {context_.source.path(), context_.source.lineOf(node)};
             scene_.instances.push_back(instance);
             return;
@@ -199,7 +201,8 @@ private:
             Instance instance;
             instance.name = name;
             instance.prototype = static_cast<int>(scene_.prototypes.size());
-            instance.objectToWorld = parseTransform(context_, transform);
+            instance.steps = parseTransform(context_, transform);
+            instance.objectToWorld = rules::composeTransform(instance.steps);
             instance.where = shape.where;
             scene_.prototypes.push_back(std::move(shape));
             scene_.instances.push_back(instance);
