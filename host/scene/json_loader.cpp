@@ -10,6 +10,7 @@
 #include "json_context.h"
 #include "json_source.h"
 #include "mesh_library.h"
+#include "missing_shaders.h"
 #include "render_fallbacks.h"
 #include "scene_rules.h"
 #include "texture_loading.h"
@@ -102,7 +103,14 @@ private:
 
     void defineShader(const JsonNode& node) {
         checkKeys(context_, node, jsonShaderParameters(), {"name", "type"});
-        const std::string name = readString(context_, requireAttribute(context_, node, "name"));
+        const JsonNode nameNode = attributeMember(context_, node, "name");
+        if (!nameNode) {
+            // sd20200409_mirroredScene.json's `"_name=": "green1"`: nothing can refer to it, and
+            // the shapes that meant it get the placeholder (with their own warnings).
+            context_.warn(node, "a shader without _name (or name) cannot be referred to, skipped");
+            return;
+        }
+        const std::string name = readString(context_, nameNode);
         const JsonNode typeNode = requireAttribute(context_, node, "type");
         const std::string typeText = readString(context_, typeNode);
         const std::optional<rules::ShaderTypeName> known = rules::shaderType(typeText);
@@ -196,33 +204,21 @@ private:
     }
 
     // --- shaders named by shapes ---
-    // The index `{"_ref": name}` names; -1 (after a warning, or an error) when it names nothing.
+    // The index `{"_ref": name}` names; a grey placeholder (after a warning) when it names nothing.
     int shaderOf(const JsonNode& reference, ShapeRole role) {
         requireObject(context_, reference);
         checkKeys(context_, reference, {}, {"ref"});
         const JsonNode nameNode = requireAttribute(context_, reference, "ref");
         const std::string name = readString(context_, nameNode);
         if (const auto found = shaderByName_.find(name); found != shaderByName_.end()) return found->second;
-        if (role != ShapeRole::Prototype) context_.fail(nameNode, "unresolved shader reference", name);
         // The corpus's prototypes name shaders that do not exist while every instance names its
-        // own (§3.5): a grey placeholder keeps the model whole, and an instance that would
-        // render with it is an error (placeInstance).
-        context_.warn(nameNode, "unresolved shader reference on a prototype, each of its instances must name a shader", name);
-        auto [it, inserted] = placeholderShaders_.try_emplace(name, static_cast<int>(scene_.shaders.size()));
-        if (inserted) {
-            Shader placeholder;
-            placeholder.name = name;
-            placeholder.diffuse = glm::vec3(rules::kMissingDiffuseGrey);
-            placeholder.where = context_.locationOf(nameNode);
-            scene_.shaders.push_back(placeholder);
-        }
-        return it->second;
-    }
-
-    bool isPlaceholder(int shader) const {
-        for (const auto& [name, index] : placeholderShaders_)
-            if (index == shader) return true;
-        return false;
+        // own (§3.5), so a prototype's warning says so; an instance that would render with the
+        // placeholder is an error (placeInstance).
+        if (role == ShapeRole::Prototype)
+            context_.warn(nameNode, "unresolved shader reference on a prototype, each of its instances must name a shader", name);
+        else
+            context_.warn(nameNode, rules::kUnresolvedShader, name);
+        return missingShaders_.placeholderFor(scene_, name, context_.locationOf(nameNode));
     }
 
     // --- geometry ---
@@ -262,8 +258,8 @@ private:
                 const JsonNode maxPt = requireMember(context_, node, "maxPt");
                 shape.minPt = readVec3(context_, minPt);
                 shape.maxPt = readVec3(context_, maxPt);
-                if (const std::string p = rules::boxProblem(shape.minPt, shape.maxPt); !p.empty())
-                    context_.fail(minPt, p, quoted(context_, minPt) + " > " + quoted(context_, maxPt));
+                if (const std::string p = rules::orderBoxCorners(shape.minPt, shape.maxPt); !p.empty())
+                    context_.warn(minPt, p, quoted(context_, minPt) + " > " + quoted(context_, maxPt));
                 break;
             }
             case ShapeType::Triangle: {
@@ -512,7 +508,7 @@ private:
         instance.prototype = *prototype;
         if (const JsonNode reference = member(node, "shader")) instance.shaderOverride = shaderOf(reference, ShapeRole::Loose);
         const Shape& shape = scene_.prototypes[static_cast<std::size_t>(instance.prototype)];
-        if (instance.shaderOverride < 0 && isPlaceholder(shape.shader))
+        if (instance.shaderOverride < 0 && missingShaders_.isPlaceholder(shape.shader))
             context_.fail(node, "no shader: the prototype's shader reference is unresolved and the instance names none",
                           scene_.shaders[static_cast<std::size_t>(shape.shader)].name);
         instance.steps = transformOf(node);
@@ -561,7 +557,7 @@ private:
     MeshLibrary meshes_;
     std::map<std::string, int> textures_;          // name -> index, kNoTexture for an unloadable file
     std::map<std::string, int> shaderByName_;
-    std::map<std::string, int> placeholderShaders_; // dangling prototype reference -> grey placeholder
+    MissingShaders missingShaders_;
     std::map<std::string, int> prototypeByName_;    // -1: a skipped (unknown-type) prototype
     FallbackNotes fallbacks_;
 };

@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -110,10 +111,15 @@ std::vector<std::string_view> geometryKeys(ShapeType type) {
 
 std::string radiusProblem(float radius) { return !(radius > 0.0f) ? "radius must be positive" : ""; }
 
-std::string boxProblem(const glm::vec3& minPt, const glm::vec3& maxPt) {
-    for (int axis = 0; axis < 3; ++axis)
-        if (minPt[axis] > maxPt[axis]) return std::string("greater than maxPt on the ") + "xyz"[axis] + " axis";
-    return "";
+std::string orderBoxCorners(glm::vec3& minPt, glm::vec3& maxPt) {
+    std::string axes;
+    for (int axis = 0; axis < 3; ++axis) {
+        if (!(minPt[axis] > maxPt[axis])) continue;
+        std::swap(minPt[axis], maxPt[axis]);
+        axes += std::string(axes.empty() ? "" : " and ") + "xyz"[axis];
+    }
+    if (axes.empty()) return "";
+    return "greater than maxPt on the " + axes + " axis, read with the corners swapped there";
 }
 
 bool isDegenerateTriangle(const glm::vec3& v0, const glm::vec3& v1, const glm::vec3& v2) {

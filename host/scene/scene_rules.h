@@ -55,6 +55,8 @@ std::string refractiveIndexProblem(float value);
 // The colour of a used-diffuse shader that gives neither a colour nor a texture; white under a
 // texture (so the texture shows as it is).
 inline constexpr float kMissingDiffuseGrey = 0.5f;
+// A shape's (or instance's, or shape light's) reference to a shader the file never defines.
+inline constexpr const char* kUnresolvedShader = "unresolved shader reference, shown as a grey Lambertian placeholder";
 // After parsing: 2011/12 files write a mirrored Blinn-Phong as BlinnPhong + mirrorCoef > 0.
 void resolveLegacyShaderType(Shader& shader);
 
@@ -62,7 +64,10 @@ void resolveLegacyShaderType(Shader& shader);
 std::optional<ShapeType> shapeType(std::string_view name);  // sphere, box, triangle, mesh
 std::vector<std::string_view> geometryKeys(ShapeType type); // center radius | minPt maxPt | v0 v1 v2 | file
 std::string radiusProblem(float radius);
-std::string boxProblem(const glm::vec3& minPt, const glm::vec3& maxPt);  // minPt > maxPt on an axis
+// minPt > maxPt on an axis (LittleOfEverything.json's `4.5.0` gives one): the corners are swapped
+// on each such axis, so the box is the one the two corners span, as a slab test that orders its
+// two distances reads it. Returns the warning naming the axes, "" when the corners were in order.
+std::string orderBoxCorners(glm::vec3& minPt, glm::vec3& maxPt);
 bool isDegenerateTriangle(const glm::vec3& v0, const glm::vec3& v1, const glm::vec3& v2);
 inline constexpr const char* kDegenerateTriangle = "degenerate triangle (zero area), it is never hit";
 

@@ -37,8 +37,8 @@ void parseGeometry(const ParseContext& context, pugi::xml_node node, Shape& shap
             const pugi::xml_node maxPt = requireChild(context, node, "maxPt");
             shape.minPt = parseVec3(context, minPt);
             shape.maxPt = parseVec3(context, maxPt);
-            if (const std::string p = rules::boxProblem(shape.minPt, shape.maxPt); !p.empty())
-                context.fail(minPt, p, elementText(minPt) + " > " + elementText(maxPt));
+            if (const std::string p = rules::orderBoxCorners(shape.minPt, shape.maxPt); !p.empty())
+                context.warn(minPt, p, elementText(minPt) + " > " + elementText(maxPt));
             break;
         }
         case ShapeType::Triangle: {

@@ -9,6 +9,7 @@
 
 #include "camera_parsing.h"
 #include "light_parsing.h"
+#include "missing_shaders.h"
 #include "parse_context.h"
 #include "render_fallbacks.h"
 #include "scene_rules.h"
@@ -125,9 +126,9 @@ private:
         if (reference.attribute("type")) return inlineShaders_.at(reference.internal_object());
         checkAttributes(context_, reference, {"ref"});
         const std::string name = requireAttribute(context_, reference, "ref");
-        const auto found = shaderByName_.find(name);
-        if (found == shaderByName_.end()) context_.fail(reference, "unresolved shader reference", name);
-        return found->second;
+        if (const auto found = shaderByName_.find(name); found != shaderByName_.end()) return found->second;
+        context_.warn(reference, rules::kUnresolvedShader, name);
+        return missingShaders_.placeholderFor(scene_, name, {context_.source.path(), context_.source.lineOf(reference)});
     }
 
     // Geometry with its shader, as a loose shape or a prototype.
@@ -256,6 +257,7 @@ private:
     MeshLibrary meshes_;
     TextureTable textures_;
     std::map<std::string, int> shaderByName_;
+    MissingShaders missingShaders_;
     std::map<const void*, int> inlineShaders_;   // inline <shader> node -> index into Scene::shaders
     std::map<std::string, int> prototypeByName_; // -1: a skipped (unknown-type) prototype
     FallbackNotes fallbacks_;

@@ -96,12 +96,20 @@ TEST_F(BadInput, NegativeAndZeroRadius) {
     }
 }
 
-TEST_F(BadInput, InvertedBox) {
+// As in JSON (json_bad_input_test.cpp): a warning with the corners swapped on that axis, refused
+// under --strict.
+TEST_F(BadInput, InvertedBoxIsSwappedWithAWarningAndRefusedUnderStrict) {
     const std::string xml = sceneWith(kShader +
         "<shape name=\"b\" type=\"box\"><shader ref=\"s\"/>\n<minPt>0 2 0</minPt>\n<maxPt>1 1 1</maxPt></shape>");
-    const Issue issue = errorOf(xml);
+    const Issue issue = errorOf(xml, /*strict=*/true);
     expectIssue(issue, lineOf(xml, "<minPt>"), "minPt", "0 2 0 > 1 1 1");
-    EXPECT_NE(issue.problem.find("y axis"), std::string::npos) << issue.problem;
+    EXPECT_EQ(issue.problem, "greater than maxPt on the y axis, read with the corners swapped there");
+    Diagnostics diagnostics;
+    const Scene scene = load(xml, diagnostics);
+    ASSERT_EQ(diagnostics.warnings().size(), 1u);
+    ASSERT_EQ(scene.shapes.size(), 1u);
+    EXPECT_EQ(scene.shapes[0].minPt, glm::vec3(0, 1, 0));
+    EXPECT_EQ(scene.shapes[0].maxPt, glm::vec3(1, 2, 1));
 }
 
 TEST_F(BadInput, AreaLightZeroNormalAndNonPositiveSizes) {
@@ -137,17 +145,26 @@ TEST_F(BadInput, ShapeWithoutType) {
     expectIssue(errorOf(sceneWith(kShader + "<shape name=\"x\"><shader ref=\"s\"/></shape>")), 5, "shape", "");
 }
 
-TEST_F(BadInput, UnresolvedShaderReference) {
+// As in JSON: a warning at the reference and a grey Lambertian placeholder; --strict refuses it.
+TEST_F(BadInput, UnresolvedShaderReferenceIsAGreyPlaceholderWithAWarning) {
     const std::string xml = sceneWith(kShader +
         "<shape type=\"sphere\"><center>0 0 0</center><radius>1</radius>\n<shader ref=\"Grey Mat\"/></shape>");
-    const Issue issue = errorOf(xml);
+    const Issue issue = errorOf(xml, /*strict=*/true);
     expectIssue(issue, lineOf(xml, "Grey Mat"), "shader", "Grey Mat");
-    EXPECT_NE(issue.problem.find("unresolved shader"), std::string::npos);
+    EXPECT_EQ(issue.problem, "unresolved shader reference, shown as a grey Lambertian placeholder");
+    Diagnostics diagnostics;
+    const Scene scene = load(xml, diagnostics);
+    ASSERT_EQ(diagnostics.warnings().size(), 1u);
+    ASSERT_EQ(scene.shapes.size(), 1u);
+    const Shader& placeholder = scene.shaders[scene.shapes[0].shader];
+    EXPECT_EQ(placeholder.name, "Grey Mat");
+    EXPECT_EQ(placeholder.type, ShaderType::Lambertian);
+    EXPECT_EQ(placeholder.diffuse, glm::vec3(0.5f));
     // ... also as an instance's override.
     const std::string instance = sceneWith(kShader +
         "<instance name=\"p\" type=\"sphere\"><shader ref=\"s\"/><center>0 0 0</center><radius>1</radius></instance>\n"
         "<shape type=\"instance\" id=\"p\">\n<shader ref=\"nope\"/></shape>");
-    expectIssue(errorOf(instance), lineOf(instance, "nope"), "shader", "nope");
+    expectIssue(errorOf(instance, true), lineOf(instance, "nope"), "shader", "nope");
 }
 
 TEST_F(BadInput, UnresolvedOrMissingInstanceId) {

@@ -33,7 +33,9 @@ const std::map<std::string, std::vector<Expected>>& expectedWarnings() {
         {"CornellBox_Specular.json",
          {{27, 12, "scene.shader[0]._type", "Diffuse rendered as Lambertian", "whiteLambertian"}}},
         {"LittleOfEverything.json",
-         {{307, 12, "scene.shape[10].minPt", "malformed number list, read as '4.5 0 0'", "4.5.0 0.0 -7.5"}}},
+         {{307, 12, "scene.shape[10].minPt", "malformed number list, read as '4.5 0 0'", "4.5.0 0.0 -7.5"},
+          {307, 12, "scene.shape[10].minPt", "greater than maxPt on the z axis, read with the corners swapped", "4.5.0 0.0 -7.5 > 5.5 7.2 -6.5"},
+          {6, 29, "scene.sceneParameters.envMapPrefix", "environment maps are not rendered", "images/reef_"}}},
         {"dielectric_dragon.json",
          {{61, 25, "scene.shader[0]._type", "Diffuse rendered as Lambertian", "greyTextured"}}},
         {"diffuseScene.json",
@@ -115,8 +117,13 @@ const std::map<std::string, std::vector<Expected>>& expectedWarnings() {
           {128, 16, "scene.shape[4].transform", "transform object does not keep", ""},
           {141, 16, "scene.shape[5].transform", "transform object does not keep", ""},
           {154, 16, "scene.shape[6].transform", "transform object does not keep", ""}}},
+        {"sd20190404_oneOBJ_Al.json",
+         {{24, 11, "scene.shape[0].shader._ref", "unresolved shader reference, shown as a grey", "whiteMat"}}},
         {"sd20200409_mirroredScene.json",
-         {{38, 3, "scene.shader[2]._name=", "unknown key", ""}}},
+         {{38, 3, "scene.shader[2]._name=", "unknown key", ""},
+          {37, 6, "scene.shader[2]", "a shader without _name (or name) cannot be referred to", ""},
+          {142, 15, "scene.shape[7].shader._ref", "unresolved shader reference, shown as a grey", "green1"},
+          {162, 15, "scene.shape[9].shader._ref", "unresolved shader reference, shown as a grey", "green1"}}},
         {"sd20210301_solarSystem.json",
          {{93, 3, "scene.shader[1].specular", "not used by a Lambertian shader", ""},
           {94, 3, "scene.shader[1].phongExp", "not used by a Lambertian shader", ""},
@@ -147,12 +154,10 @@ const std::map<std::string, std::vector<Expected>>& expectedWarnings() {
     return table;
 }
 
+// Files the loader refuses, with the error (after the warnings listed above). None today: the
+// three the course's parser aborts on load with warnings (host/scene/README.md).
 const std::map<std::string, Expected>& expectedErrors() {
-    static const std::map<std::string, Expected> table = {
-        {"LittleOfEverything.json", {307, 12, "scene.shape[10].minPt", "greater than maxPt on the z axis", "4.5.0 0.0 -7.5 > 5.5 7.2 -6.5"}},
-        {"sd20190404_oneOBJ_Al.json", {24, 11, "scene.shape[0].shader._ref", "unresolved shader reference", "whiteMat"}},
-        {"sd20200409_mirroredScene.json", {37, 6, "scene.shader[2]", "missing required key _name", ""}},
-    };
+    static const std::map<std::string, Expected> table = {};
     return table;
 }
 
@@ -219,7 +224,7 @@ TEST(JsonScenes, EachLoadsWithExactlyTheExpectedWarningsOrFailsWithTheExpectedEr
         ASSERT_EQ(got.size(), expected.size()) << "warnings: " << ::testing::PrintToString(diagnostics.messages());
         for (std::size_t i = 0; i < got.size(); ++i) expectMatches(got[i], expected[i], corpusPath(name));
     }
-    EXPECT_EQ(loaded, 55);
+    EXPECT_EQ(loaded, 58);
 }
 
 TEST(JsonScenes, StrictRejectsExactlyTheWarnedScenesAtTheFirstWarning) {
@@ -247,27 +252,36 @@ TEST(JsonScenes, StrictRejectsExactlyTheWarnedScenesAtTheFirstWarning) {
 }
 
 // The first JSON version of mirroredScene misspells its shader's name key ("_name=": "green1"),
-// so two shapes name a shader that does not exist. As in XML, a shader without a name and a
-// reference that resolves to nothing are errors; the error names the shader whose name is
-// missing (the typo's line), after a warning about the stray key itself.
-TEST(JsonScenes, MirroredScene2020IsRefusedAtTheShaderWhoseNameIsMisspelt) {
+// so two shapes name a shader that does not exist: the stray key, the nameless shader and each
+// dangling reference are warnings, and the two shapes show the grey placeholder (not green, so
+// the image says something is missing). --strict refuses it at the stray key.
+TEST(JsonScenes, MirroredScene2020LoadsWithTheMisspeltShaderSkippedAndItsShapesGrey) {
     SKIP_WITHOUT_JSON_CORPUS();
     const std::string path = corpusPath("sd20200409_mirroredScene.json");
     Diagnostics diagnostics;
-    try {
-        loadScene(path, {}, diagnostics);
-        FAIL() << "must be refused";
-    } catch (const SceneError& error) {
-        EXPECT_EQ(std::string(error.what()), path + ":37:6: scene.shader[2]: missing required key _name (or name)");
-    }
-    ASSERT_EQ(diagnostics.messages().size(), 1u);
+    const Scene scene = loadScene(path, {}, diagnostics);
+    ASSERT_EQ(diagnostics.messages().size(), 4u);
     EXPECT_EQ(diagnostics.messages()[0], path + ":38:3: scene.shader[2]._name=: unknown key, ignored");
-    // The fixed version (a0e3360) loads clean and its shapes use green1.
+    // The fixed version (a0e3360) loads clean; the same shapes use its green1.
     Diagnostics fixed;
-    const Scene scene = loadScene(corpusPath("mirroredScene.json"), {}, fixed);
+    const Scene good = loadScene(corpusPath("mirroredScene.json"), {}, fixed);
     EXPECT_TRUE(fixed.warnings().empty());
-    EXPECT_TRUE(std::any_of(scene.shapes.begin(), scene.shapes.end(),
-                            [&](const Shape& s) { return scene.shaders[s.shader].name == "green1"; }));
+    ASSERT_EQ(good.shapes.size(), scene.shapes.size());
+    int grey = 0;
+    for (std::size_t i = 0; i < scene.shapes.size(); ++i) {
+        const Shader& mine = scene.shaders[scene.shapes[i].shader];
+        const Shader& theirs = good.shaders[good.shapes[i].shader];
+        if (theirs.name != "green1") {
+            EXPECT_EQ(mine.name, theirs.name) << i;
+            continue;
+        }
+        EXPECT_EQ(mine.name, "green1") << i;
+        EXPECT_EQ(mine.type, ShaderType::Lambertian) << i;
+        EXPECT_EQ(mine.diffuse, glm::vec3(0.5f)) << i;
+        EXPECT_NE(theirs.diffuse, glm::vec3(0.5f)) << i;
+        ++grey;
+    }
+    EXPECT_EQ(grey, 2);
 }
 
 // --- JSON twins: files whose camera, lights, shaders and shapes equal an XML file (SOURCES.md) ---
