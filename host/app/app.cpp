@@ -65,7 +65,7 @@ DeviceRender renderOnCpu(const Scene& scene, const RenderOptions& options) {
     Image image = renderCpu(scene, accel, options, &stats);
     if (stats.nonFiniteSamples > 0)
         std::cerr << "warning: " << stats.nonFiniteSamples << " samples were NaN/Inf and were replaced by black\n";
-    return {std::move(image), "cpu (" + std::to_string(stats.threads) + " threads)", prepareSeconds, stats.seconds};
+    return {std::move(image), "cpu (" + std::to_string(stats.threads) + (stats.threads == 1 ? " thread)" : " threads)"), prepareSeconds, stats.seconds};
 }
 
 DeviceRender renderOnGpu(GpuRenderer& gpu, const Scene& scene, const RenderOptions& options, bool general) {

@@ -83,22 +83,10 @@ private:
         }
         const JsonNode source = requireMember(context_, node, "sourcefile");
         const std::string relative = readString(context_, source);
-        if (textures_.count(name)) {
-            context_.warn(node, "duplicate texture name, the first definition is kept", name);
-            return;
-        }
         const std::string path = rules::resolveScenePath(context_.sceneDirectory, relative);
-        std::string error;
-        std::optional<Texture> texture = loadTextureImage(path, error);
-        if (!texture) {
-            context_.warn(source, rules::missingTextureProblem(error, name), path);
-            textures_[name] = kNoTexture;
-            return;
-        }
-        texture->name = name;
-        texture->where = context_.locationOf(node);
-        textures_[name] = static_cast<int>(scene_.textures.size());
-        scene_.textures.push_back(std::move(*texture));
+        const TextureDefinition defined = vkrt::defineTexture(scene_, textures_, name, path, context_.locationOf(node));
+        if (defined.outcome == TextureDefinition::Duplicate) context_.warn(node, defined.problem, name);
+        if (defined.outcome == TextureDefinition::Missing) context_.warn(source, defined.problem, path);
     }
 
     void defineShader(const JsonNode& node) {
@@ -555,7 +543,7 @@ private:
     const JsonContext& context_;
     Scene& scene_;
     MeshLibrary meshes_;
-    std::map<std::string, int> textures_;          // name -> index, kNoTexture for an unloadable file
+    TextureTable textures_;
     std::map<std::string, int> shaderByName_;
     MissingShaders missingShaders_;
     std::map<std::string, int> prototypeByName_;    // -1: a skipped (unknown-type) prototype

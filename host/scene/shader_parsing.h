@@ -8,12 +8,9 @@
 
 #include "parse_context.h"
 #include "scene.h"
+#include "texture_loading.h"
 
 namespace vkrt {
-
-// Texture name -> index into Scene::textures, or kNoTexture for a texture that was defined but
-// could not be loaded (the shader then uses its tint colour alone).
-using TextureTable = std::map<std::string, int>;
 
 // Parses a shader definition. Type mapping (scene_rules.h): Phong -> BlinnPhong; BlinnPhong (or
 // Phong) with mirrorCoef > 0 -> BlinnPhongMirrored (2011/12 files); Diffuse (JSON era) ->

@@ -6,6 +6,8 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include "scene_rules.h"
+
 namespace vkrt {
 
 std::optional<Texture> loadTextureImage(const std::string& path, std::string& error) {
@@ -50,6 +52,22 @@ std::optional<Texture> loadTextureImage(const std::string& path, std::string& er
         texture.rgba8[i] = r | (g << 8) | (b << 16) | (a << 24);
     }
     return texture;
+}
+
+TextureDefinition defineTexture(Scene& scene, TextureTable& textures, const std::string& name, const std::string& path,
+                                const SourceLocation& where) {
+    if (textures.count(name)) return {TextureDefinition::Duplicate, "duplicate texture name, the first definition is kept"};
+    std::string error;
+    std::optional<Texture> texture = loadTextureImage(path, error);
+    if (!texture) {
+        textures[name] = kNoTexture;
+        return {TextureDefinition::Missing, rules::missingTextureProblem(error, name)};
+    }
+    texture->name = name;
+    texture->where = where;
+    textures[name] = static_cast<int>(scene.textures.size());
+    scene.textures.push_back(std::move(*texture));
+    return {};
 }
 
 }  // namespace vkrt

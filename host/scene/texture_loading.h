@@ -1,6 +1,7 @@
 // Image files -> Texture::rgba8 through OpenImageIO.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 
@@ -13,5 +14,20 @@ namespace vkrt {
 // bits by OpenImageIO (no colour-space change: textures are used linearly, as the course did).
 // Returns nullopt and sets `error` when the file is missing, unreadable or empty.
 std::optional<Texture> loadTextureImage(const std::string& path, std::string& error);
+
+// Texture name -> index into Scene::textures, or kNoTexture for a texture that was defined but
+// could not be loaded (the shader then uses its tint colour alone).
+using TextureTable = std::map<std::string, int>;
+
+// A texture definition, as both formats read it: the first definition of a name is kept, and a
+// file that cannot be loaded leaves the name defined as kNoTexture. The loader warns with
+// `problem`: at the definition for a Duplicate (value: the name), at the file name for a
+// Missing one (value: the resolved path).
+struct TextureDefinition {
+    enum Outcome { Added, Duplicate, Missing } outcome = Added;
+    std::string problem;
+};
+TextureDefinition defineTexture(Scene& scene, TextureTable& textures, const std::string& name, const std::string& path,
+                                const SourceLocation& where);
 
 }  // namespace vkrt

@@ -78,22 +78,11 @@ private:
         const pugi::xml_node source = requireChild(context_, node, "sourcefile");
         const std::string relative = trimmed(elementText(source));
         if (relative.empty()) context_.fail(source, "empty texture file name");
-        if (textures_.count(name)) {
-            context_.warn(node, "duplicate texture name, the first definition is kept", name);
-            return;
-        }
         const std::string path = rules::resolveScenePath(context_.sceneDirectory, relative);
-        std::string error;
-        std::optional<Texture> texture = loadTextureImage(path, error);
-        if (!texture) {
-            context_.warn(source, rules::missingTextureProblem(error, name), path);
-            textures_[name] = kNoTexture;
-            return;
-        }
-        texture->name = name;
-        texture->where = {context_.source.path(), context_.source.lineOf(node)};
-        textures_[name] = static_cast<int>(scene_.textures.size());
-        scene_.textures.push_back(std::move(*texture));
+        const TextureDefinition defined =
+            vkrt::defineTexture(scene_, textures_, name, path, {context_.source.path(), context_.source.lineOf(node)});
+        if (defined.outcome == TextureDefinition::Duplicate) context_.warn(node, defined.problem, name);
+        if (defined.outcome == TextureDefinition::Missing) context_.warn(source, defined.problem, path);
     }
 
     // Inline definitions (a full <shader name type> inside a shape) are registered globally like

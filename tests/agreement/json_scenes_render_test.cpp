@@ -16,6 +16,7 @@
 
 #include "agreement_support.h"
 #include "diagnostics.h"
+#include "json_twins.h"
 #include "scene_loader.h"
 #include "test_paths.h"
 
@@ -47,34 +48,6 @@ TEST(GpuCpuAgreement, EveryJsonSceneAt64x64With1Rpp) {
 
 // --- JSON twins ---
 
-struct Twin {
-    const char* json;  // in ../shared/scenes/json
-    const char* xml;   // in ../shared/scenes/upstream
-    bool sameBackground;
-};
-
-// The pairs of tests/scene/json_scenes_test.cpp (JsonTwins.EachHoldsTheSceneOfItsXmlFile), from
-// SOURCES.md. Two differ in the background only: mirrorScene01.json drops mirrorTest2.xml's
-// bgColor "1 0 0", and sd20190224_spheres_1K.json has _bgColor "0.0 0.8 1.0"; those render with
-// the same background override (vkrt --bg), kTwinBackground, on both sides.
-const Twin kTwins[] = {{"oneSphere", "oneSphere", true},
-                       {"oneTriangle", "oneTriangle", true},
-                       {"threeTriangles", "threeTriangles", true},
-                       {"sd20180202_threeTriangles", "threeTriangles", true},
-                       {"PhongExp", "PhongExp", true},
-                       {"lambertianChalkSpheres", "lambertianChalkSpheres", true},
-                       {"simpleSphereScene", "simpleSphereScene", true},
-                       {"areaLight", "areaLight", true},
-                       {"glazeTest", "glazeTest", true},
-                       {"threeEggs", "threeEggs", true},
-                       {"sd20190425_threeEggs", "threeEggs", true},
-                       {"metallicDragons", "metallicDragons", true},
-                       {"sd20190425_metallicDragons", "metallicDragons", true},
-                       {"oneBox", "sd2019_oneBox", true},
-                       {"sd20190227_mirrorScene00", "mirrorTest", true},
-                       {"mirrorScene01", "mirrorTest2", false},
-                       {"sd20190224_spheres_1K", "spheres_1K", false}};
-
 // The instructor references' background (50/255 grey, upstream/reference/README.md).
 const glm::vec3 kTwinBackground(50.0f / 255.0f);
 
@@ -93,7 +66,7 @@ std::size_t differingPixels(const Image& a, const Image& b) {
 TEST(JsonTwins, RenderBitIdenticallyToTheirXmlOnBothDevices) {
     VKRT_SKIP_WITHOUT(jsonSceneDir());
     VKRT_SKIP_WITHOUT(upstreamDir());
-    for (const Twin& twin : kTwins) {
+    for (const JsonTwin& twin : kJsonTwins) {
         const std::string label = std::string(twin.json) + ".json vs " + twin.xml + ".xml";
         SCOPED_TRACE(label);
         try {

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <vector>
 
+#include "json_twins.h"
 #include "scene_test_files.h"
 #include "test_paths.h"
 
@@ -356,37 +357,15 @@ void expectSameScene(const Scene& xs, const Scene& js) {
     }
 }
 
-struct Twin {
-    std::string json, xml;
-    bool sameBackground;
-};
-
 TEST(JsonTwins, EachHoldsTheSceneOfItsXmlFile) {
     SKIP_WITHOUT_JSON_CORPUS();
     // The 2019 transform objects (sd20190425_*) give their XML's matrices: translate * rotate *
     // scale is the order those XML files list (threeEggs' right egg: translate, rotate X, scale).
-    const Twin twins[] = {{"oneSphere", "oneSphere", true},
-                          {"oneTriangle", "oneTriangle", true},
-                          {"threeTriangles", "threeTriangles", true},
-                          {"sd20180202_threeTriangles", "threeTriangles", true},
-                          {"PhongExp", "PhongExp", true},
-                          {"lambertianChalkSpheres", "lambertianChalkSpheres", true},
-                          {"simpleSphereScene", "simpleSphereScene", true},
-                          {"areaLight", "areaLight", true},
-                          {"glazeTest", "glazeTest", true},
-                          {"threeEggs", "threeEggs", true},
-                          {"sd20190425_threeEggs", "threeEggs", true},
-                          {"metallicDragons", "metallicDragons", true},
-                          {"sd20190425_metallicDragons", "metallicDragons", true},
-                          {"oneBox", "sd2019_oneBox", true},
-                          {"sd20190227_mirrorScene00", "mirrorTest", true},
-                          {"mirrorScene01", "mirrorTest2", false},
-                          {"sd20190224_spheres_1K", "spheres_1K", false}};
-    for (const Twin& twin : twins) {
-        SCOPED_TRACE(twin.json + ".json vs " + twin.xml + ".xml");
+    for (const JsonTwin& twin : kJsonTwins) {
+        SCOPED_TRACE(std::string(twin.json) + ".json vs " + twin.xml + ".xml");
         Diagnostics diagnostics;
         const Scene xs = loadScene(upstreamDir() + "/" + twin.xml + ".xml", {}, diagnostics);
-        const Scene js = loadScene(corpusPath(twin.json + ".json"), {}, diagnostics);
+        const Scene js = loadScene(corpusPath(std::string(twin.json) + ".json"), {}, diagnostics);
         expectSameScene(xs, js);
         EXPECT_EQ(xs.background == js.background, twin.sameBackground);
     }
