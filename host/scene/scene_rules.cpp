@@ -122,6 +122,13 @@ std::string orderBoxCorners(glm::vec3& minPt, glm::vec3& maxPt) {
     return "greater than maxPt on the " + axes + " axis, read with the corners swapped there";
 }
 
+PrototypeDefinition definePrototypeName(std::map<std::string, int>& indexByName, const std::string& name,
+                                        std::optional<ShapeType> type, int nextIndex) {
+    if (indexByName.count(name)) return PrototypeDefinition::Duplicate;
+    indexByName[name] = type ? nextIndex : -1;
+    return type ? PrototypeDefinition::Added : PrototypeDefinition::UnknownType;
+}
+
 bool isDegenerateTriangle(const glm::vec3& v0, const glm::vec3& v1, const glm::vec3& v2) {
     return glm::length(glm::cross(v1 - v0, v2 - v0)) == 0.0f;
 }

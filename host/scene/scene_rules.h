@@ -6,6 +6,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -69,6 +70,14 @@ std::string radiusProblem(float radius);
 // two distances reads it. Returns the warning naming the axes, "" when the corners were in order.
 std::string orderBoxCorners(glm::vec3& minPt, glm::vec3& maxPt);
 bool isDegenerateTriangle(const glm::vec3& v0, const glm::vec3& v1, const glm::vec3& v2);
+// A prototype definition (XML <instance>, JSON instance[]), as both formats register it: the first
+// definition of a name is kept (Duplicate), and an unknown type registers the name as skipped (-1)
+// so its instances are skipped with a warning; Added means the next prototype index is the name's.
+enum class PrototypeDefinition { Added, Duplicate, UnknownType };
+PrototypeDefinition definePrototypeName(std::map<std::string, int>& indexByName, const std::string& name,
+                                        std::optional<ShapeType> type, int nextIndex);
+inline constexpr const char* kDuplicatePrototype = "duplicate instance name, the first definition is kept";
+inline constexpr const char* kUnknownPrototype = "unknown prototype type, skipped";
 inline constexpr const char* kDegenerateTriangle = "degenerate triangle (zero area), it is never hit";
 
 // --- transforms: M = T0 * T1 * ... * Tn-1, so the last listed operation acts first ---

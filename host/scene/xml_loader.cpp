@@ -140,18 +140,13 @@ private:
         checkAttributes(context_, node, {"type"});
         const std::string name = requireAttribute(context_, node, "name");
         const std::string typeName = requireAttribute(context_, node, "type");
-        if (prototypeByName_.count(name)) {
-            context_.warn(node, "duplicate instance name, the first definition is kept", name);
-            return;
-        }
         const std::optional<ShapeType> type = rules::shapeType(typeName);
-        if (!type) {
-            context_.warn(node, "unknown prototype type, skipped", typeName);
-            prototypeByName_[name] = -1;
-            return;
+        const int next = static_cast<int>(scene_.prototypes.size());
+        switch (rules::definePrototypeName(prototypeByName_, name, type, next)) {
+            case rules::PrototypeDefinition::Duplicate: return context_.warn(node, rules::kDuplicatePrototype, name);
+            case rules::PrototypeDefinition::UnknownType: return context_.warn(node, rules::kUnknownPrototype, typeName);
+            case rules::PrototypeDefinition::Added: scene_.prototypes.push_back(parseShape(node, *type));
         }
-        prototypeByName_[name] = static_cast<int>(scene_.prototypes.size());
-        scene_.prototypes.push_back(parseShape(node, *type));
     }
 
     void placeShape(pugi::xml_node node) {
