@@ -468,17 +468,10 @@ private:
         }
         Shape shape = parseShape(node, *type, ShapeRole::Loose);
         if (member(node, "xform") || member(node, "transform")) {
-            // A transformed plain shape is an instance of a prototype of its own (as XML).
-            Instance instance;
-            instance.name = shape.name;
-            instance.prototype = static_cast<int>(scene_.prototypes.size());
-            instance.steps = transformOf(node);
-            instance.objectToWorld = rules::composeTransform(instance.steps);
-            instance.where = shape.where;
-            scene_.prototypes.push_back(std::move(shape));
-            scene_.instances.push_back(instance);
+            const std::vector<TransformStep> steps = transformOf(node);
+            rules::addPlainShape(scene_, std::move(shape), &steps);
         } else {
-            scene_.shapes.push_back(std::move(shape));
+            rules::addPlainShape(scene_, std::move(shape), nullptr);
         }
     }
 

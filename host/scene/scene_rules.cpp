@@ -183,6 +183,21 @@ glm::mat4 composeTransform(const std::vector<TransformStep>& steps) {
     return m;
 }
 
+void addPlainShape(Scene& scene, Shape shape, const std::vector<TransformStep>* steps) {
+    if (!steps) {
+        scene.shapes.push_back(std::move(shape));
+        return;
+    }
+    Instance instance;
+    instance.name = shape.name;
+    instance.prototype = static_cast<int>(scene.prototypes.size());
+    instance.steps = *steps;
+    instance.objectToWorld = composeTransform(instance.steps);
+    instance.where = shape.where;
+    scene.prototypes.push_back(std::move(shape));
+    scene.instances.push_back(std::move(instance));
+}
+
 std::string resolveScenePath(const std::filesystem::path& sceneDirectory, const std::string& relative) {
     return (sceneDirectory / relative).lexically_normal().string();
 }

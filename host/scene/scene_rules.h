@@ -93,6 +93,10 @@ glm::mat4 stepMatrix(const TransformStep& step);
 // M = I * T0 * T1 * ... multiplied left to right, the order both loaders always used.
 glm::mat4 composeTransform(const std::vector<TransformStep>& steps);
 
+// A plain shape: in Scene::shapes, or, when the file gives it a transform (`steps` not null), a
+// prototype of its own placed by one instance, so the renderers keep one transformed-shape path.
+void addPlainShape(Scene& scene, Shape shape, const std::vector<TransformStep>* steps);
+
 // --- files named by the scene ---
 // `relative` resolved against the scene file's directory (meshes, textures, environment maps).
 std::string resolveScenePath(const std::filesystem::path& sceneDirectory, const std::string& relative);

@@ -182,17 +182,10 @@ private:
         }
         Shape shape = parseShape(node, *type);
         if (const pugi::xml_node transform = node.child("transform")) {
-            // A transformed plain shape is an instance of a prototype of its own.
-            Instance instance;
-            instance.name = name;
-            instance.prototype = static_cast<int>(scene_.prototypes.size());
-            instance.steps = parseTransform(context_, transform);
-            instance.objectToWorld = rules::composeTransform(instance.steps);
-            instance.where = shape.where;
-            scene_.prototypes.push_back(std::move(shape));
-            scene_.instances.push_back(instance);
+            const std::vector<TransformStep> steps = parseTransform(context_, transform);
+            rules::addPlainShape(scene_, std::move(shape), &steps);
         } else {
-            scene_.shapes.push_back(std::move(shape));
+            rules::addPlainShape(scene_, std::move(shape), nullptr);
         }
     }
 
