@@ -31,6 +31,13 @@ std::optional<Texture> loadTextureImage(const std::string& path, std::string& er
         return std::nullopt;
     }
     const std::size_t texels = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
+    // Checked before anything is allocated: a 69-byte PNG may claim 40000 x 40000, which would
+    // zero-fill gigabytes before the decoder finds no data.
+    if (texels > kMaxTextureTexels) {
+        error = "texture image claims " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                " texels, more than the " + std::to_string(kMaxTextureTexels) + " (128 MiB as RGBA8) vkrt loads";
+        return std::nullopt;
+    }
     std::vector<std::uint8_t> pixels(texels * static_cast<std::size_t>(channels));
     if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, pixels.data())) {
         error = "cannot decode texture image (" + input->geterror() + ")";
@@ -57,6 +64,17 @@ std::optional<Texture> loadTextureImage(const std::string& path, std::string& er
 TextureDefinition defineTexture(Scene& scene, TextureTable& textures, const std::string& name, const std::string& path,
                                 const SourceLocation& where) {
     if (textures.count(name)) return {TextureDefinition::Duplicate, "duplicate texture name, the first definition is kept"};
+    // One decode per file: the texture a file gave an earlier name is shared (100 names of one
+    // 2K image would otherwise decode it 100 times and hold 100 copies).
+    std::error_code ec;
+    const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, ec);
+    for (std::size_t i = 0; i < scene.textures.size() && !ec; ++i) {
+        std::error_code other;
+        if (std::filesystem::weakly_canonical(scene.textures[i].path, other) == canonical && !other) {
+            textures[name] = static_cast<int>(i);
+            return {};
+        }
+    }
     std::string error;
     std::optional<Texture> texture = loadTextureImage(path, error);
     if (!texture) {

@@ -1,6 +1,7 @@
 // Image files -> Texture::rgba8 through OpenImageIO.
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <optional>
 #include <string>
@@ -9,18 +10,24 @@
 
 namespace vkrt {
 
+// 2^25 texels: 128 MiB as RGBA8, one storage binding on lavapipe (the course's largest image is
+// 2048 x 2048, 1/8 of it).
+inline constexpr std::size_t kMaxTextureTexels = std::size_t(1) << 25;
+
 // Reads any image OpenImageIO can read (PNG, JPEG, EXR, ...): 1 channel is grey, 2 grey+alpha,
 // 3 RGB, 4+ RGBA (extra channels dropped); alpha defaults to opaque. Values are converted to 8
 // bits by OpenImageIO (no colour-space change: textures are used linearly, as the course did).
-// Returns nullopt and sets `error` when the file is missing, unreadable or empty.
+// Returns nullopt and sets `error` when the file is missing, unreadable, empty or claims more
+// than kMaxTextureTexels (checked from the header, before any texel is allocated).
 std::optional<Texture> loadTextureImage(const std::string& path, std::string& error);
 
 // Texture name -> index into Scene::textures, or kNoTexture for a texture that was defined but
 // could not be loaded (the shader then uses its tint colour alone).
 using TextureTable = std::map<std::string, int>;
 
-// A texture definition, as both formats read it: the first definition of a name is kept, and a
-// file that cannot be loaded leaves the name defined as kNoTexture. The loader warns with
+// A texture definition, as both formats read it: the first definition of a name is kept, a file an
+// earlier name loaded is shared (same canonical path), and a file that cannot be loaded leaves the
+// name defined as kNoTexture. The loader warns with
 // `problem`: at the definition for a Duplicate (value: the name), at the file name for a
 // Missing one (value: the resolved path).
 struct TextureDefinition {

@@ -1,6 +1,9 @@
 // <texture> definitions, their bindings, and image decoding (checked against OpenImageIO read
 // independently in the test).
+#include <chrono>
 #include <cstdint>
+#include <fstream>
+#include <iterator>
 #include <vector>
 
 #include <OpenImageIO/imagebuf.h>
@@ -162,6 +165,83 @@ TEST(UpstreamTexture, CalibrationImageMatchesOpenImageIO) {
     }
     EXPECT_GT(compared, 100);
     EXPECT_GT(distinct, 10);  // the image is not uniform, so row/column mix-ups would show
+}
+
+// One file named by many <texture> elements (or by different spellings of its path) is decoded
+// once and shared: 100 names give one Texture, so a scene cannot multiply a 2K image's decode
+// time and memory by repeating its name.
+TEST_F(TextureParsing, OneFileNamedByManyTexturesIsDecodedOnceAndShared) {
+    writePng((dir / "images/a.png").string(), 3);
+    writePng((dir / "images/b.png").string(), 1);
+    std::string body;
+    for (int i = 0; i < 100; ++i)
+        body += "<texture name=\"t" + std::to_string(i) + "\" type=\"image\"><sourcefile>" +
+                (i % 2 ? "images/a.png" : "images/../images/./a.png") + "</sourcefile></texture>\n";
+    body += "<texture name=\"other\" type=\"image\"><sourcefile>images/b.png</sourcefile></texture>\n";
+    body += "<shader name=\"first\" type=\"Lambertian\"><diffuse tex=\"t0\">1 1 1</diffuse></shader>\n";
+    body += "<shader name=\"last\" type=\"Lambertian\"><diffuse tex=\"t99\">1 1 1</diffuse></shader>\n";
+    body += "<shader name=\"b\" type=\"Lambertian\"><diffuse tex=\"other\">1 1 1</diffuse></shader>";
+    const Scene scene = loadClean(sceneWith(body));
+    ASSERT_EQ(scene.textures.size(), 2u);
+    EXPECT_EQ(scene.textures[0].name, "t0");
+    EXPECT_EQ(scene.shaders[0].diffuseTexture, 0);
+    EXPECT_EQ(scene.shaders[1].diffuseTexture, 0);
+    EXPECT_EQ(scene.shaders[2].diffuseTexture, 1);
+    EXPECT_EQ(scene.textures[1].rgba8[1], packed(15, 15, 15, 255));
+}
+
+// The PNG CRC (ISO 3309), so the test can write a header libpng accepts.
+std::uint32_t pngCrc(const std::vector<std::uint8_t>& bytes, std::size_t begin, std::size_t end) {
+    std::uint32_t crc = 0xffffffffu;
+    for (std::size_t i = begin; i < end; ++i) {
+        crc ^= bytes[i];
+        for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+    }
+    return crc ^ 0xffffffffu;
+}
+
+// A real 2x2 PNG whose IHDR is rewritten to claim width x height (the CRC recomputed).
+std::string writePngClaiming(const std::string& path, std::uint32_t width, std::uint32_t height) {
+    writePng(path, 3);
+    std::ifstream in(path, std::ios::binary);
+    std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    in.close();
+    // 8-byte signature, then the IHDR chunk: length (4), "IHDR" (4), width (4), height (4), 5 more, CRC.
+    const auto put = [&](std::size_t at, std::uint32_t v) {
+        for (int k = 0; k < 4; ++k) bytes[at + k] = static_cast<std::uint8_t>(v >> (24 - 8 * k));
+    };
+    put(16, width);
+    put(20, height);
+    put(29, pngCrc(bytes, 12, 29));
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    return path;
+}
+
+// A header that claims 40000 x 40000 (1.6e9 texels) is refused from the header, before any texel
+// is allocated: with the decode attempted it zero-filled 4.8 GB and took 34 s. The bound of 5 s
+// is generous (the refusal reads one header); the warning names the size and the texture.
+TEST_F(TextureParsing, AHeaderClaimingHugeDimensionsIsRefusedBeforeAllocating) {
+    const std::string path = writePngClaiming((dir / "huge.png").string(), 40000, 40000);
+    std::string error;
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_FALSE(loadTextureImage(path, error));
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_LT(seconds, 5.0);
+    EXPECT_NE(error.find("claims 40000x40000 texels, more than the 33554432"), std::string::npos) << error;
+    // Through a scene: a warning at the file name, the shader keeps its tint.
+    const std::string xml = sceneWith(
+        "<texture name=\"big\" type=\"image\">\n<sourcefile>huge.png</sourcefile>\n</texture>\n"
+        "<shader name=\"s\" type=\"Lambertian\"><diffuse tex=\"big\">0.2 0.3 0.4</diffuse></shader>");
+    Diagnostics diagnostics;
+    const Scene scene = load(xml, diagnostics);
+    EXPECT_EQ(scene.shaders[0].diffuseTexture, kNoTexture);
+    ASSERT_EQ(diagnostics.warnings().size(), 1u);
+    expectIssue(diagnostics.warnings()[0], lineOf(xml, "<sourcefile>"), "sourcefile", path);
+    EXPECT_NE(diagnostics.warnings()[0].problem.find("texture 'big'"), std::string::npos);
+    // Just inside the cap the header is accepted and decoding fails on the missing data instead.
+    std::string inside;
+    EXPECT_FALSE(loadTextureImage(writePngClaiming((dir / "tall.png").string(), 1, 1 << 25), inside));
+    EXPECT_EQ(inside.find("claims"), std::string::npos) << inside;
 }
 
 }  // namespace
