@@ -45,6 +45,8 @@ Camera parseCamera(const ParseContext& context, pugi::xml_node node) {
         if (const std::string p = rules::imagePlaneWidthProblem(camera.imagePlaneWidth); !p.empty())
             context.fail(w, p, elementText(w));
     }
+    rules::conditionCamera(camera);
+    if (const std::string p = rules::narrowFieldProblem(camera); !p.empty()) context.warn(node, p, camera.name);
     return camera;
 }
 

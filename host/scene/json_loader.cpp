@@ -378,6 +378,8 @@ private:
                 context_.fail(f, p, quoted(context_, f));
         }
         if (const JsonNode w = member(node, "imagePlaneWidth")) camera.imagePlaneWidth = readChecked(w, rules::imagePlaneWidthProblem);
+        rules::conditionCamera(camera);
+        if (const std::string p = rules::narrowFieldProblem(camera); !p.empty()) context_.warn(node, p, camera.name);
         return camera;
     }
 

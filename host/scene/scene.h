@@ -23,7 +23,8 @@ struct Camera {
     std::string name;
     CameraType type = CameraType::Perspective;
     glm::vec3 position{0.0f};
-    glm::vec3 gaze{0.0f, 0.0f, -1.0f};  // lookatPoint - position, or viewDir; not normalised, non-zero
+    glm::vec3 gaze{0.0f, 0.0f, -1.0f};  // lookatPoint - position, or viewDir; not normalised, non-zero,
+                                        // scaled into float's comfort range (rules::conditionCamera)
     float focalLength = 1.0f;
     float imagePlaneWidth = 0.5f;
     SourceLocation where;

@@ -1,5 +1,6 @@
 #include "scene_rules.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <utility>
@@ -28,6 +29,34 @@ std::string focalLengthProblem(CameraType type, float focalLength) {
 }
 
 std::string imagePlaneWidthProblem(float width) { return !(width > 0.0f) ? "image plane width must be positive" : ""; }
+
+namespace {
+// The power of two that brings `largest` (> 0, finite) into [1, 2); 1 inside [2^-16, 2^16]. In
+// double: a subnormal float's scale (up to 2^149) does not fit a float.
+double conditioningScale(float largest) {
+    if (largest >= 0x1p-16f && largest <= 0x1p16f) return 1.0;
+    int exponent = 0;
+    std::frexp(largest, &exponent);  // largest = m * 2^exponent, m in [0.5, 1)
+    return std::ldexp(1.0, 1 - exponent);
+}
+}  // namespace
+
+// Products by a power of two are exact in double, and so is the conversion back (the result is
+// a normal float in [1, 2) or below it by the components' ratios).
+void conditionCamera(Camera& camera) {
+    const glm::vec3 g = glm::abs(camera.gaze);
+    camera.gaze = glm::vec3(glm::dvec3(camera.gaze) * conditioningScale(std::max(g.x, std::max(g.y, g.z))));
+    if (camera.type != CameraType::Perspective) return;
+    const double scale = conditioningScale(std::max(camera.focalLength, camera.imagePlaneWidth));
+    camera.focalLength = static_cast<float>(camera.focalLength * scale);
+    camera.imagePlaneWidth = static_cast<float>(camera.imagePlaneWidth * scale);
+}
+
+std::string narrowFieldProblem(const Camera& camera) {
+    return camera.type == CameraType::Perspective && camera.focalLength / camera.imagePlaneWidth > 0x1p22f
+               ? "the field of view is narrower than float directions resolve (focalLength / imagePlaneWidth above 2^22): every pixel shows the same colour"
+               : "";
+}
 
 std::optional<LightType> lightType(std::string_view name) {
     if (name == "point") return LightType::Point;

@@ -25,6 +25,15 @@ std::string viewDirProblem(const glm::vec3& viewDir);
 std::string lookatProblem(const glm::vec3& gaze);  // gaze = lookatPoint - position
 std::string focalLengthProblem(CameraType type, float focalLength);
 std::string imagePlaneWidthProblem(float width);
+// After the checks above: a gaze whose largest component lies outside [2^-16, 2^16] is scaled by a
+// power of two (exact, so its direction does not change) into [1, 2), and so is a perspective
+// camera's (focalLength, imagePlaneWidth) pair, which only their ratio matters for. The renderers
+// normalise in float, where |v|^2 of viewDir 0 0 -1e-25 underflows and focalLength 1e20 overflows
+// (both rendered pure background). Scenes inside the range are left bit for bit as they were.
+void conditionCamera(Camera& camera);
+// focalLength / imagePlaneWidth above 2^22: neighbouring pixels' directions differ by less than
+// float resolves, so the image is one colour. A warning (the image is what float can show).
+std::string narrowFieldProblem(const Camera& camera);
 
 // --- lights ---
 std::optional<LightType> lightType(std::string_view name);  // point, area

@@ -41,6 +41,43 @@ TEST_F(CameraParsing, LookatPointOverridesViewDirWhicheverComesFirst) {
     EXPECT_EQ(scene.cameras[0].gaze, glm::vec3(0, -6, -4));
 }
 
+// Extreme but valid camera values (issue 22): the direction and the focalLength / imagePlaneWidth
+// ratio are what the image depends on, so the loader scales them by powers of two (exact) into the
+// range where float normalisation neither underflows nor overflows; inside it nothing changes.
+TEST_F(CameraParsing, ExtremeViewDirAndFocalLengthAreScaledExactlyIntoFloatRange) {
+    const auto camera = [&](const std::string& children) {
+        return loadClean(sceneWithCameras("<camera><position>0 0 0</position>" + children + "</camera>")).cameras[0];
+    };
+    for (const char* tiny : {"0 0 -1e-25", "0 0 -1e-30", "0 0 -1e20", "0 0 -1e-40"}) {
+        SCOPED_TRACE(tiny);
+        const Camera c = camera(std::string("<viewDir>") + tiny + "</viewDir>");
+        EXPECT_EQ(c.gaze.x, 0.0f);
+        EXPECT_EQ(c.gaze.y, 0.0f);
+        EXPECT_LE(c.gaze.z, -1.0f);  // largest component in [1, 2)
+        EXPECT_GT(c.gaze.z, -2.0f);
+        EXPECT_EQ(glm::normalize(c.gaze), glm::vec3(0, 0, -1));
+    }
+    // A direction keeps its components' ratios exactly (a power of two scales every bit pattern).
+    const Camera skew = camera("<viewDir>3e-30 -1.5e-30 -6e-30</viewDir>");
+    EXPECT_EQ(skew.gaze.x / skew.gaze.z, 3e-30f / -6e-30f);
+    EXPECT_EQ(skew.gaze.y / skew.gaze.z, -1.5e-30f / -6e-30f);
+    const Camera far = camera("<viewDir>0 0 -1</viewDir><focalLength>1e20</focalLength><imagePlaneWidth>5e19</imagePlaneWidth>");
+    EXPECT_EQ(far.focalLength / far.imagePlaneWidth, 1e20f / 5e19f);
+    EXPECT_LT(far.focalLength, 2.0f);
+    // Inside the range, bit for bit as written.
+    const Camera plain = camera("<viewDir>0 -1.5 -3.0</viewDir><focalLength>0.40</focalLength><imagePlaneWidth>0.25</imagePlaneWidth>");
+    EXPECT_EQ(plain.gaze, glm::vec3(0, -1.5f, -3));
+    EXPECT_EQ(plain.focalLength, 0.4f);
+    EXPECT_EQ(plain.imagePlaneWidth, 0.25f);
+    // A field narrower than float resolves is loaded with a warning naming it.
+    Diagnostics diagnostics;
+    load(sceneWithCameras("<camera name=\"tele\"><position>0 0 0</position><viewDir>0 0 -1</viewDir>"
+                          "<focalLength>1e20</focalLength></camera>"), diagnostics);
+    ASSERT_EQ(diagnostics.warnings().size(), 1u);
+    EXPECT_NE(diagnostics.warnings()[0].problem.find("narrower than float directions resolve"), std::string::npos);
+    EXPECT_EQ(diagnostics.warnings()[0].value, "tele");
+}
+
 TEST_F(CameraParsing, OrthographicIsSupported) {
     const Scene scene = loadClean(sceneWithCameras(
         "<camera type=\"orthographic\"><position>0 0 5</position><viewDir>0 0 -1</viewDir><imagePlaneWidth>4</imagePlaneWidth></camera>"));

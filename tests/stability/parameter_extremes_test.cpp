@@ -13,6 +13,7 @@
 #include "invariance_scene.h"
 #include "region_checks.h"
 #include "scene_building.h"
+#include "scene_rules.h"
 
 namespace vkrt::stability {
 namespace {
@@ -114,6 +115,34 @@ TEST_P(HugeRoughness, DirectionsBelowTheSurfaceAreBlack) {
 
 INSTANTIATE_TEST_SUITE_P(Values, HugeRoughness, ::testing::Values(10.0f, 1e4f, 1e30f),
                          [](const auto& info) { return "Roughness" + std::to_string(info.index); });
+
+// viewDir 0 0 -1e-25 names the same direction as 0 0 -1, and focalLength 1e20 over imagePlaneWidth
+// 5e19 the same field as 2 over 1. With the loader's conditioning (rules::conditionCamera) the
+// extreme directions render bit-identically to the plain camera on both devices (an axis gaze
+// normalises to exactly (0,0,-1) at any length). The focal pair keeps its ratio exactly but lands
+// on 2m and m with m = 1.0842 (5e19's mantissa), not 2 and 1, so the ray directions round
+// differently by an ulp: no pixel may move by an 8-bit step. Without the conditioning |v|^2
+// underflows or overflows in float and every pixel was background.
+TEST(CameraExtremes, TinyViewDirAndHugeFocalLengthRenderTheSameImage) {
+    Scene plain = mirrorScene(mirror());
+    plain.cameras[0] = perspective({0.0f, 1.5f, 5.0f}, {0.0f, 1.5f, 4.0f}, 2.0f, 1.0f);
+    const BothImages reference = renderBoth(plain, smallOptions(48, 32, 1));
+    for (const auto& [gazeScale, focalScale] : {std::pair{1e-25f, 1.0f}, std::pair{1e20f, 1.0f}, std::pair{1.0f, 5e19f}}) {
+        SCOPED_TRACE(::testing::Message() << "gaze x" << gazeScale << ", focal and width x" << focalScale);
+        Scene extreme = plain;
+        extreme.cameras[0].gaze *= gazeScale;
+        extreme.cameras[0].focalLength *= focalScale;
+        extreme.cameras[0].imagePlaneWidth *= focalScale;
+        rules::conditionCamera(extreme.cameras[0]);
+        const BothImages got = renderBoth(extreme, smallOptions(48, 32, 1));
+        EXPECT_EQ(distance(got.cpu, reference.cpu).maxSteps, 0);
+        EXPECT_EQ(distance(got.gpu, reference.gpu).maxSteps, 0);
+        if (focalScale == 1.0f) {
+            EXPECT_TRUE(got.cpu.pixels == reference.cpu.pixels);
+            EXPECT_TRUE(got.gpu.pixels == reference.gpu.pixels);
+        }
+    }
+}
 
 TEST(AreaLight, OfSizeZeroIsExactlyThePointLight) {
     // RENDERING.md §4: a sample point is c + (su - 0.5) * 0 * T + ... = c, and each sample carries
