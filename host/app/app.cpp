@@ -201,6 +201,8 @@ int runVkrt(int argc, const char* const* argv) {
     ParseResult parsed = parseCommandLine(argc, argv);
     if (!parsed.commandLine) return parsed.exitCode;
     CommandLine cl = *parsed.commandLine;
+    for (const std::string& notice : cl.notices) std::cerr << "note: " << notice << "\n";
+    if (cl.verbose && cl.command != Command::ListDevices) std::cerr << describeSettings(cl);
     cl.render.cancel = installInterruptHandler();
     try {
         switch (cl.command) {

@@ -1,5 +1,6 @@
 #include "command_line.h"
 
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
@@ -27,10 +28,10 @@ glm::vec3 parseColour(const std::string& text) {
 // The options every command shares (what the image is, which GPU, how to run).
 void addImageOptions(CLI::App& app, CommandLine& cl, std::string& bg) {
     app.add_option("scene", cl.scenePath, "Scene file (XML, UMD course format)");
-    app.add_option("-i,--input", cl.scenePath, "Scene file (the course's spelling)");
+    app.add_option("-i,--input,--inputfile", cl.scenePath, "Scene file (the course's spelling)");
     app.add_option("-w,--width", cl.render.width, "Image width in pixels")->check(CLI::Range(1, 1 << 16));
     app.add_option("-h,--height", cl.render.height, "Image height in pixels")->check(CLI::Range(1, 1 << 16));
-    app.add_option("-k,--max-depth", cl.render.maxDepth, "Reflection/refraction recursion depth")
+    app.add_option("-k,--max-depth,--recursionDepth", cl.render.maxDepth, "Reflection/refraction recursion depth")
         ->check(CLI::Range(0, 64));
     app.add_option("--light-samples", cl.render.lightSamples, "Area-light samples per pixel sample")
         ->check(CLI::Range(1, 4096));
@@ -41,7 +42,10 @@ void addImageOptions(CLI::App& app, CommandLine& cl, std::string& bg) {
     app.add_option("--bg", bg, "Background colour r,g,b (overrides the scene's bgColor)");
     app.add_option("--camera", cl.camera, "Which camera of the scene (index; default: the one <sceneParameters> names, else the first)")
         ->check(CLI::NonNegativeNumber);
-    app.add_option("--threads", cl.render.threads, "CPU threads (default: all cores)")->check(CLI::Range(0, 1024));
+    app.add_option("-n,--numcpus,--threads", cl.render.threads,
+                   "CPU threads of the CPU reference and of host-side work, the course's -n (default 0: all cores); "
+                   "a GPU render runs on the Vulkan device")
+        ->check(CLI::Range(0, 1024));
     app.add_option("--gpu", cl.gpuIndex, "Vulkan device index (see --list-devices)")->check(CLI::NonNegativeNumber);
     app.add_flag("--validate", cl.validate, "Enable the Vulkan validation layers");
     app.add_option("--shader-dir", cl.shaderDir,
@@ -90,7 +94,101 @@ void addSweepOptions(CLI::App& app, CommandLine& cl, std::string& bg, SweepText&
         ->check(CLI::PositiveNumber);
 }
 
+// The flags of the course's handleGraphicsArgs (umdcs4212/starterCode src/handleGraphicsArgs.cpp)
+// that have no vkrt spelling of their own; -i -o -w -h -n -r -k are aliases of vkrt's options.
+struct CourseText {
+    std::optional<double> aspect;
+    std::string depthOfField, split;
+    std::optional<int> windowWidth, windowHeight;
+};
+
+void addCourseOptions(CLI::App& app, CommandLine& cl, CourseText& course) {
+    app.add_option("-a,--aspect", course.aspect,
+                   "Aspect ratio width/height, the course's -a: sets the side not given, height = round(width / R) "
+                   "(width: -w or 250), or width = round(height * R) when only -h is given; with both -w and -h it "
+                   "must match them")
+        ->check(CLI::Range(1.0 / (1 << 16), double(1 << 16)));
+    app.add_flag("-v,--verbose", cl.verbose, "Print the settings before running (the course's verbose output)")
+        ->excludes("--quiet");
+    app.add_option("-d,--depth", course.depthOfField,
+                   "The course's depth-of-field focus distance: refused, depth of field is not supported yet (issue 21)")
+        ->expected(0, 1);
+    app.add_option("-s,--split", course.split,
+                   "The course's BVH split method: accepted and ignored, vkrt always builds binned-SAH BVHs (docs/BVH.md)");
+    app.add_option("-x,--winwidth", course.windowWidth,
+                   "The course's preview window width: accepted and ignored, vkrt has no preview window")
+        ->check(CLI::PositiveNumber);
+    app.add_option("-y,--winheight", course.windowHeight,
+                   "The course's preview window height: accepted and ignored, vkrt has no preview window")
+        ->check(CLI::PositiveNumber);
+}
+
+std::string number(double value) {
+    std::ostringstream out;
+    out << value;
+    return out.str();
+}
+
+// -a R fixes the side the command line leaves open, so the image is R times as wide as it is high
+// (the camera's image plane follows the pixel grid, docs/XML_FORMAT.md §3.3). Both sides given: R must
+// agree with them up to the rounding of one side, otherwise the command line contradicts itself.
+void applyAspect(RenderOptions& render, double aspect, bool widthGiven, bool heightGiven) {
+    const std::string flag = "-a " + number(aspect);
+    const auto side = [&](double exact, const char* name) {
+        const long rounded = std::lround(exact);
+        if (rounded < 1 || rounded > (1 << 16))
+            throw CLI::ValidationError(flag, std::string("gives an image ") + name + " of " + number(exact) +
+                                                 " pixels, outside 1..65536");
+        return static_cast<int>(rounded);
+    };
+    const int w = render.width, h = render.height;
+    if (widthGiven && heightGiven) {
+        if (h != std::lround(w / aspect) && w != std::lround(h * aspect))
+            throw CLI::ValidationError(flag, "contradicts -w " + std::to_string(w) + " -h " + std::to_string(h) +
+                                                 " (aspect " + number(double(w) / h) +
+                                                 "); give -a with only one of -w and -h, or leave -a out");
+    } else if (heightGiven) {
+        render.width = side(h * aspect, "width");
+    } else {
+        render.height = side(w / aspect, "height");
+    }
+}
+
+// After parsing: refuse -d, resolve -a, and say which course flags vkrt cannot honour.
+void applyCourseOptions(const CLI::App& app, CommandLine& cl, const CourseText& course) {
+    if (app.count("-d") > 0)
+        throw CLI::ValidationError("-d" + (course.depthOfField.empty() ? "" : " " + course.depthOfField),
+                                   "depth of field is not supported yet (issue 21); leave -d out to render in focus");
+    if (course.aspect) applyAspect(cl.render, *course.aspect, app.count("-w") > 0, app.count("-h") > 0);
+    if (app.count("-s") > 0)
+        cl.notices.push_back("-s " + course.split + " ignored: vkrt always builds binned-SAH BVHs (docs/BVH.md), "
+                             "the split method is not selectable");
+    if (course.windowWidth)
+        cl.notices.push_back("-x " + std::to_string(*course.windowWidth) +
+                             " ignored: it sizes the course's preview window, and vkrt has none (it writes the image only)");
+    if (course.windowHeight)
+        cl.notices.push_back("-y " + std::to_string(*course.windowHeight) +
+                             " ignored: it sizes the course's preview window, and vkrt has none (it writes the image only)");
+}
+
 }  // namespace
+
+std::string describeSettings(const CommandLine& cl) {
+    const RenderOptions& r = cl.render;
+    std::ostringstream out;
+    out << "scene: " << cl.scenePath << "\n";
+    if (cl.command == Command::Render) out << "output: " << cl.outputPath << "\n";
+    if (cl.command == Command::Compare) out << "heat map: " << (cl.heatMapPath.empty() ? "none" : cl.heatMapPath) << "\n";
+    if (cl.command == Command::Sweep) out << "sweep out: " << cl.sweep.outDir << "\n";
+    out << "image: " << r.width << "x" << r.height << " (aspect " << number(double(r.width) / r.height) << ")\n";
+    if (cl.command != Command::Sweep) out << "rays per pixel: " << r.samplesPerPixel << " (" << samplerName(r.sampler) << ")\n";
+    out << "recursion depth: " << r.maxDepth << "\n";
+    out << "CPU threads: " << (r.threads == 0 ? std::string("all cores") : std::to_string(r.threads)) << "\n";
+    out << "seed: " << r.seed << "\n";
+    if (cl.command != Command::Sweep)
+        out << "device: " << (cl.device == DeviceChoice::Cpu ? "cpu" : cl.device == DeviceChoice::Gpu ? "gpu" : "auto") << "\n";
+    return out.str();
+}
 
 ParseResult parseCommandLine(int argc, const char* const* argv) {
     CommandLine cl;
@@ -110,7 +208,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
                            "Usage: vkrt scene.xml [options]  |  vkrt compare scene.xml [options]  |  "
                            "vkrt sweep scene.xml --out DIR [options]  |  vkrt --list-devices",
                  compare ? "vkrt compare" : sweep ? "vkrt sweep" : "vkrt"};
-    app.set_help_flag("--help", "Print this help and exit");
+    app.set_help_flag("-?,--help", "Print this help and exit (-h is the height, as in the course)");
     app.option_defaults()->always_capture_default();
     std::string bg, sampler = "jittered", device = "auto";
     SweepText sweepText;
@@ -119,6 +217,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
     } else {
         addRenderOptions(app, cl, bg, sampler, device);
     }
+    CourseText course;
+    addCourseOptions(app, cl, course);
     bool listDevices = false;
     if (compare) {
         app.add_option("-o,--output", cl.heatMapPath,
@@ -128,7 +228,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
                      "256) by a per-pixel z-test against the CPU's sample variance (alpha 0.01, Sidak; pass when "
                      ">= 99.75% of values pass; exit code 3 on failure)");
     } else if (!sweep) {
-        app.add_option("-o,--output", cl.outputPath, "Output image: .png, .exr (linear float), .jpg or .ppm");
+        app.add_option("-o,--output,--outputfile", cl.outputPath, "Output image: .png, .exr (linear float), .jpg or .ppm");
         app.add_flag("--list-devices", listDevices, "List the Vulkan devices and exit");
     }
 
@@ -139,6 +239,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
             cl.command = Command::ListDevices;
             return {cl, 0};
         }
+        applyCourseOptions(app, cl, course);
         if (cl.scenePath.empty()) throw CLI::RequiredError("a scene file (vkrt scene.xml)");
         if (!bg.empty()) cl.render.background = parseColour(bg);
         cl.render.sampler = parseSampler(sampler);  // CLI11 checked the name

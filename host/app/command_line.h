@@ -1,5 +1,6 @@
 // The vkrt command line: `vkrt scene.xml [options]`, `vkrt compare scene.xml [options]`,
-// `vkrt --list-devices`, plus the course's -i -o -w -h -r -k spellings.
+// `vkrt --list-devices`, plus every flag of the course's handleGraphicsArgs (-i -o -w -h -a -n -r -k
+// -v -s -x -y -?; -d is refused until depth of field exists).
 #pragma once
 
 #include <optional>
@@ -29,7 +30,12 @@ struct CommandLine {
     std::optional<int> camera;    // --camera; default: the scene's <sceneParameters><camera>, else the first
     bool statistical = false;     // compare --stat: z-test of GPU and CPU renders with different seeds
     study::SweepOptions sweep;    // sweep: everything but the render options above (copied in by the parser)
+    bool verbose = false;         // -v: print the settings before running (the course's verbose output)
+    std::vector<std::string> notices;  // one line per course flag accepted but ignored, and why
 };
+
+// The settings a run will use, one per line (what -v prints).
+std::string describeSettings(const CommandLine& cl);
 
 // Parses argv. Returns the command line, or the exit code to stop with (0 after --help,
 // 2 after a usage error; the message has been printed).

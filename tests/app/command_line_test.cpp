@@ -1,0 +1,188 @@
+// The course's command line (issue 19): every flag of handleGraphicsArgs (umdcs4212/starterCode
+// src/handleGraphicsArgs.cpp) parses to the vkrt option with the course's meaning, -d is refused
+// naming depth of field, and bad values are refused.
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "command_line.h"
+
+namespace vkrt {
+namespace {
+
+struct Parsed {
+    ParseResult result;
+    std::string err, out;  // what the parser printed
+};
+
+Parsed parse(std::vector<std::string> args) {
+    args.insert(args.begin(), "vkrt");
+    std::vector<const char*> argv;
+    for (const std::string& a : args) argv.push_back(a.c_str());
+    testing::internal::CaptureStderr();
+    testing::internal::CaptureStdout();
+    Parsed p{parseCommandLine(static_cast<int>(argv.size()), argv.data()), "", ""};
+    p.out = testing::internal::GetCapturedStdout();
+    p.err = testing::internal::GetCapturedStderr();
+    return p;
+}
+
+CommandLine parseOk(const std::vector<std::string>& args) {
+    Parsed p = parse(args);
+    EXPECT_TRUE(p.result.commandLine.has_value()) << p.err;
+    return p.result.commandLine.value_or(CommandLine{});
+}
+
+// A usage error: no command line, exit code 2, and the message printed; returns the message.
+std::string parseRefused(const std::vector<std::string>& args) {
+    Parsed p = parse(args);
+    EXPECT_FALSE(p.result.commandLine.has_value());
+    EXPECT_EQ(p.result.exitCode, 2);
+    return p.err;
+}
+
+TEST(CourseCommandLine, TheCourseScriptSpellingsSetTheirOptions) {
+    const CommandLine cl = parseOk({"-i", "in.xml", "-o", "out.png", "-w", "320", "-h", "200", "-r", "9", "-k", "3"});
+    EXPECT_EQ(cl.scenePath, "in.xml");
+    EXPECT_EQ(cl.outputPath, "out.png");
+    EXPECT_EQ(cl.render.width, 320);
+    EXPECT_EQ(cl.render.height, 200);
+    EXPECT_EQ(cl.render.samplesPerPixel, 9);
+    EXPECT_EQ(cl.render.maxDepth, 3);
+}
+
+TEST(CourseCommandLine, LongCourseNamesAreAliases) {
+    const CommandLine cl = parseOk({"--inputfile", "in.xml", "--outputfile", "out.exr", "--numcpus", "3",
+                                    "--recursionDepth", "2", "--aspect", "2", "--verbose"});
+    EXPECT_EQ(cl.scenePath, "in.xml");
+    EXPECT_EQ(cl.outputPath, "out.exr");
+    EXPECT_EQ(cl.render.threads, 3);
+    EXPECT_EQ(cl.render.maxDepth, 2);
+    EXPECT_EQ(cl.render.height, 125);
+    EXPECT_TRUE(cl.verbose);
+}
+
+TEST(CourseCommandLine, NumCpusSetsTheCpuThreadCount) {
+    EXPECT_EQ(parseOk({"s.xml", "-n", "2"}).render.threads, 2);
+    EXPECT_EQ(parseOk({"s.xml", "--threads", "5"}).render.threads, 5);
+    EXPECT_EQ(parseOk({"s.xml"}).render.threads, 0);  // all cores
+    EXPECT_NE(parseRefused({"s.xml", "-n", "two"}), "");
+    EXPECT_NE(parseRefused({"s.xml", "-n", "-1"}), "");
+}
+
+TEST(CourseCommandLine, CpuCountIsGivenOnce) {
+    EXPECT_NE(parseRefused({"s.xml", "-n", "2", "--threads", "3"}), "");
+}
+
+TEST(CourseCommandLine, AspectSetsTheHeightFromTheWidth) {
+    const CommandLine cl = parseOk({"s.xml", "-w", "500", "-a", "1.7777778"});
+    EXPECT_EQ(cl.render.width, 500);
+    EXPECT_EQ(cl.render.height, 281);  // 500 / (16/9) = 281.25
+}
+
+TEST(CourseCommandLine, AspectAloneKeepsTheDefaultWidth) {
+    const CommandLine cl = parseOk({"s.xml", "-a", "0.5"});
+    EXPECT_EQ(cl.render.width, 250);
+    EXPECT_EQ(cl.render.height, 500);
+}
+
+TEST(CourseCommandLine, AspectSetsTheWidthFromTheHeightWhenOnlyHeightIsGiven) {
+    const CommandLine cl = parseOk({"s.xml", "-h", "300", "-a", "1.5"});
+    EXPECT_EQ(cl.render.width, 450);
+    EXPECT_EQ(cl.render.height, 300);
+}
+
+TEST(CourseCommandLine, AspectThatMatchesBothSidesIsAccepted) {
+    const CommandLine cl = parseOk({"s.xml", "-w", "500", "-h", "281", "-a", "1.7777778"});
+    EXPECT_EQ(cl.render.width, 500);
+    EXPECT_EQ(cl.render.height, 281);
+}
+
+TEST(CourseCommandLine, AspectThatContradictsBothSidesIsRefused) {
+    const std::string err = parseRefused({"s.xml", "-w", "500", "-h", "500", "-a", "2"});
+    EXPECT_NE(err.find("-a 2"), std::string::npos) << err;
+    EXPECT_NE(err.find("contradicts -w 500 -h 500"), std::string::npos) << err;
+}
+
+TEST(CourseCommandLine, BadAspectsAreRefused) {
+    EXPECT_NE(parseRefused({"s.xml", "-a", "0"}), "");
+    EXPECT_NE(parseRefused({"s.xml", "-a", "-1"}), "");
+    EXPECT_NE(parseRefused({"s.xml", "-a", "wide"}), "");
+    const std::string err = parseRefused({"s.xml", "-w", "60000", "-a", "0.5"});
+    EXPECT_NE(err.find("height of 120000"), std::string::npos) << err;
+}
+
+TEST(CourseCommandLine, VerboseIsAFlagAndExcludesQuiet) {
+    EXPECT_TRUE(parseOk({"s.xml", "-v"}).verbose);
+    EXPECT_FALSE(parseOk({"s.xml"}).verbose);
+    EXPECT_NE(parseRefused({"s.xml", "-v", "-q"}), "");
+}
+
+TEST(CourseCommandLine, VerboseSettingsNameTheResolvedValues) {
+    const std::string text = describeSettings(parseOk({"s.xml", "-w", "400", "-a", "2", "-n", "3", "-r", "4", "-k", "5"}));
+    EXPECT_NE(text.find("scene: s.xml"), std::string::npos) << text;
+    EXPECT_NE(text.find("output: s.png"), std::string::npos) << text;
+    EXPECT_NE(text.find("image: 400x200 (aspect 2)"), std::string::npos) << text;
+    EXPECT_NE(text.find("rays per pixel: 4 (jittered)"), std::string::npos) << text;
+    EXPECT_NE(text.find("recursion depth: 5"), std::string::npos) << text;
+    EXPECT_NE(text.find("CPU threads: 3"), std::string::npos) << text;
+}
+
+TEST(CourseCommandLine, DepthOfFieldIsRefusedNamingIt) {
+    for (const std::vector<std::string>& args : {std::vector<std::string>{"s.xml", "-d", "5"},
+                                                 std::vector<std::string>{"s.xml", "--depth", "2.5"},
+                                                 std::vector<std::string>{"s.xml", "-d"},
+                                                 std::vector<std::string>{"-d", "0"}}) {
+        const std::string err = parseRefused(args);
+        EXPECT_NE(err.find("depth of field is not supported yet (issue 21)"), std::string::npos) << err;
+    }
+    EXPECT_NE(parseRefused({"s.xml", "-d", "5"}).find("-d 5:"), std::string::npos);
+}
+
+TEST(CourseCommandLine, SplitMethodIsAcceptedWithANotice) {
+    const CommandLine cl = parseOk({"s.xml", "-s", "objectMedian"});
+    ASSERT_EQ(cl.notices.size(), 1u);
+    EXPECT_NE(cl.notices[0].find("-s objectMedian ignored"), std::string::npos) << cl.notices[0];
+    EXPECT_NE(cl.notices[0].find("binned-SAH"), std::string::npos) << cl.notices[0];
+    EXPECT_EQ(parseOk({"s.xml", "--split", "SAH"}).notices.size(), 1u);
+}
+
+TEST(CourseCommandLine, PreviewWindowSizesAreAcceptedWithANotice) {
+    const CommandLine cl = parseOk({"s.xml", "-x", "640", "-y", "480"});
+    ASSERT_EQ(cl.notices.size(), 2u);
+    EXPECT_NE(cl.notices[0].find("-x 640 ignored"), std::string::npos) << cl.notices[0];
+    EXPECT_NE(cl.notices[1].find("-y 480 ignored"), std::string::npos) << cl.notices[1];
+    EXPECT_NE(cl.notices[0].find("preview window"), std::string::npos) << cl.notices[0];
+    EXPECT_EQ(cl.render.width, 250);  // the image keeps its size
+    EXPECT_EQ(parseOk({"s.xml", "--winwidth", "10", "--winheight", "20"}).notices.size(), 2u);
+    EXPECT_NE(parseRefused({"s.xml", "-x", "0"}), "");
+    EXPECT_NE(parseRefused({"s.xml", "-y", "tall"}), "");
+}
+
+TEST(CourseCommandLine, HonouredFlagsGiveNoNotice) {
+    EXPECT_TRUE(parseOk({"-i", "s.xml", "-n", "2", "-a", "2", "-v"}).notices.empty());
+}
+
+TEST(CourseCommandLine, QuestionMarkPrintsTheHelpAndExitsZero) {
+    const Parsed p = parse({"-?"});
+    EXPECT_FALSE(p.result.commandLine.has_value());
+    EXPECT_EQ(p.result.exitCode, 0);
+    for (const char* flag : {"-i", "-o", "-w", "-h", "-a", "-n", "-r", "-k", "-v", "-d", "-s", "-x", "-y", "-?"})
+        EXPECT_NE(p.out.find(std::string(flag) + ","), std::string::npos) << flag << " missing from the help:\n" << p.out;
+    EXPECT_NE(p.out.find("depth of field is not supported yet"), std::string::npos) << p.out;
+}
+
+TEST(CourseCommandLine, CourseFlagsWorkInCompareAndSweep) {
+    const CommandLine compare = parseOk({"compare", "s.xml", "-n", "2", "-a", "2"});
+    EXPECT_EQ(compare.command, Command::Compare);
+    EXPECT_EQ(compare.render.threads, 2);
+    EXPECT_EQ(compare.render.height, 125);
+    const CommandLine sweep = parseOk({"sweep", "s.xml", "--out", "d", "-h", "100", "-a", "2", "-v"});
+    EXPECT_EQ(sweep.render.width, 200);
+    EXPECT_TRUE(sweep.verbose);
+    EXPECT_NE(parseRefused({"sweep", "s.xml", "--out", "d", "-d", "1"}).find("depth of field"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace vkrt
