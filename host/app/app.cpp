@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -105,8 +106,17 @@ std::unique_ptr<GpuRenderer> openGpu(const CommandLine& cl) {
     }
 }
 
+// Before the render, so that a long render is not thrown away for a bad -o.
+void checkOutputBeforeRendering(const std::string& output, const std::string& scenePath) {
+    checkImageOutputPath(output);
+    std::error_code ec;
+    if (std::filesystem::equivalent(output, scenePath, ec))
+        throw std::runtime_error(output + ": is the scene file itself; choose another output name (-o)");
+}
+
 int runRender(CommandLine& cl) {
     const auto start = std::chrono::steady_clock::now();
+    checkOutputBeforeRendering(cl.outputPath, cl.scenePath);
     const Scene scene = loadWithWarnings(cl);
     std::unique_ptr<GpuRenderer> gpu = openGpu(cl);
     DeviceRender result;
@@ -166,6 +176,7 @@ int runSweep(CommandLine& cl) {
 }
 
 int runCompare(CommandLine& cl) {
+    if (!cl.heatMapPath.empty()) checkOutputBeforeRendering(cl.heatMapPath, cl.scenePath);
     if (cl.statistical) return runStatisticalCompare(cl);
     const Scene scene = loadWithWarnings(cl);
     // Each device prepares and renders as `vkrt scene.xml` would, from its own tree: the times are
@@ -191,7 +202,8 @@ int runCompare(CommandLine& cl) {
 }
 
 int runListDevices() {
-    std::cout << formatDeviceList(listDevices());
+    std::cout << formatDeviceList(listDevices()) << std::flush;
+    if (!std::cout) throw std::runtime_error("cannot write the device list to standard output");
     return 0;
 }
 

@@ -240,6 +240,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
             return {cl, 0};
         }
         applyCourseOptions(app, cl, course);
+        if (!compare && !sweep && app.count("--output") > 0 && cl.outputPath.empty())
+            throw CLI::ValidationError("-o", "the output path is empty (give a file name such as out.png, or leave -o out)");
         if (cl.scenePath.empty()) throw CLI::RequiredError("a scene file (vkrt scene.xml)");
         if (!bg.empty()) cl.render.background = parseColour(bg);
         cl.render.sampler = parseSampler(sampler);  // CLI11 checked the name

@@ -28,8 +28,14 @@ inline std::uint8_t quantize8(float c) {
 }
 
 // Writes by extension: .png/.jpg/.jpeg/.ppm as 8-bit (quantize8), .exr as linear float.
-// Throws std::runtime_error naming the file on failure.
+// The file is written beside its final name and renamed into place, so a reader (or a kill
+// during the write) never sees a truncated image. Throws std::runtime_error naming the file.
 void writeImage(const Image& image, const std::string& path);
+
+// Throws std::runtime_error naming the file when writeImage(path) is bound to fail: an unknown
+// extension, a folder that does not exist or cannot be written. Called before a render starts,
+// so a long render is not thrown away for a typo in -o.
+void checkImageOutputPath(const std::string& path);
 
 // Reads any format OpenImageIO knows; 8-bit files come back as value/255.
 Image readImage(const std::string& path);

@@ -5,6 +5,9 @@
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
+#include <system_error>
+
+#include <unistd.h>
 
 #include <OpenImageIO/imageio.h>
 
@@ -18,18 +21,17 @@ std::string lowerExtension(const std::string& path) {
     return ext;
 }
 
-}  // namespace
+bool isSupportedOutput(const std::string& ext) {
+    return ext == ".exr" || ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".ppm";
+}
 
-void writeImage(const Image& image, const std::string& path) {
-    const std::string ext = lowerExtension(path);
-    const bool isFloat = ext == ".exr";
-    if (!isFloat && ext != ".png" && ext != ".jpg" && ext != ".jpeg" && ext != ".ppm")
-        throw std::runtime_error(path + ": unsupported output format '" + ext + "' (use .png, .exr, .jpg or .ppm)");
-
-    auto out = OIIO::ImageOutput::create(path);
+// Writes the file at `target` (a temporary name) in the format of `path`'s extension.
+void writeImageFile(const Image& image, const std::string& path, const std::string& target) {
+    const bool isFloat = lowerExtension(path) == ".exr";
+    auto out = OIIO::ImageOutput::create(path);  // the format comes from the final name
     if (!out) throw std::runtime_error(path + ": cannot create image writer: " + OIIO::geterror());
     OIIO::ImageSpec spec(image.width, image.height, 3, isFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-    if (!out->open(path, spec)) throw std::runtime_error(path + ": cannot open for writing: " + out->geterror());
+    if (!out->open(target, spec)) throw std::runtime_error(path + ": cannot open for writing: " + out->geterror());
 
     bool ok = false;
     if (isFloat) {
@@ -42,6 +44,39 @@ void writeImage(const Image& image, const std::string& path) {
     }
     if (!ok) throw std::runtime_error(path + ": write failed: " + out->geterror());
     if (!out->close()) throw std::runtime_error(path + ": close failed: " + out->geterror());
+}
+
+}  // namespace
+
+void checkImageOutputPath(const std::string& path) {
+    if (path.empty()) throw std::runtime_error("the output path is empty (-o FILE.png)");
+    const std::string ext = lowerExtension(path);
+    if (!isSupportedOutput(ext))
+        throw std::runtime_error(path + ": unsupported output format '" + ext + "' (use .png, .exr, .jpg or .ppm)");
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    const std::filesystem::path dir = parent.empty() ? std::filesystem::path(".") : parent;
+    std::error_code ec;
+    if (!std::filesystem::is_directory(dir, ec))
+        throw std::runtime_error(path + ": the folder '" + dir.string() + "' does not exist");
+    if (::access(dir.c_str(), W_OK) != 0)
+        throw std::runtime_error(path + ": the folder '" + dir.string() + "' is not writable");
+    if (std::filesystem::is_directory(path, ec)) throw std::runtime_error(path + ": is a folder, not an image file");
+}
+
+void writeImage(const Image& image, const std::string& path) {
+    checkImageOutputPath(path);
+    // Same folder, so the rename is atomic; the pid keeps two processes writing one name apart.
+    const std::filesystem::path target(path);
+    const std::filesystem::path temp =
+        target.parent_path() / ("." + target.filename().string() + ".partial-" + std::to_string(::getpid()));
+    try {
+        writeImageFile(image, path, temp.string());
+        std::filesystem::rename(temp, target);
+    } catch (...) {
+        std::error_code ignored;
+        std::filesystem::remove(temp, ignored);
+        throw;
+    }
 }
 
 Image readImage(const std::string& path) {

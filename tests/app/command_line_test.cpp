@@ -184,5 +184,12 @@ TEST(CourseCommandLine, CourseFlagsWorkInCompareAndSweep) {
     EXPECT_NE(parseRefused({"sweep", "s.xml", "--out", "d", "-d", "1"}).find("depth of field"), std::string::npos);
 }
 
+// Issue 22: `-o ""` used to write <scene>.png without a word; an explicit empty path is refused,
+// while no -o at all keeps the default.
+TEST(OutputPath, AnExplicitEmptyOutputIsRefused) {
+    EXPECT_NE(parseRefused({"s.xml", "-o", ""}).find("the output path is empty"), std::string::npos);
+    EXPECT_EQ(parseOk({"s.xml"}).outputPath, "s.png");
+}
+
 }  // namespace
 }  // namespace vkrt
