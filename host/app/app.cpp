@@ -1,11 +1,17 @@
 #include "app.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <new>
+#include <string>
+
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include "command_line.h"
 #include "cpu_renderer.h"
@@ -106,6 +112,26 @@ std::unique_ptr<GpuRenderer> openGpu(const CommandLine& cl) {
     }
 }
 
+// The float RGB image every renderer returns: a lower bound on what a render needs.
+long long imageMiB(int width, int height) {
+    return static_cast<long long>(width) * height * static_cast<long long>(sizeof(glm::vec3)) >> 20;
+}
+
+// Refuses, before the scene is loaded, an image whose pixels alone exceed this machine's memory
+// (or the process's address-space limit, ulimit -v, when that is lower).
+void checkImageFitsInMemory(int width, int height) {
+    const long long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
+    if (pages <= 0 || pageSize <= 0) return;  // unknown: the allocation itself will say
+    long long physicalMiB = (pages * pageSize) >> 20;
+    rlimit limit{};
+    if (::getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+        physicalMiB = std::min(physicalMiB, static_cast<long long>(limit.rlim_cur >> 20));
+    if (imageMiB(width, height) > physicalMiB)
+        throw std::runtime_error("a " + std::to_string(width) + "x" + std::to_string(height) + " image needs " +
+                                 std::to_string(imageMiB(width, height)) + " MiB for its float pixels alone; this " +
+                                 "machine has " + std::to_string(physicalMiB) + " MiB (use a smaller -w/-h)");
+}
+
 // Before the render, so that a long render is not thrown away for a bad -o.
 void checkOutputBeforeRendering(const std::string& output, const std::string& scenePath) {
     checkImageOutputPath(output);
@@ -117,6 +143,7 @@ void checkOutputBeforeRendering(const std::string& output, const std::string& sc
 int runRender(CommandLine& cl) {
     const auto start = std::chrono::steady_clock::now();
     checkOutputBeforeRendering(cl.outputPath, cl.scenePath);
+    checkImageFitsInMemory(cl.render.width, cl.render.height);
     const Scene scene = loadWithWarnings(cl);
     std::unique_ptr<GpuRenderer> gpu = openGpu(cl);
     DeviceRender result;
@@ -226,6 +253,12 @@ int runVkrt(int argc, const char* const* argv) {
     } catch (const RenderCancelled&) {
         std::cerr << "vkrt: interrupted\n";
         return kExitInterrupted;
+    } catch (const std::bad_alloc&) {
+        // Most often the image (or its device buffers) does not fit: say how big it was.
+        std::cerr << "vkrt: error: out of memory for a " << cl.render.width << "x" << cl.render.height << " image ("
+                  << imageMiB(cl.render.width, cl.render.height)
+                  << " MiB for its float pixels alone); use a smaller -w/-h\n";
+        return kExitFailure;
     } catch (const std::exception& e) {
         std::cerr << "vkrt: error: " << e.what() << "\n";
         return kExitFailure;

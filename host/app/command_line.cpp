@@ -27,7 +27,7 @@ glm::vec3 parseColour(const std::string& text) {
 
 // The options every command shares (what the image is, which GPU, how to run).
 void addImageOptions(CLI::App& app, CommandLine& cl, std::string& bg) {
-    app.add_option("scene", cl.scenePath, "Scene file (XML, UMD course format)");
+    app.add_option("scene", cl.scenePath, "Scene file: .xml or .json (the UMD course's formats)");
     app.add_option("-i,--input,--inputfile", cl.scenePath, "Scene file (the course's spelling)");
     app.add_option("-w,--width", cl.render.width, "Image width in pixels")->check(CLI::Range(1, 1 << 16));
     app.add_option("-h,--height", cl.render.height, "Image height in pixels")->check(CLI::Range(1, 1 << 16));
@@ -156,6 +156,16 @@ void applyAspect(RenderOptions& render, double aspect, bool widthGiven, bool hei
 
 // After parsing: refuse -d, resolve -a, and say which course flags vkrt cannot honour.
 void applyCourseOptions(const CLI::App& app, CommandLine& cl, const CourseText& course) {
+    // -i and the positional scene fill one field: a second scene would be dropped without a word.
+    const std::size_t scenes = app.count("-i") + app.count("scene");
+    if (scenes > 1) {
+        std::string names;
+        for (const char* name : {"-i", "scene"})
+            for (const std::string& s : app.get_option(name)->as<std::vector<std::string>>())
+                names += (names.empty() ? "'" : ", '") + s + "'";
+        throw CLI::ValidationError("scene", std::to_string(scenes) + " scene files given (" + names +
+                                                "); vkrt renders one scene per run");
+    }
     if (app.count("-d") > 0)
         throw CLI::ValidationError("-d" + (course.depthOfField.empty() ? "" : " " + course.depthOfField),
                                    "depth of field is not supported yet (issue 21); leave -d out to render in focus");

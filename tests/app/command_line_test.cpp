@@ -191,5 +191,14 @@ TEST(OutputPath, AnExplicitEmptyOutputIsRefused) {
     EXPECT_EQ(parseOk({"s.xml"}).outputPath, "s.png");
 }
 
+// Issue 22: `-i a.xml b.xml` rendered b.xml and dropped a.xml silently.
+TEST(OutputPath, TwoScenesAreRefusedNamingBoth) {
+    const std::string message = parseRefused({"-i", "a.xml", "b.xml"});
+    EXPECT_NE(message.find("2 scene files given"), std::string::npos) << message;
+    EXPECT_NE(message.find("'a.xml'"), std::string::npos) << message;
+    EXPECT_NE(message.find("'b.xml'"), std::string::npos) << message;
+    EXPECT_EQ(parseOk({"-i", "a.xml"}).scenePath, "a.xml");
+}
+
 }  // namespace
 }  // namespace vkrt
