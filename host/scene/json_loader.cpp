@@ -130,7 +130,11 @@ private:
         if (const JsonNode e = parameter("mirrorCoef")) shader.mirrorCoef = readScalar(context_, e);
         if (const JsonNode e = parameter("roughness")) shader.roughness = readChecked(e, rules::nonNegativeProblem);
         if (const JsonNode e = parameter("refractiveIndex")) shader.refractiveIndex = readChecked(e, rules::refractiveIndexProblem);
-        if (const JsonNode e = parameter("attenuationCoef")) shader.attenuation = readVec3(context_, e);
+        if (const JsonNode e = parameter("attenuationCoef")) {
+            shader.attenuation = readVec3(context_, e);
+            if (const std::string p = rules::attenuationProblem(shader.attenuation); !p.empty())
+                context_.fail(e, p, quoted(context_, e));
+        }
         if (type.emitter) {
             shader.diffuse = glm::vec3(0.0f);  // an emitter reflects nothing (render_fallbacks.h)
             if (const JsonNode e = parameter("emission")) shader.emission = readVec3(context_, e);

@@ -116,6 +116,12 @@ std::string nonNegativeProblem(float value) { return value < 0.0f ? "must not be
 
 std::string refractiveIndexProblem(float value) { return !(value > 0.0f) ? "must be positive" : ""; }
 
+std::string attenuationProblem(const glm::vec3& value) {
+    return value.x < 0.0f || value.y < 0.0f || value.z < 0.0f
+               ? "must not be negative (a transmittance per unit distance, from 0 = opaque to 1 = clear)"
+               : "";
+}
+
 void resolveLegacyShaderType(Shader& shader) {
     if (shader.type == ShaderType::BlinnPhong && shader.mirrorCoef > 0.0f) shader.type = ShaderType::BlinnPhongMirrored;
 }

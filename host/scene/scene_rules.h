@@ -62,6 +62,9 @@ std::vector<std::string_view> shaderParametersUsedBy(const ShaderTypeName& type)
 std::string unusedParameterProblem(const ShaderTypeName& type);  // "not used by a Mirror shader, ignored"
 std::string nonNegativeProblem(float value);                    // phongExp, roughness
 std::string refractiveIndexProblem(float value);
+// attenuationCoef is a transmittance per unit distance, raised to the path length: a negative
+// component has no meaning and makes pow() of a negative base, NaN on the CPU and undefined in GLSL.
+std::string attenuationProblem(const glm::vec3& value);
 // The colour of a used-diffuse shader that gives neither a colour nor a texture; white under a
 // texture (so the texture shows as it is).
 inline constexpr float kMissingDiffuseGrey = 0.5f;

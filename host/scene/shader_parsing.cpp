@@ -91,7 +91,11 @@ Shader parseShader(const ParseContext& context, pugi::xml_node node, const Textu
         if (const std::string p = rules::refractiveIndexProblem(shader.refractiveIndex); !p.empty())
             context.fail(e, p, elementText(e));
     }
-    if (pugi::xml_node e = parameter("attenuationCoef")) shader.attenuation = parseVec3(context, e);
+    if (pugi::xml_node e = parameter("attenuationCoef")) {
+        shader.attenuation = parseVec3(context, e);
+        if (const std::string p = rules::attenuationProblem(shader.attenuation); !p.empty())
+            context.fail(e, p, elementText(e));
+    }
     if (type.emitter) {
         shader.diffuse = glm::vec3(0.0f);  // an emitter reflects nothing (render_fallbacks.h)
         if (pugi::xml_node e = parameter("emission")) shader.emission = parseVec3(context, e);

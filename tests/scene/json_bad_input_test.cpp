@@ -284,6 +284,8 @@ TEST_F(JsonBadInput, ShaderParametersOutOfRange) {
     const auto shader = [](const std::string& body) { return jsonWith(R"("shader": [{"_name": "x", )" + body + "}]"); };
     const std::string phong = shader(R"("_type": "BlinnPhong", "diffuse": "1 1 1", "phongExp": -1)");
     expectJsonIssueAt(jsonErrorOf(phong), phong, "-1}", "scene.shader[0].phongExp", "-1");
+    const std::string murky = shader(R"("_type": "Dielectric", "attenuationCoef": "0.9 -0.1 0.9")");
+    expectJsonIssueAt(jsonErrorOf(murky), murky, "\"0.9 -0.1", "scene.shader[0].attenuationCoef", "0.9 -0.1 0.9");
     const std::string rough = shader(R"("_type": "Mirror", "roughness": -0.5)");
     EXPECT_EQ(jsonErrorOf(rough).problem, "must not be negative");
     const std::string glass = shader(R"("_type": "Dielectric", "refractiveIndex": 0)");

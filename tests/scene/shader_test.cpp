@@ -153,6 +153,16 @@ TEST_F(ShaderParsing, NegativePhongExpAndNonPositiveRefractiveIndexAreErrors) {
     expectIssue(errorOf(ior), 4, "refractiveIndex", "0");
 }
 
+// Issue 22: a negative attenuationCoef made NaN samples on the CPU (700 replaced by black) and a
+// different, unreported image on the GPU; it is refused where it is written.
+TEST_F(ShaderParsing, NegativeAttenuationIsAnError) {
+    const std::string xml = sceneWith(
+        "<shader name=\"d\" type=\"Dielectric\"><attenuationCoef>0.9 -0.1 0.9</attenuationCoef></shader>");
+    const Issue issue = errorOf(xml);
+    expectIssue(issue, 4, "attenuationCoef", "0.9 -0.1 0.9");
+    EXPECT_NE(issue.problem.find("must not be negative"), std::string::npos) << issue.problem;
+}
+
 TEST_F(ShaderParsing, NegativeRoughnessIsAnError) {
     const std::string xml = sceneWith("<shader name=\"m\" type=\"Mirror\"><roughness>-0.1</roughness></shader>");
     expectIssue(errorOf(xml), 4, "roughness", "-0.1");
