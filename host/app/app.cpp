@@ -255,9 +255,9 @@ int runVkrt(int argc, const char* const* argv) {
         return kExitInterrupted;
     } catch (const std::bad_alloc&) {
         // Most often the image (or its device buffers) does not fit: say how big it was.
-        std::cerr << "vkrt: error: out of memory for a " << cl.render.width << "x" << cl.render.height << " image ("
-                  << imageMiB(cl.render.width, cl.render.height)
-                  << " MiB for its float pixels alone); use a smaller -w/-h\n";
+        std::cerr << "vkrt: error: out of memory (the " << cl.render.width << "x" << cl.render.height
+                  << " image's float pixels alone take " << imageMiB(cl.render.width, cl.render.height)
+                  << " MiB; a smaller -w/-h needs less)\n";
         return kExitFailure;
     } catch (const std::exception& e) {
         std::cerr << "vkrt: error: " << e.what() << "\n";
