@@ -1,21 +1,31 @@
 // Where tests find their inputs.
 #pragma once
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
 #include <gtest/gtest.h>
 
 // In a test body: skips the test, naming what is missing, when `path` (an input under ../shared) does
-// not exist. tools/run_tests.sh, the README's and CI's test command, fails on any skip.
+// not exist. With VKRT_REQUIRE_SHARED=1 (the README's and CI's test command, where nothing may be
+// missing) the same message is a failure instead.
 #define VKRT_SKIP_WITHOUT(path)                                                                         \
     do {                                                                                                \
         const std::string vkrt_needed_ = (path);                                                        \
-        if (!std::filesystem::exists(vkrt_needed_))                                                     \
-            GTEST_SKIP() << "missing " << vkrt_needed_                                                  \
-                         << " (the shared scenes: put shared/ beside the repository or set VKRT_SHARED)"; \
+        if (!std::filesystem::exists(vkrt_needed_)) {                                                   \
+            if (vkrt::test::sharedRequired()) FAIL() << "missing " << vkrt_needed_ << vkrt::test::kSharedHint; \
+            GTEST_SKIP() << "missing " << vkrt_needed_ << vkrt::test::kSharedHint;                     \
+        }                                                                                               \
     } while (0)
 
 namespace vkrt::test {
+inline constexpr const char* kSharedHint =
+    " (the shared scenes: put shared/ beside the repository or set VKRT_SHARED)";
+// VKRT_REQUIRE_SHARED=1: a missing input fails the test instead of skipping it.
+inline bool sharedRequired() {
+    const char* v = std::getenv("VKRT_REQUIRE_SHARED");
+    return v != nullptr && std::string(v) == "1";
+}
 // ../shared beside the repository, or $VKRT_SHARED when set.
 std::string sharedDir();
 // ../shared/scenes/upstream

@@ -165,8 +165,7 @@ const std::map<std::string, Expected>& expectedErrors() {
 std::string jsonDir() { return sharedDir() + "/scenes/json"; }
 std::string corpusPath(const std::string& name) { return jsonDir() + "/" + name; }
 
-#define SKIP_WITHOUT_JSON_CORPUS()                                                                   \
-    if (!std::filesystem::is_directory(jsonDir())) GTEST_SKIP() << "no JSON corpus at " << jsonDir()
+#define SKIP_WITHOUT_JSON_CORPUS() VKRT_SKIP_WITHOUT(jsonDir())
 
 std::vector<std::string> jsonSceneNames() {
     std::vector<std::string> names;
