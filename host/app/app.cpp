@@ -19,6 +19,7 @@
 #include "gpu_renderer.h"
 #include "image_compare.h"
 #include "interrupt.h"
+#include "scene_convert.h"
 #include "scene_loader.h"
 #include "statistical_compare.h"
 #include "sweep.h"
@@ -228,6 +229,29 @@ int runCompare(CommandLine& cl) {
     return 0;
 }
 
+int runConvert(const CommandLine& cl) {
+    Diagnostics diagnostics(cl.strict);
+    const auto start = std::chrono::steady_clock::now();
+    Conversion conversion;
+    try {
+        conversion = convertScene(cl.scenePath, cl.outputPath, diagnostics);
+    } catch (...) {
+        for (const std::string& line : diagnostics.messages()) std::cerr << "warning: " << line << "\n";
+        throw;
+    }
+    for (const std::string& line : diagnostics.messages()) std::cerr << "warning: " << line << "\n";
+    if (conversion.renamedShaders > 0)
+        std::cerr << "note: " << conversion.renamedShaders
+                  << " nameless shader(s) written as 'unnamed shader N' (a shader needs a name to be referred to there)\n";
+    for (const std::string& name : conversion.definedPlaceholders)
+        std::cerr << "note: shader '" << name << "' is named but not defined in " << cl.scenePath
+                  << "; written as the grey Lambertian placeholder it renders as\n";
+    if (!cl.render.quiet)
+        std::fprintf(stderr, "%s -> %s (%s): %s; loads back as the same scene, %.3fs\n", cl.scenePath.c_str(),
+                     cl.outputPath.c_str(), conversion.format.c_str(), conversion.counts.c_str(), secondsSince(start));
+    return 0;
+}
+
 int runListDevices() {
     std::cout << formatDeviceList(listDevices()) << std::flush;
     if (!std::cout) throw std::runtime_error("cannot write the device list to standard output");
@@ -248,6 +272,7 @@ int runVkrt(int argc, const char* const* argv) {
         case Command::ListDevices: return runListDevices();
         case Command::Compare: return runCompare(cl);
         case Command::Sweep: return runSweep(cl);
+        case Command::Convert: return runConvert(cl);
         case Command::Render: return runRender(cl);
         }
     } catch (const RenderCancelled&) {

@@ -200,9 +200,42 @@ std::string describeSettings(const CommandLine& cl) {
     return out.str();
 }
 
+namespace {
+
+// vkrt convert IN -o OUT: the scene read in one format and written in the other (or the same).
+ParseResult parseConvert(std::vector<std::string> args) {
+    CommandLine cl;
+    cl.command = Command::Convert;
+    CLI::App app{"vkrt convert: read a course scene (XML or JSON) and write it in the format -o's extension names "
+                 "(.json: the course's current JSON form; .xml: the course's XML form). The written file is loaded "
+                 "back and must give the same scene model, or nothing is written (docs/SCENE_CONVERSION.md).",
+                 "vkrt convert"};
+    app.set_help_flag("-?,--help", "Print this help and exit");
+    app.add_option("scene", cl.scenePath, "Scene file to read: .xml or .json");
+    app.add_option("-i,--input,--inputfile", cl.scenePath, "Scene file to read (the course's spelling)");
+    app.add_option("-o,--output,--outputfile", cl.outputPath, "Scene file to write: .json or .xml")->required();
+    app.add_flag("--strict", cl.strict, "Treat the input's warnings as errors");
+    app.add_flag("-q,--quiet", cl.render.quiet, "No summary line");
+    try {
+        std::vector<std::string> reversed(args.rbegin(), args.rend());
+        app.parse(reversed);
+        if (app.count("-i") + app.count("scene") > 1)
+            throw CLI::ValidationError("scene", "two scene files given; vkrt convert reads one (-o names the output)");
+        if (cl.scenePath.empty()) throw CLI::RequiredError("a scene file to read (vkrt convert in.xml -o out.json)");
+        if (cl.outputPath.empty()) throw CLI::ValidationError("-o", "the output path is empty (give out.json or out.xml)");
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return {std::nullopt, code == 0 ? 0 : 2};
+    }
+    return {cl, 0};
+}
+
+}  // namespace
+
 ParseResult parseCommandLine(int argc, const char* const* argv) {
     CommandLine cl;
     std::vector<std::string> args(argv + 1, argv + argc);
+    if (!args.empty() && args[0] == "convert") return parseConvert({args.begin() + 1, args.end()});
     if (!args.empty() && (args[0] == "compare" || args[0] == "sweep")) {
         cl.command = args[0] == "compare" ? Command::Compare : Command::Sweep;
         args.erase(args.begin());
@@ -216,7 +249,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
                            "per pixel, seeds and devices; writes DIR/sweep.csv, DIR/error_vs_*.png and DIR/report.md"
                          : "vkrt: a Vulkan compute-shader ray tracer for the UMD course scene format.\n"
                            "Usage: vkrt scene.xml [options]  |  vkrt compare scene.xml [options]  |  "
-                           "vkrt sweep scene.xml --out DIR [options]  |  vkrt --list-devices",
+                           "vkrt sweep scene.xml --out DIR [options]  |  vkrt convert in.xml -o out.json  |  vkrt --list-devices",
                  compare ? "vkrt compare" : sweep ? "vkrt sweep" : "vkrt"};
     app.set_help_flag("-?,--help", "Print this help and exit (-h is the height, as in the course)");
     app.option_defaults()->always_capture_default();

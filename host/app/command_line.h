@@ -1,5 +1,5 @@
 // The vkrt command line: `vkrt scene.xml [options]`, `vkrt compare scene.xml [options]`,
-// `vkrt --list-devices`, plus every flag of the course's handleGraphicsArgs (-i -o -w -h -a -n -r -k
+// `vkrt convert in.xml -o out.json`, `vkrt --list-devices`, plus every flag of the course's handleGraphicsArgs (-i -o -w -h -a -n -r -k
 // -v -s -x -y -?; -d is refused until depth of field exists).
 #pragma once
 
@@ -12,13 +12,13 @@
 
 namespace vkrt {
 
-enum class Command { Render, Compare, Sweep, ListDevices };
+enum class Command { Render, Compare, Sweep, Convert, ListDevices };
 enum class DeviceChoice { Auto, Cpu, Gpu };
 
 struct CommandLine {
     Command command = Command::Render;
     std::string scenePath;
-    std::string outputPath;       // default: <scene name>.png in the current directory
+    std::string outputPath;       // default: <scene name>.png in the current directory; convert: required
     RenderOptions render;
     bool strict = false;
     DeviceChoice device = DeviceChoice::Auto;

@@ -507,7 +507,14 @@ private:
         const JsonNode parameters = member(scene, "sceneParameters");
         if (parameters) {
             requireObject(context_, parameters);
-            checkKeys(context_, parameters, {"bgColor", "envMapPrefix", "envMapVertCross"});
+            checkKeys(context_, parameters, {"bgColor", "envMapPrefix", "envMapVertCross", "camera"});
+            // The camera to render by name, as XML's <sceneParameters><camera> (vkrt's addition, §3.1).
+            if (const JsonNode camera = member(parameters, "camera")) {
+                const std::string name = readString(context_, camera);
+                const std::optional<int> index = rules::cameraByName(scene_, name);
+                if (!index) context_.fail(camera, rules::kUnknownCameraName, name);
+                scene_.defaultCamera = *index;
+            }
         }
         const JsonNode* used = nullptr;
         const JsonNode spellings[] = {member(parameters, "bgColor"), member(scene, "_bgColor"), member(scene, "bgColor")};

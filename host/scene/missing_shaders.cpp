@@ -10,6 +10,7 @@ int MissingShaders::placeholderFor(Scene& scene, const std::string& name, const 
         Shader placeholder;
         placeholder.name = name;
         placeholder.diffuse = glm::vec3(rules::kMissingDiffuseGrey);
+        placeholder.undefined = true;
         placeholder.where = where;
         scene.shaders.push_back(placeholder);
     }

@@ -24,7 +24,13 @@ std::string tokenAround(const std::string& text, std::size_t pos) {
 }  // namespace
 
 std::optional<float> finiteFloat(double value) {
-    if (!std::isfinite(value) || std::abs(value) > std::numeric_limits<float>::max()) return std::nullopt;
+    // Beyond float range means rounding to infinity: from 2^128 - 2^103, the midpoint between the
+    // largest float and 2^128, on. Decimals just above the largest float round down to it
+    // (3.4028235e38, its shortest spelling, is one).
+    constexpr double kRoundsToInfinity = 0x1.ffffffp127;
+    if (!std::isfinite(value) || std::abs(value) >= kRoundsToInfinity) return std::nullopt;
+    constexpr double kLargest = std::numeric_limits<float>::max();
+    if (std::abs(value) > kLargest) return static_cast<float>(std::copysign(kLargest, value));
     return static_cast<float>(value);
 }
 

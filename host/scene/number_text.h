@@ -25,7 +25,7 @@ NumberText readNumberText(const std::string& text, int count);
 std::string irregularNumberProblem(const NumberText& numbers, int count);
 
 // A number that must fit a 32-bit float (JSON numbers are read as double): nullopt for NaN, Inf
-// and anything beyond float range.
+// and anything that rounds to infinity as a float.
 std::optional<float> finiteFloat(double value);
 inline constexpr const char* kNotAFiniteFloat = "not a finite 32-bit number";
 

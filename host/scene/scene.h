@@ -71,6 +71,9 @@ struct Shader {
     // An `Emitter` shader's radiance (J26; no course file uses one). type is Lambertian with a
     // black diffuse colour until emission is rendered (render_fallbacks.h).
     glm::vec3 emission{0.0f};
+    // The file names this shader but never defines it: a grey Lambertian placeholder
+    // (missing_shaders.h). Renderers ignore the flag; vkrt convert says it wrote a definition.
+    bool undefined = false;
     SourceLocation where;
 };
 
@@ -130,6 +133,9 @@ struct Instance {
     std::vector<TransformStep> steps; // in file order
     glm::mat4 objectToWorld{1.0f};    // rules::composeTransform(steps): M = T0 * T1 * ... * Tn-1
                                       // (docs/XML_FORMAT.md §3.9)
+    // The file gave a plain shape with a transform, not an instance: the prototype is that shape's
+    // own (rules::addPlainShape), and a written scene gives the shape back the same way.
+    bool ownPrototype = false;
     SourceLocation where;
 };
 

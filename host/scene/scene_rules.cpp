@@ -58,6 +58,12 @@ std::string narrowFieldProblem(const Camera& camera) {
                : "";
 }
 
+std::optional<int> cameraByName(const Scene& scene, const std::string& name) {
+    for (std::size_t i = 0; i < scene.cameras.size(); ++i)
+        if (scene.cameras[i].name == name) return static_cast<int>(i);
+    return std::nullopt;
+}
+
 std::optional<LightType> lightType(std::string_view name) {
     if (name == "point") return LightType::Point;
     if (name == "area") return LightType::Area;
@@ -67,6 +73,11 @@ std::optional<LightType> lightType(std::string_view name) {
 std::optional<glm::vec3> unitNormal(const glm::vec3& normal) {
     const float length = glm::length(normal);
     if (!(length > 0.0f) || !std::isfinite(length)) return std::nullopt;
+    // A normal already unit to float precision is kept as it is: dividing it by its rounded length
+    // can move a last bit, so a written scene (vkrt convert) would not load back the same. A float
+    // quotient below is within 2^-23 of unit length, inside this bound, so the rule is idempotent.
+    const double lengthSquared = glm::dot(glm::dvec3(normal), glm::dvec3(normal));
+    if (std::abs(lengthSquared - 1.0) < 0x1p-22) return normal;
     return normal / length;
 }
 
@@ -228,6 +239,7 @@ void addPlainShape(Scene& scene, Shape shape, const std::vector<TransformStep>* 
     instance.prototype = static_cast<int>(scene.prototypes.size());
     instance.steps = *steps;
     instance.objectToWorld = composeTransform(instance.steps);
+    instance.ownPrototype = true;
     instance.where = shape.where;
     scene.prototypes.push_back(std::move(shape));
     scene.instances.push_back(std::move(instance));

@@ -34,6 +34,9 @@ void conditionCamera(Camera& camera);
 // focalLength / imagePlaneWidth above 2^22: neighbouring pixels' directions differ by less than
 // float resolves, so the image is one colour. A warning (the image is what float can show).
 std::string narrowFieldProblem(const Camera& camera);
+// The first camera named `name` (XML <sceneParameters><camera>, JSON sceneParameters.camera).
+std::optional<int> cameraByName(const Scene& scene, const std::string& name);
+inline constexpr const char* kUnknownCameraName = "no camera of that name";
 
 // --- lights ---
 std::optional<LightType> lightType(std::string_view name);  // point, area

@@ -4,6 +4,7 @@
 #include <map>
 #include <optional>
 #include <string_view>
+#include <tuple>
 
 #include <pugixml.hpp>
 
@@ -40,9 +41,9 @@ public:
         for (pugi::xml_node node : root.children("texture")) defineTexture(node);
         for (pugi::xml_node node : root.children()) {
             if (isElement(node, "shader")) defineShader(node, /*inlineInShape=*/false);
-            if (isElement(node, "shape") || isElement(node, "instance"))
-                for (pugi::xml_node child : node.children("shader"))
-                    if (child.attribute("type")) defineShader(child, /*inlineInShape=*/true);
+            if (isElement(node, "shape") || isElement(node, "instance")) defineInlineShaders(node);
+            if (isElement(node, "light"))  // a shape light's shape (vkrt's XML addition, §3.4)
+                for (pugi::xml_node shape : node.children("shape")) defineInlineShaders(shape);
         }
         for (pugi::xml_node node : root.children("instance")) definePrototype(node);
 
@@ -53,7 +54,8 @@ public:
             if (name == "camera") {
                 scene_.cameras.push_back(parseCamera(context_, node));
             } else if (name == "light") {
-                if (auto light = parseLight(context_, node)) scene_.lights.push_back(*light);
+                if (std::string_view(node.attribute("type").value()) == "shape") placeShapeLight(node);
+                else if (auto light = parseLight(context_, node)) scene_.lights.push_back(*light);
             } else if (name == "shape") {
                 placeShape(node);
             } else if (name == "sceneParameters") {
@@ -108,6 +110,11 @@ private:
         scene_.shaders.push_back(std::move(shader));
     }
 
+    void defineInlineShaders(pugi::xml_node shape) {
+        for (pugi::xml_node child : shape.children("shader"))
+            if (child.attribute("type")) defineShader(child, /*inlineInShape=*/true);
+    }
+
     // The shader a shape (or prototype, or instance) names: -1 when it has no <shader> child.
     int shaderOf(pugi::xml_node shape) {
         const pugi::xml_node reference = shape.child("shader");
@@ -121,7 +128,7 @@ private:
     }
 
     // Geometry with its shader, as a loose shape or a prototype.
-    Shape parseShape(pugi::xml_node node, ShapeType type) {
+    Shape parseShape(pugi::xml_node node, ShapeType type, bool shaderRequired = true) {
         std::vector<std::string_view> allowed = rules::geometryKeys(type);
         allowed.push_back("shader");
         if (isElement(node, "shape")) allowed.push_back("transform");
@@ -132,7 +139,7 @@ private:
         shape.where = {context_.source.path(), context_.source.lineOf(node)};
         parseGeometry(context_, node, shape, meshes_);
         shape.shader = shaderOf(node);
-        if (shape.shader < 0) context_.fail(node, "missing required element <shader>", shape.name);
+        if (shape.shader < 0 && shaderRequired) context_.fail(node, "missing required element <shader>", shape.name);
         return shape;
     }
 
@@ -155,16 +162,11 @@ private:
         if (typeName == "instance") {
             checkAttributes(context_, node, {"type", "id"});
             checkChildren(context_, node, {"shader", "transform"});
-            const std::string id = requireAttribute(context_, node, "id");
-            const auto found = prototypeByName_.find(id);
-            if (found == prototypeByName_.end()) context_.fail(node, "unresolved instance id", id);
-            if (found->second < 0) {
-                context_.warn(node, "instance of a skipped prototype, skipped", id);
-                return;
-            }
+            const std::optional<int> prototype = prototypeOf(node);
+            if (!prototype) return;
             Instance instance;
             instance.name = name;
-            instance.prototype = found->second;
+            instance.prototype = *prototype;
             instance.shaderOverride = shaderOf(node);
             if (const pugi::xml_node transform = node.child("transform")) {
                 instance.steps = parseTransform(context_, transform);
@@ -189,44 +191,95 @@ private:
         }
     }
 
+    // The prototype an instance's `id` names; nullopt (after a warning) for a skipped one.
+    std::optional<int> prototypeOf(pugi::xml_node instance) {
+        const std::string id = requireAttribute(context_, instance, "id");
+        const auto found = prototypeByName_.find(id);
+        if (found == prototypeByName_.end()) context_.fail(instance, "unresolved instance id", id);
+        if (found->second < 0) {
+            context_.warn(instance, "instance of a skipped prototype, skipped", id);
+            return std::nullopt;
+        }
+        return found->second;
+    }
+
+    // <light type="shape"><intensity>c</intensity><shape ...>any shape, an instance with its
+    // <transform> included</shape></light>: the JSON shape light in XML (vkrt's addition,
+    // docs/XML_FORMAT.md §3.4, so that vkrt convert keeps it). The shape's shader is optional.
+    void placeShapeLight(pugi::xml_node node) {
+        checkAttributes(context_, node, {"type"});
+        checkChildren(context_, node, {"intensity", "shape"});
+        Emitter emitter;
+        emitter.radiance = parseVec3(context_, requireChild(context_, node, "intensity"));
+        emitter.where = {context_.source.path(), context_.source.lineOf(node)};
+        const pugi::xml_node shape = requireChild(context_, node, "shape");
+        const std::string typeName = requireAttribute(context_, shape, "type");
+        if (typeName == "instance") {
+            checkAttributes(context_, shape, {"type", "id"});
+            checkChildren(context_, shape, {"shader", "transform"});
+            const std::optional<int> prototype = prototypeOf(shape);
+            if (!prototype) return;
+            emitter.prototype = *prototype;
+            emitter.shape.name = shape.attribute("name").value();
+            emitter.shape.shader = shaderOf(shape);
+        } else {
+            checkAttributes(context_, shape, {"type"});
+            const std::optional<ShapeType> type = rules::shapeType(typeName);
+            if (!type) {
+                context_.warn(shape, "unknown shape type, skipped", typeName);
+                return;
+            }
+            emitter.shape = parseShape(shape, *type, /*shaderRequired=*/false);
+        }
+        emitter.name = emitter.shape.name;
+        if (const pugi::xml_node transform = shape.child("transform")) emitter.steps = parseTransform(context_, transform);
+        emitter.objectToWorld = rules::composeTransform(emitter.steps);
+        scene_.emitters.push_back(emitter);
+        scene_.lights.push_back(emitterStandInLight(scene_, static_cast<int>(scene_.emitters.size()) - 1));
+        if (fallbacks_.first(Fallback::ShapeLight)) context_.warn(node, fallbackProblem(Fallback::ShapeLight), emitter.name);
+    }
+
     // Background and environment map: <sceneParameters> children win over the root attributes
     // (docs/XML_FORMAT.md §7.3). Environment maps are recorded (resolved against the scene file), not
     // rendered; a warning says so (render_fallbacks.h).
     void readSceneParameters(pugi::xml_node root, pugi::xml_node parameters) {
         if (const pugi::xml_attribute bg = root.attribute("bgColor"))
             scene_.background = parseVec3Text(context_, root, "scene bgColor", bg.value());
-        pugi::xml_node envNode = root;
-        std::string envPrefix;
+        pugi::xml_node prefixNode = root, crossNode;
+        std::string prefix, cross;
         for (const char* spelling : {"envmapPrefix", "envMapPrefix"})
-            if (const pugi::xml_attribute a = root.attribute(spelling)) envPrefix = trimmed(a.value());
+            if (const pugi::xml_attribute a = root.attribute(spelling)) prefix = trimmed(a.value());
 
         if (parameters) {
             checkAttributes(context_, parameters, {});
             checkChildren(context_, parameters, {"bgColor", "envMapPrefix", "envmapPrefix", "envMapVertCross", "camera"});
             if (const pugi::xml_node bg = parameters.child("bgColor")) scene_.background = parseVec3(context_, bg);
-            for (const char* spelling : {"envmapPrefix", "envMapPrefix", "envMapVertCross"}) {
+            for (const char* spelling : {"envmapPrefix", "envMapPrefix"}) {
                 if (const pugi::xml_node e = parameters.child(spelling)) {
-                    envNode = e;
-                    envPrefix = trimmed(elementText(e));
+                    prefixNode = e;
+                    prefix = trimmed(elementText(e));
                 }
+            }
+            if (const pugi::xml_node e = parameters.child("envMapVertCross")) {
+                crossNode = e;
+                cross = trimmed(elementText(e));
             }
             if (const pugi::xml_node camera = parameters.child("camera")) selectCamera(camera);
         }
-        if (!envPrefix.empty()) {
-            scene_.envMapPrefix = rules::resolveScenePath(context_.sceneDirectory, envPrefix);
-            if (fallbacks_.first(Fallback::EnvironmentMap)) context_.warn(envNode, fallbackProblem(Fallback::EnvironmentMap), envPrefix);
+        // The cube faces' prefix and the vertical-cross image are separate fields, as in JSON.
+        for (const auto& [node, text, field] : {std::tuple{prefixNode, &prefix, &scene_.envMapPrefix},
+                                                std::tuple{crossNode, &cross, &scene_.envMapVertCross}}) {
+            if (text->empty()) continue;
+            *field = rules::resolveScenePath(context_.sceneDirectory, *text);
+            if (fallbacks_.first(Fallback::EnvironmentMap)) context_.warn(node, fallbackProblem(Fallback::EnvironmentMap), *text);
         }
     }
 
     void selectCamera(pugi::xml_node camera) {
         const std::string name = trimmed(elementText(camera));
-        for (std::size_t i = 0; i < scene_.cameras.size(); ++i) {
-            if (scene_.cameras[i].name == name) {
-                scene_.defaultCamera = static_cast<int>(i);
-                return;
-            }
-        }
-        context_.fail(camera, "no camera of that name", name);
+        const std::optional<int> index = rules::cameraByName(scene_, name);
+        if (!index) context_.fail(camera, rules::kUnknownCameraName, name);
+        scene_.defaultCamera = *index;
     }
 
     const ParseContext& context_;

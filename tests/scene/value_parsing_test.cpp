@@ -112,5 +112,15 @@ TEST_F(ValueParsing, LargestFloatIsStillAccepted) {
     EXPECT_TRUE(std::isfinite(scene.shapes[0].radius));
 }
 
+// The bound is where a float rounds to infinity (2^128 - 2^103 = 3.40282357e38), not the largest
+// float itself: 3.4028235e38, the shortest text of the largest float (what vkrt convert writes),
+// lies above it and reads as it; 3.4028236e38 is past the midpoint.
+TEST_F(ValueParsing, TheLargestFloatsShortestTextReadsAsTheLargestFloat) {
+    const Scene scene = loadClean(withRadius("3.4028235e38"));
+    EXPECT_EQ(scene.shapes[0].radius, std::numeric_limits<float>::max());
+    const std::string xml = withRadius("3.4028236e38");
+    EXPECT_NE(errorOf(xml).problem.find("finite"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace vkrt::test

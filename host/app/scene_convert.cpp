@@ -1,0 +1,102 @@
+#include "scene_convert.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include <unistd.h>
+
+#include "json_writer.h"
+#include "scene_compare.h"
+#include "scene_loader.h"
+#include "scene_writing.h"
+#include "xml_writer.h"
+
+namespace vkrt {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string lowerExtension(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+// Before anything is read, as for images: a bad -o never costs the load of a 100K-triangle mesh.
+std::string checkOutput(const std::string& output, const std::string& input) {
+    const std::string ext = lowerExtension(output);
+    if (ext != ".json" && ext != ".xml")
+        throw std::runtime_error(output + ": unsupported scene format '" + ext + "' (use .json or .xml)");
+    const fs::path parent = fs::path(output).parent_path();
+    const fs::path dir = parent.empty() ? fs::path(".") : parent;
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) throw std::runtime_error(output + ": the folder '" + dir.string() + "' does not exist");
+    if (::access(dir.c_str(), W_OK) != 0) throw std::runtime_error(output + ": the folder '" + dir.string() + "' is not writable");
+    if (fs::is_directory(output, ec)) throw std::runtime_error(output + ": is a folder, not a scene file");
+    if (fs::equivalent(output, input, ec)) throw std::runtime_error(output + ": is the input file itself; choose another output name");
+    return ext.substr(1);
+}
+
+std::string plural(std::size_t n, const char* noun) {
+    return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
+
+std::string countsOf(const Scene& scene) {
+    std::string counts = plural(scene.cameras.size(), "camera") + ", " + plural(scene.lights.size(), "light") + ", " +
+                         plural(scene.shaders.size(), "shader") + ", " + plural(scene.shapes.size(), "shape") + ", " +
+                         plural(scene.instances.size(), "instance");
+    if (!scene.emitters.empty()) counts += " (" + plural(scene.emitters.size(), "shape light") + ")";
+    return counts;
+}
+
+void writeText(const fs::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    out.close();
+    if (!out) throw std::runtime_error(path.string() + ": cannot write the scene file");
+}
+
+}  // namespace
+
+Conversion convertScene(const std::string& input, const std::string& output, Diagnostics& diagnostics) {
+    Conversion conversion;
+    conversion.format = checkOutput(output, input);
+    const Scene scene = loadScene(input, LoadOptions{diagnostics.strict()}, diagnostics);
+
+    const fs::path target(output);
+    const fs::path directory = target.parent_path();
+    const std::string text = conversion.format == "json" ? jsonSceneText(scene, directory) : xmlSceneText(scene, directory);
+
+    // The model the file must load back as (the names and placeholders a write changes).
+    const Scene expected = writing::asWritten(scene);
+    for (std::size_t i = 0; i < scene.shaders.size(); ++i) {
+        if (scene.shaders[i].name.empty()) ++conversion.renamedShaders;
+        if (scene.shaders[i].undefined) conversion.definedPlaceholders.push_back(scene.shaders[i].name);
+    }
+
+    // Same folder, so the rename is atomic and relative paths resolve as they will in the result.
+    const fs::path temp = directory / ("." + target.filename().string() + ".partial-" + std::to_string(::getpid()));
+    try {
+        writeText(temp, text);
+        Diagnostics reloadWarnings;  // the input's warnings were reported; the result may repeat some
+        const Scene reloaded = loadScene(temp.string(), LoadOptions{}, reloadWarnings);
+        const SceneDifferences differences = compareScenes(expected, reloaded);
+        if (!differences.equal())
+            throw std::runtime_error(output + ": not written: the converted scene does not load back as the same scene (" +
+                                     std::to_string(differences.count) + " fields differ; please report this):\n" +
+                                     differences.summary());
+        fs::rename(temp, target);
+    } catch (...) {
+        std::error_code ignored;
+        fs::remove(temp, ignored);
+        throw;
+    }
+    conversion.counts = countsOf(scene);
+    return conversion;
+}
+
+}  // namespace vkrt

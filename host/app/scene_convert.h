@@ -1,0 +1,25 @@
+// vkrt convert: a scene file read (XML or JSON) and written in the format the output's extension
+// names, then checked: the written file is loaded back and must give the model it was written from
+// (scene_compare.h), or nothing is written. docs/SCENE_CONVERSION.md.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "diagnostics.h"
+
+namespace vkrt {
+
+struct Conversion {
+    std::string format;   // "json" or "xml"
+    std::string counts;   // "1 camera, 2 lights, ..." for the summary line
+    int renamedShaders = 0;  // nameless shaders written under a generated name
+    std::vector<std::string> definedPlaceholders;  // shaders the input names but never defines, written
+                                                   // as the grey placeholder they render as
+};
+
+// Throws std::runtime_error (or SceneError for a bad input) with a message naming the file. The
+// input's warnings go to `diagnostics`; the output path is checked before the input is read.
+Conversion convertScene(const std::string& input, const std::string& output, Diagnostics& diagnostics);
+
+}  // namespace vkrt

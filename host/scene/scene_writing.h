@@ -1,0 +1,48 @@
+// What the two scene writers (json_writer.h, xml_writer.h) share: numbers that load back as the
+// same float, paths relative to the written file, the type and shader names the loaders read
+// back as the same model. docs/SCENE_CONVERSION.md states the rules and the one field a write changes.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "scene.h"
+
+namespace vkrt::writing {
+
+// The shortest decimal that both loaders (decimal -> double -> float) read back as `value`, bit
+// for bit; 9 significant digits when the shortest one would not survive the double step.
+std::string floatText(float value);
+std::string vec3Text(const glm::vec3& v);  // "x y z", the form every course file uses
+
+// `path` (as the model stores it, resolved) relative to the folder the scene is written to, so the
+// written file finds the same meshes, textures and environment maps; absolute when no relative
+// path exists (another drive or root). An environment-map prefix keeps its partial file name.
+std::string relativePath(const std::string& path, const std::filesystem::path& outputDirectory);
+
+// The type name a loader reads back as this shader: Diffuse (diffuseBounce), Emitter (emission),
+// else the type's own name.
+std::string shaderTypeName(const Shader& shader);
+// The parameters that type reads, in the order they are written (never the 2012 diffusetex).
+std::vector<std::string_view> writtenParameters(const Shader& shader);
+
+// The name each shader is written with: its own, or for a nameless one (XML's inline shaders, a
+// JSON "_name": "") "unnamed shader N", N the first number no other shader's name uses.
+std::vector<std::string> shaderNames(const Scene& scene);
+
+// The model a written file loads back as: `scene` with the names shaderNames gives and every
+// undefined shader's placeholder written as a definition (undefined = false). These are the only
+// fields a write changes (docs/SCENE_CONVERSION.md).
+Scene asWritten(Scene scene);
+
+std::string_view shapeTypeName(ShapeType type);
+std::string_view cameraTypeName(CameraType type);
+std::string_view axisName(int axis);  // X, Y, Z
+
+// Scene::prototypes placed through instance ids (written as the format's prototypes), as opposed
+// to those that are a transformed plain shape's own (Instance::ownPrototype).
+std::vector<bool> namedPrototypes(const Scene& scene);
+
+}  // namespace vkrt::writing
