@@ -166,6 +166,39 @@ TEST_F(LightParsing, UnknownLightTypeWarnsAndIsSkipped) {
     expectIssue(diagnostics.warnings()[0], lineOf(xml, "spot"), "light", "spot");
 }
 
+// vkrt's addition (docs/XML_FORMAT.md §3.4), the JSON shape light in XML so that vkrt convert
+// keeps it: an emitter from any shape, an instance with its transform included; the shape's
+// shader is optional. It renders, for now, through a stand-in point light at its centre.
+TEST_F(LightParsing, ShapeLightsAreEmittersAsInJson) {
+    const std::string xml = sceneWith(
+        "<shader name=\"grey\" type=\"Lambertian\"><diffuse>0.5 0.5 0.5</diffuse></shader>\n"
+        "<instance name=\"box\" type=\"box\"><shader ref=\"grey\"/><minPt>0 0 0</minPt><maxPt>2 2 2</maxPt></instance>\n"
+        "<light type=\"shape\"><intensity>1 0.5 0</intensity><shape type=\"sphere\"><center>1 2 3</center><radius>0.5</radius></shape></light>\n"
+        "<light type=\"shape\"><intensity>0 0 2</intensity><shape name=\"lamp\" type=\"instance\" id=\"box\">"
+        "<shader type=\"Lambertian\"><diffuse>1 1 1</diffuse></shader><transform><translate>10 0 0</translate></transform></shape></light>");
+    Diagnostics diagnostics;
+    const Scene scene = load(xml, diagnostics);
+    ASSERT_EQ(scene.emitters.size(), 2u);
+    EXPECT_EQ(scene.emitters[0].shape.center, glm::vec3(1, 2, 3));
+    EXPECT_EQ(scene.emitters[0].shape.shader, -1);
+    EXPECT_EQ(scene.emitters[0].radiance, glm::vec3(1, 0.5f, 0));
+    EXPECT_EQ(scene.emitters[1].prototype, 0);
+    EXPECT_EQ(scene.emitters[1].name, "lamp");
+    ASSERT_EQ(scene.emitters[1].shape.shader, 1);  // the inline (nameless) definition, registered in pass 1
+    EXPECT_EQ(scene.shaders[1].diffuse, glm::vec3(1.0f));
+    ASSERT_EQ(scene.lights.size(), 2u);
+    EXPECT_EQ(scene.lights[1].position, glm::vec3(11, 1, 1));  // the box's centre, moved
+    EXPECT_EQ(scene.lights[1].emitterStandIn, 1);
+    ASSERT_EQ(diagnostics.warnings().size(), 1u);  // the one fallback warning
+    EXPECT_NE(diagnostics.warnings()[0].problem.find("point lights"), std::string::npos);
+
+    const std::string noShape = sceneWith("<light type=\"shape\"><intensity>1 1 1</intensity></light>");
+    expectIssue(errorOf(noShape), lineOf(noShape, "<light"), "light", "");
+    const std::string badId = sceneWith(
+        "<light type=\"shape\"><intensity>1 1 1</intensity><shape type=\"instance\" id=\"nothing\"/></light>");
+    expectIssue(errorOf(badId), lineOf(badId, "<shape"), "shape", "nothing");
+}
+
 TEST_F(BackgroundParsing, DefaultIsBlack) {
     const Scene scene = loadClean(sceneWith(""));
     EXPECT_EQ(scene.background, glm::vec3(0.0f));
@@ -207,6 +240,17 @@ TEST_F(BackgroundParsing, EnvMapPrefixElementWinsAndWarnsOnce) {
     EXPECT_EQ(scene.envMapPrefix, (dir / "images/reef_").lexically_normal().string());
     ASSERT_EQ(diagnostics.warnings().size(), 1u);
     expectIssue(diagnostics.warnings()[0], lineOf(xml, "<envMapPrefix>"), "envMapPrefix", "images/reef_");
+}
+
+// The vertical-cross image is its own field, not the cube faces' prefix (as in JSON).
+TEST_F(BackgroundParsing, EnvMapVertCrossIsKeptApartFromThePrefix) {
+    const std::string xml = sceneWith(
+        "<sceneParameters>\n<envMapPrefix>images/reef_</envMapPrefix>\n<envMapVertCross>cross.png</envMapVertCross>\n</sceneParameters>");
+    Diagnostics diagnostics;
+    const Scene scene = load(xml, diagnostics);
+    EXPECT_EQ(scene.envMapPrefix, (dir / "images/reef_").lexically_normal().string());
+    EXPECT_EQ(scene.envMapVertCross, (dir / "cross.png").lexically_normal().string());
+    ASSERT_EQ(diagnostics.warnings().size(), 1u);  // one fallback warning per scene
 }
 
 }  // namespace

@@ -357,6 +357,19 @@ TEST_F(JsonForms, ShapeLightsBecomeEmittersWithAPointLightAtTheirCentreAndOneWar
     EXPECT_NE(diagnostics.warnings()[1].problem.find("point lights"), std::string::npos);
 }
 
+// vkrt's addition (docs/JSON_FORMAT.md §3.1), what XML's <sceneParameters><camera> says: the
+// camera to render by name; a name no camera has is an error at that value.
+TEST_F(JsonForms, SceneParametersMayNameTheCameraToRender) {
+    const std::string two = R"("camera": [{"_name": "a", "position": "0 0 0", "viewDir": "0 0 -1"},)"
+                            R"({"_name": "b", "position": "1 0 0", "viewDir": "0 0 -1"}])";
+    const Scene scene = loadJsonClean("{\"scene\": {" + two + R"(, "sceneParameters": {"camera": "b"}}})");
+    EXPECT_EQ(scene.defaultCamera, 1);
+    const std::string json = "{\"scene\": {" + two + R"(, "sceneParameters": {"camera": "c"}}})";
+    const Issue issue = jsonErrorOf(json);
+    expectJsonIssueAt(issue, json, R"("c")", "scene.sceneParameters.camera", "c");
+    EXPECT_NE(issue.problem.find("no camera of that name"), std::string::npos) << issue.message();
+}
+
 TEST_F(JsonForms, StrictTurnsTheFirstWarningIntoTheError) {
     const std::string json = jsonWith(R"("fog": 1,)" "\n" R"("haze": 2)");
     const Issue issue = jsonErrorOf(json, /*strict=*/true);

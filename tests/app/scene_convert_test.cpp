@@ -1,0 +1,113 @@
+// vkrt convert (issue 19): the output is checked before the input is read, the written file loads
+// back as the input's model (checked by convert itself and again here, independently), and a failed
+// conversion leaves neither a partial file nor a changed output behind.
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "diagnostics.h"
+#include "scene_compare.h"
+#include "scene_convert.h"
+#include "scene_loader.h"
+#include "scene_writing.h"
+
+namespace vkrt {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path freshDir(const std::string& name) {
+    const fs::path dir = fs::temp_directory_path() / ("vkrt_convert_" + name);
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+void writeFile(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+const char* const kScene = R"(<scene bgColor="0.1 0.2 0.3">
+  <camera name="main"><position>0 1 5</position><lookatPoint>0 0 0</lookatPoint></camera>
+  <light type="area"><position>0 5 0</position><intensity>1 1 1</intensity><normal>0 -1 0</normal><width>2</width><length>1</length></light>
+  <shader name="red" type="BlinnPhong"><diffuse>1 0 0</diffuse><specular>1 1 1</specular><phongExp>32</phongExp></shader>
+  <instance name="ball" type="sphere"><shader ref="red"/><center>0 0 0</center><radius>1</radius></instance>
+  <shape name="b1" type="instance" id="ball"><transform><translate>1 0 0</translate><rotate axis="Y">30</rotate></transform></shape>
+  <shape name="floor" type="box"><shader ref="red"/><minPt>-5 -1 -5</minPt><maxPt>5 -0.5 5</maxPt></shape>
+</scene>
+)";
+
+std::string refusal(const std::string& input, const std::string& output) {
+    Diagnostics diagnostics;
+    try {
+        convertScene(input, output, diagnostics);
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(SceneConvert, WritesBothFormatsThatLoadBackAsTheInput) {
+    const fs::path dir = freshDir("both");
+    writeFile(dir / "in.xml", kScene);
+    Diagnostics diagnostics;
+    const Scene input = loadScene((dir / "in.xml").string(), LoadOptions{}, diagnostics);
+    for (const char* name : {"out.json", "OUT.XML"}) {
+        SCOPED_TRACE(name);
+        Diagnostics convertWarnings;
+        const Conversion c = convertScene((dir / "in.xml").string(), (dir / name).string(), convertWarnings);
+        EXPECT_EQ(c.counts, "1 camera, 1 light, 1 shader, 1 shape, 1 instance");
+        EXPECT_EQ(c.format, std::string(name) == "out.json" ? "json" : "xml");
+        const std::string text = readFile(dir / name);
+        EXPECT_EQ(text.front(), c.format == "json" ? '{' : '<');
+        Diagnostics reloadWarnings;
+        const Scene back = loadScene((dir / name).string(), LoadOptions{}, reloadWarnings);
+        EXPECT_TRUE(reloadWarnings.warnings().empty());
+        const SceneDifferences d = compareScenes(writing::asWritten(input), back);
+        EXPECT_TRUE(d.equal()) << d.summary();
+    }
+    for (const auto& entry : fs::directory_iterator(dir))
+        EXPECT_EQ(entry.path().filename().string().find(".partial-"), std::string::npos) << entry.path();
+}
+
+// A bad -o is reported before the input is read: the input here does not even exist, and the
+// message names the output.
+TEST(SceneConvert, BadOutputsAreRefusedBeforeTheInputIsRead) {
+    const fs::path dir = freshDir("bad");
+    const std::string missing = (dir / "no_such_scene.xml").string();
+    EXPECT_NE(refusal(missing, (dir / "x.bmp").string()).find("x.bmp: unsupported scene format '.bmp' (use .json or .xml)"),
+              std::string::npos);
+    EXPECT_NE(refusal(missing, (dir / "nowhere" / "x.json").string()).find("does not exist"), std::string::npos);
+    fs::create_directories(dir / "folder.json");
+    EXPECT_NE(refusal(missing, (dir / "folder.json").string()).find("is a folder"), std::string::npos);
+    writeFile(dir / "in.xml", kScene);
+    EXPECT_NE(refusal((dir / "in.xml").string(), (dir / "." / "in.xml").string()).find("is the input file itself"),
+              std::string::npos);
+    EXPECT_EQ(readFile(dir / "in.xml"), kScene);
+}
+
+// A bad input is the loader's located error; an existing output stays as it was and no partial
+// file is left.
+TEST(SceneConvert, ABadInputLeavesTheOutputUntouched) {
+    const fs::path dir = freshDir("untouched");
+    writeFile(dir / "bad.xml", "<scene><camera><position>0 0 0</position></camera></scene>");
+    writeFile(dir / "out.json", "previous");
+    const std::string message = refusal((dir / "bad.xml").string(), (dir / "out.json").string());
+    EXPECT_NE(message.find("bad.xml:1: camera: missing required"), std::string::npos) << message;
+    EXPECT_EQ(readFile(dir / "out.json"), "previous");
+    std::size_t files = 0;
+    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++files;
+    EXPECT_EQ(files, 2u);
+}
+
+}  // namespace
+}  // namespace vkrt
