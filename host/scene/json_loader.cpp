@@ -127,7 +127,10 @@ private:
         }
         if (const JsonNode e = parameter("specular")) shader.specular = readColour(e, shader.specularTexture);
         if (const JsonNode e = parameter("phongExp")) shader.phongExp = readChecked(e, rules::nonNegativeProblem);
-        if (const JsonNode e = parameter("mirrorCoef")) shader.mirrorCoef = readScalar(context_, e);
+        if (const JsonNode e = parameter("mirrorCoef")) {
+            shader.mirrorCoef = readScalar(context_, e);
+            if (const std::string p = rules::mirrorCoefProblem(shader.mirrorCoef); !p.empty()) context_.warn(e, p, quoted(context_, e));
+        }
         if (const JsonNode e = parameter("roughness")) shader.roughness = readChecked(e, rules::nonNegativeProblem);
         if (const JsonNode e = parameter("refractiveIndex")) shader.refractiveIndex = readChecked(e, rules::refractiveIndexProblem);
         if (const JsonNode e = parameter("attenuationCoef")) {
@@ -137,7 +140,7 @@ private:
         }
         if (type.emitter) {
             shader.diffuse = glm::vec3(0.0f);  // an emitter reflects nothing (render_fallbacks.h)
-            if (const JsonNode e = parameter("emission")) shader.emission = readVec3(context_, e);
+            if (const JsonNode e = parameter("emission")) shader.emission = readColourValue(e);
         }
         rules::resolveLegacyShaderType(shader);
 
@@ -156,7 +159,7 @@ private:
     // A colour: a vec3, or {"tex": T, "data": c} (G2), or {"_tex": T, "__text": c} (the first
     // conversion); an object without a colour is white (J26), so its texture shows as it is (§3.3).
     glm::vec3 readColour(const JsonNode& node, int& texture) {
-        if (!node->is_object()) return readVec3(context_, node);
+        if (!node->is_object()) return readColourValue(node);
         checkKeys(context_, node, {"data", "__text"}, {"tex"});
         const JsonNode data = member(node, "data");
         const JsonNode text = member(node, "__text");
@@ -168,7 +171,14 @@ private:
             texture = found->second;
         }
         const JsonNode colour = data ? data : text;
-        return colour ? readVec3(context_, colour) : glm::vec3(1.0f);
+        return colour ? readColourValue(colour) : glm::vec3(1.0f);
+    }
+
+    // A colour vector, with a warning for a negative component (rules::negativeColourProblem).
+    glm::vec3 readColourValue(const JsonNode& node) {
+        const glm::vec3 colour = readVec3(context_, node);
+        if (const std::string p = rules::negativeColourProblem(colour); !p.empty()) context_.warn(node, p, quoted(context_, node));
+        return colour;
     }
 
     float readChecked(const JsonNode& node, std::string (*rule)(float)) {
@@ -274,9 +284,12 @@ private:
         const JsonNode xform = member(node, "xform");
         const JsonNode object = member(node, "transform");
         if (xform && object) context_.warnAtKey(object, "ignored, the shape's xform is used");
-        if (xform) return parseXform(xform);
-        if (object) return parseTransformObject(object);
-        return {};
+        const JsonNode& used = xform ? xform : object;
+        if (!used) return {};
+        std::vector<TransformStep> steps = xform ? parseXform(xform) : parseTransformObject(object);
+        if (const std::string p = rules::composedTransformProblem(rules::composeTransform(steps)); !p.empty())
+            context_.fail(used, p);
+        return steps;
     }
 
     // The ordered array: M = T0 * T1 * ... * Tn-1, the last listed acting first (as XML).
@@ -403,7 +416,7 @@ private:
         light.type = *known;
         light.where = context_.locationOf(node);
         light.position = readVec3(context_, requireMember(context_, node, "position"));
-        light.intensity = readVec3(context_, requireMember(context_, node, "intensity"));
+        light.intensity = readColourValue(requireMember(context_, node, "intensity"));
         if (light.type == LightType::Area) {
             const JsonNode normal = requireMember(context_, node, "normal");
             const std::optional<glm::vec3> n = rules::unitNormal(readVec3(context_, normal));
@@ -420,7 +433,7 @@ private:
     void placeShapeLight(const JsonNode& node) {
         checkKeys(context_, node, {"intensity", "shape"}, {"name", "type"});
         Emitter emitter;
-        emitter.radiance = readVec3(context_, requireMember(context_, node, "intensity"));
+        emitter.radiance = readColourValue(requireMember(context_, node, "intensity"));
         emitter.where = context_.locationOf(node);
         const JsonNode shape = requireMember(context_, node, "shape");
         requireObject(context_, shape);
@@ -520,7 +533,7 @@ private:
         const JsonNode spellings[] = {member(parameters, "bgColor"), member(scene, "_bgColor"), member(scene, "bgColor")};
         for (const JsonNode& spelling : spellings) {
             if (!spelling) continue;
-            const glm::vec3 colour = readVec3(context_, spelling);
+            const glm::vec3 colour = readColourValue(spelling);
             if (!used) {
                 scene_.background = colour;
                 used = &spelling;

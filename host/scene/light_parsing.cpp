@@ -29,7 +29,7 @@ std::optional<Light> parseLight(const ParseContext& context, pugi::xml_node node
     light.type = *known;
     checkChildren(context, node, {"position", "intensity", "normal", "width", "length"});
     light.position = parseVec3(context, requireChild(context, node, "position"));
-    light.intensity = parseVec3(context, requireChild(context, node, "intensity"));
+    light.intensity = parseColour(context, requireChild(context, node, "intensity"));
     if (light.type == LightType::Area) {
         const pugi::xml_node normal = requireChild(context, node, "normal");
         const std::optional<glm::vec3> n = rules::unitNormal(parseVec3(context, normal));

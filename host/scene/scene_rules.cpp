@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -123,6 +124,16 @@ std::string unusedParameterProblem(const ShaderTypeName& type) {
     return std::string("not used by a ") + type.display + " shader, ignored";
 }
 
+std::string negativeColourProblem(const glm::vec3& colour) {
+    return colour.x < 0.0f || colour.y < 0.0f || colour.z < 0.0f
+               ? "a negative colour component, kept as given (it subtracts light, as in the course's renderers)"
+               : "";
+}
+
+std::string mirrorCoefProblem(float value) {
+    return value < 0.0f || value > 1.0f ? "mirrorCoef outside 0..1, kept as given (the reflection blend extrapolates)" : "";
+}
+
 std::string nonNegativeProblem(float value) { return value < 0.0f ? "must not be negative" : ""; }
 
 std::string refractiveIndexProblem(float value) { return !(value > 0.0f) ? "must be positive" : ""; }
@@ -227,6 +238,21 @@ glm::mat4 composeTransform(const std::vector<TransformStep>& steps) {
     glm::mat4 m(1.0f);
     for (const TransformStep& step : steps) m = m * stepMatrix(step);
     return m;
+}
+
+std::string composedTransformProblem(const glm::mat4& objectToWorld) {
+    const glm::dmat4 m(objectToWorld);
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r])) return "the composed transform overflows float (its steps multiply beyond 3.4e38)";
+    const double det = glm::determinant(glm::dmat3(m));
+    if (det == 0.0 || !std::isfinite(1.0 / det)) return "the composed transform is singular in float (its steps shrink it to nothing)";
+    const glm::dmat4 inverse = glm::inverse(m);
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!(std::abs(inverse[c][r]) <= std::numeric_limits<float>::max()))
+                return "the composed transform's inverse overflows float (its steps shrink it below 3e-39)";
+    return "";
 }
 
 void addPlainShape(Scene& scene, Shape shape, const std::vector<TransformStep>* steps) {

@@ -68,6 +68,12 @@ std::string refractiveIndexProblem(float value);
 // attenuationCoef is a transmittance per unit distance, raised to the path length: a negative
 // component has no meaning and makes pow() of a negative base, NaN on the CPU and undefined in GLSL.
 std::string attenuationProblem(const glm::vec3& value);
+// Values the course's files give and its renderers took as they were, so a warning each, the value
+// kept: a negative colour component (diffuse, specular, intensity, background, emission; pt_test.xml's
+// redMat is -11.04 12.04 12.04) subtracts light; a mirrorCoef outside [0, 1] extrapolates the blend.
+// Neither can make a NaN (no root, log or power of them is taken).
+std::string negativeColourProblem(const glm::vec3& colour);
+std::string mirrorCoefProblem(float value);
 // The colour of a used-diffuse shader that gives neither a colour nor a texture; white under a
 // texture (so the texture shows as it is).
 inline constexpr float kMissingDiffuseGrey = 0.5f;
@@ -107,6 +113,9 @@ std::string scaleProblem(const glm::vec3& s);  // a zero factor: the renderers n
 glm::mat4 stepMatrix(const TransformStep& step);
 // M = I * T0 * T1 * ... multiplied left to right, the order both loaders always used.
 glm::mat4 composeTransform(const std::vector<TransformStep>& steps);
+// What the BVH builder would refuse later as "instance N", said at the transform with its line: an
+// entry beyond float (repeated scales overflow), or no inverse that float holds (they underflow).
+std::string composedTransformProblem(const glm::mat4& objectToWorld);
 
 // A plain shape: in Scene::shapes, or, when the file gives it a transform (`steps` not null), a
 // prototype of its own placed by one instance, so the renderers keep one transformed-shape path.

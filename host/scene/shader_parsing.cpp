@@ -25,7 +25,7 @@ glm::vec3 parseTintedColour(const ParseContext& context, pugi::xml_node element,
     checkAttributes(context, element, {"tex"});
     if (const pugi::xml_attribute tex = element.attribute("tex"))
         texture = lookUpTexture(context, element, tex.value(), textures);
-    return parseVec3(context, element);
+    return parseColour(context, element);
 }
 
 float parseNonNegative(const ParseContext& context, pugi::xml_node element) {
@@ -84,7 +84,10 @@ Shader parseShader(const ParseContext& context, pugi::xml_node node, const Textu
     }
     if (pugi::xml_node e = parameter("specular")) shader.specular = parseTintedColour(context, e, textures, shader.specularTexture);
     if (pugi::xml_node e = parameter("phongExp")) shader.phongExp = parseNonNegative(context, e);
-    if (pugi::xml_node e = parameter("mirrorCoef")) shader.mirrorCoef = parseScalar(context, e);
+    if (pugi::xml_node e = parameter("mirrorCoef")) {
+        shader.mirrorCoef = parseScalar(context, e);
+        if (const std::string p = rules::mirrorCoefProblem(shader.mirrorCoef); !p.empty()) context.warn(e, p, elementText(e));
+    }
     if (pugi::xml_node e = parameter("roughness")) shader.roughness = parseNonNegative(context, e);
     if (pugi::xml_node e = parameter("refractiveIndex")) {
         shader.refractiveIndex = parseScalar(context, e);
@@ -98,7 +101,7 @@ Shader parseShader(const ParseContext& context, pugi::xml_node node, const Textu
     }
     if (type.emitter) {
         shader.diffuse = glm::vec3(0.0f);  // an emitter reflects nothing (render_fallbacks.h)
-        if (pugi::xml_node e = parameter("emission")) shader.emission = parseVec3(context, e);
+        if (pugi::xml_node e = parameter("emission")) shader.emission = parseColour(context, e);
     }
 
     rules::resolveLegacyShaderType(shader);  // docs/XML_FORMAT.md §6

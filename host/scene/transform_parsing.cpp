@@ -32,6 +32,8 @@ std::vector<TransformStep> parseTransform(const ParseContext& context, pugi::xml
             context.warn(step, "unknown element inside <transform>, ignored");
         }
     }
+    if (const std::string p = rules::composedTransformProblem(rules::composeTransform(steps)); !p.empty())
+        context.fail(transform, p);
     return steps;
 }
 

@@ -1,6 +1,7 @@
 #include "value_parsing.h"
 
 #include "number_text.h"
+#include "scene_rules.h"
 
 namespace vkrt {
 
@@ -34,6 +35,12 @@ float parseScalar(const ParseContext& context, pugi::xml_node element) {
 glm::vec3 parseVec3(const ParseContext& context, pugi::xml_node element) {
     const auto v = readFloats<3>(context, element, element.name(), elementText(element));
     return {v[0], v[1], v[2]};
+}
+
+glm::vec3 parseColour(const ParseContext& context, pugi::xml_node element) {
+    const glm::vec3 colour = parseVec3(context, element);
+    if (const std::string p = rules::negativeColourProblem(colour); !p.empty()) context.warn(element, p, elementText(element));
+    return colour;
 }
 
 glm::vec3 parseVec3Text(const ParseContext& context, pugi::xml_node owner, const std::string& label,

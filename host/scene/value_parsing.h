@@ -19,6 +19,10 @@ namespace vkrt {
 float parseScalar(const ParseContext& context, pugi::xml_node element);
 glm::vec3 parseVec3(const ParseContext& context, pugi::xml_node element);
 
+// A colour (diffuse, specular, intensity, background, emission): parseVec3, and a warning for a
+// negative component (rules::negativeColourProblem), the value kept.
+glm::vec3 parseColour(const ParseContext& context, pugi::xml_node element);
+
 // The same for text that is not an element's own (an attribute such as <scene bgColor="...">);
 // `owner` gives the line and `label` names the attribute in the message.
 glm::vec3 parseVec3Text(const ParseContext& context, pugi::xml_node owner, const std::string& label,

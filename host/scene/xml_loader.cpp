@@ -210,7 +210,7 @@ private:
         checkAttributes(context_, node, {"type"});
         checkChildren(context_, node, {"intensity", "shape"});
         Emitter emitter;
-        emitter.radiance = parseVec3(context_, requireChild(context_, node, "intensity"));
+        emitter.radiance = parseColour(context_, requireChild(context_, node, "intensity"));
         emitter.where = {context_.source.path(), context_.source.lineOf(node)};
         const pugi::xml_node shape = requireChild(context_, node, "shape");
         const std::string typeName = requireAttribute(context_, shape, "type");
@@ -243,8 +243,14 @@ private:
     // (docs/XML_FORMAT.md §7.3). Environment maps are recorded (resolved against the scene file), not
     // rendered; a warning says so (render_fallbacks.h).
     void readSceneParameters(pugi::xml_node root, pugi::xml_node parameters) {
-        if (const pugi::xml_attribute bg = root.attribute("bgColor"))
+        if (const pugi::xml_attribute bg = root.attribute("bgColor")) {
             scene_.background = parseVec3Text(context_, root, "scene bgColor", bg.value());
+            if (const std::string p = rules::negativeColourProblem(scene_.background); !p.empty()) {
+                Issue issue = context_.issueAt(root, p, bg.value());
+                issue.element = "scene bgColor";
+                context_.warn(std::move(issue));
+            }
+        }
         pugi::xml_node prefixNode = root, crossNode;
         std::string prefix, cross;
         for (const char* spelling : {"envmapPrefix", "envMapPrefix"})
@@ -253,7 +259,7 @@ private:
         if (parameters) {
             checkAttributes(context_, parameters, {});
             checkChildren(context_, parameters, {"bgColor", "envMapPrefix", "envmapPrefix", "envMapVertCross", "camera"});
-            if (const pugi::xml_node bg = parameters.child("bgColor")) scene_.background = parseVec3(context_, bg);
+            if (const pugi::xml_node bg = parameters.child("bgColor")) scene_.background = parseColour(context_, bg);
             for (const char* spelling : {"envmapPrefix", "envMapPrefix"}) {
                 if (const pugi::xml_node e = parameters.child(spelling)) {
                     prefixNode = e;

@@ -317,6 +317,33 @@ TEST_F(JsonBadInput, SingularScaleAndBadRotationAxes) {
     EXPECT_EQ(jsonErrorOf(object).element, "scene.shape[0].transform.rotate._axis");
 }
 
+// Issue 22: negative colours and a mirrorCoef outside 0..1 warn with their path and are kept (as XML).
+TEST_F(JsonBadInput, NegativeColoursAndAMirrorCoefOutsideZeroToOneWarn) {
+    const std::string json = jsonWith(
+        R"("shader": [{"_name": "g", "_type": "Glaze", "diffuse": {"tex": "t", "data": "1 -2 1"}, "mirrorCoef": -0.5}],)" "\n"
+        R"("texture": [{"_name": "t", "sourcefile": "none.png"}],)" "\n"
+        R"("light": [{"position": "0 1 0", "intensity": [-1, 1, 1]}])");
+    Diagnostics diagnostics;
+    const Scene scene = loadJson(json, diagnostics);
+    EXPECT_EQ(scene.shaders[0].diffuse, glm::vec3(1, -2, 1));
+    EXPECT_EQ(scene.shaders[0].mirrorCoef, -0.5f);
+    EXPECT_EQ(scene.lights[0].intensity, glm::vec3(-1, 1, 1));
+    std::vector<std::string> paths;
+    for (const Issue& w : diagnostics.warnings()) paths.push_back(w.element);
+    for (const char* path : {"scene.shader[0].diffuse.data", "scene.shader[0].mirrorCoef", "scene.light[0].intensity"})
+        EXPECT_NE(std::find(paths.begin(), paths.end(), path), paths.end()) << path;
+}
+
+// Issue 22: the composed matrix is checked where it is made, at the xform, not later by the BVH builder.
+TEST_F(JsonBadInput, AComposedTransformBeyondFloatIsAnErrorAtTheXform) {
+    std::string steps;
+    for (int i = 0; i < 5; ++i) steps += std::string(i ? ", " : "") + R"({"type": "scale", "amount": "1e10 1e10 1e10"})";
+    const std::string json = withShape(R"({"_type": "sphere", "center": "0 0 0", "radius": 1, "shader": {"_ref": "s"}, "xform": [)" + steps + "]}");
+    const Issue issue = jsonErrorOf(json);
+    expectJsonIssueAt(issue, json, "[{\"type\"", "scene.shape[0].xform", "");
+    EXPECT_NE(issue.problem.find("overflows float"), std::string::npos) << issue.message();
+}
+
 TEST_F(JsonBadInput, NestingDeeperThan64LevelsIsRefusedWhereItGoesTooDeep) {
     // Each level's path repeats its parent's: 200000 levels would need ~100 GB of paths.
     const std::string json = jsonWith("\"deep\": " + std::string(200000, '[') + std::string(200000, ']'));

@@ -163,6 +163,32 @@ TEST_F(ShaderParsing, NegativeAttenuationIsAnError) {
     EXPECT_NE(issue.problem.find("must not be negative"), std::string::npos) << issue.problem;
 }
 
+// Issue 22: accepted without a word before. Kept as given with a warning: a course file has one
+// (pt_test.xml's redMat, -11.04 12.04 12.04), the course's renderers took them as they were, and
+// no NaN can come of them.
+TEST_F(ShaderParsing, NegativeColoursAndAMirrorCoefOutsideZeroToOneWarnAndAreKept) {
+    const std::string xml = sceneWith(
+        "<shader name=\"a\" type=\"Lambertian\"><diffuse>-11.04 12.04 12.04</diffuse></shader>\n"
+        "<shader name=\"b\" type=\"Glaze\"><diffuse>1 1 1</diffuse><mirrorCoef>1.5</mirrorCoef></shader>\n"
+        "<light type=\"point\"><position>0 1 0</position><intensity>1 -1 1</intensity></light>\n"
+        "<sceneParameters><bgColor>-0.5 0 0</bgColor></sceneParameters>",
+        " bgColor=\"-1 0 0\"");
+    Diagnostics diagnostics;
+    const Scene scene = load(xml, diagnostics);
+    EXPECT_EQ(scene.shaders[0].diffuse, glm::vec3(-11.04f, 12.04f, 12.04f));
+    EXPECT_EQ(scene.shaders[1].mirrorCoef, 1.5f);
+    EXPECT_EQ(scene.lights[0].intensity, glm::vec3(1, -1, 1));
+    EXPECT_EQ(scene.background, glm::vec3(-0.5f, 0, 0));
+    ASSERT_EQ(diagnostics.warnings().size(), 5u);
+    expectIssue(diagnostics.warnings()[0], 4, "diffuse", "-11.04 12.04 12.04");
+    EXPECT_NE(diagnostics.warnings()[0].problem.find("negative colour component"), std::string::npos);
+    expectIssue(diagnostics.warnings()[1], 5, "mirrorCoef", "1.5");
+    expectIssue(diagnostics.warnings()[2], 6, "intensity", "1 -1 1");
+    expectIssue(diagnostics.warnings()[3], 2, "scene bgColor", "-1 0 0");
+    expectIssue(diagnostics.warnings()[4], 7, "bgColor", "-0.5 0 0");
+    EXPECT_EQ(errorOf(xml, /*strict=*/true).element, "diffuse");
+}
+
 TEST_F(ShaderParsing, NegativeRoughnessIsAnError) {
     const std::string xml = sceneWith("<shader name=\"m\" type=\"Mirror\"><roughness>-0.1</roughness></shader>");
     expectIssue(errorOf(xml), 4, "roughness", "-0.1");

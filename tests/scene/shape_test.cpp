@@ -202,5 +202,28 @@ TEST_F(TransformParsing, BadAxisAndZeroScaleAreErrors) {
     expectIssue(errorOf(scale), lineOf(scale, "<scale>"), "scale", "1 0 1");
 }
 
+// Issue 22: repeated scales overflowed the composed matrix and only the BVH builder noticed
+// ("bvh: instance 0"); the transform parser says it at the <transform>, for growth and for shrinkage.
+TEST_F(TransformParsing, AComposedTransformBeyondFloatIsAnErrorAtTheTransform) {
+    const std::string prototype =
+        kShader + "<instance name=\"p\" type=\"sphere\"><shader ref=\"s\"/><center>0 0 0</center><radius>1</radius></instance>\n";
+    std::string grow, shrink;
+    for (int i = 0; i < 5; ++i) grow += "<scale>1e10 1e10 1e10</scale>";  // 1e50
+    for (int i = 0; i < 5; ++i) shrink += "<scale>1e-10 1 1</scale>";     // inverse 1e50
+    const std::string big = sceneWith(prototype + "<shape type=\"instance\" id=\"p\">\n<transform>" + grow + "</transform></shape>");
+    const Issue b = errorOf(big);
+    expectIssue(b, lineOf(big, "<transform>"), "transform", "");
+    EXPECT_NE(b.problem.find("overflows float"), std::string::npos) << b.message();
+    const std::string small = sceneWith(prototype + "<shape type=\"sphere\"><shader ref=\"s\"/><center>0 0 0</center><radius>1</radius>\n<transform>" +
+                                        shrink + "</transform></shape>");
+    const Issue s = errorOf(small);
+    expectIssue(s, lineOf(small, "<transform>"), "transform", "");
+    EXPECT_NE(s.problem.find("float"), std::string::npos) << s.message();
+    // Four of them (1e40, inverse 1e-40... and back) are still a float matrix with a float inverse.
+    std::string four;
+    for (int i = 0; i < 3; ++i) four += "<scale>1e10 1e10 1e10</scale>";
+    EXPECT_NO_THROW(loadClean(sceneWith(prototype + "<shape type=\"instance\" id=\"p\"><transform>" + four + "</transform></shape>")));
+}
+
 }  // namespace
 }  // namespace vkrt::test

@@ -28,6 +28,7 @@ const std::map<std::string, std::vector<ExpectedWarning>>& expectedWarnings() {
         {"dielectric_Test00.xml", {{7, "envMapPrefix", "environment maps are not rendered", "data/reef_"}}},
         {"happyBuddha_100K.xml", {{55, "attribute", "unknown element inside <shape>", ""}}},
         {"mirrorTest2.xml", {{3, "scene", "environment maps are not rendered", "data/reef_"}}},
+        {"pt_test.xml", {{95, "diffuse", "a negative colour component, kept as given", "-11.04 12.04 12.04"}}},
         {"pt_space.xml",
          {{80, "sourcefile", "texture file not found", "/images/stars.png"},
           {119, "instance", "unknown prototype type", "skysphere"},
