@@ -4,11 +4,13 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <unordered_map>
 
 #include <tiny_obj_loader.h>
 
 #include "mesh_normals.h"
+#include "obj_validation.h"
 
 namespace vkrt {
 
@@ -72,8 +74,13 @@ Mesh loadObjMesh(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw std::runtime_error("mesh file not found");
     if (!std::filesystem::is_regular_file(path, ec)) throw std::runtime_error("mesh path is not a regular file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot open mesh file");
+    std::ifstream file(path, std::ios::binary);
+    if (!file) throw std::runtime_error("cannot open mesh file");
+    std::stringstream buffer;
+    buffer << file.rdbuf();
+    const std::string text = buffer.str();
+    validateObjText(text);  // what tinyobjloader would accept silently (obj_validation.h)
+    std::istringstream in(text);
 
     tinyobj::attrib_t attrib;
     std::vector<tinyobj::shape_t> shapes;
