@@ -234,7 +234,7 @@ int runConvert(const CommandLine& cl) {
     const auto start = std::chrono::steady_clock::now();
     Conversion conversion;
     try {
-        conversion = convertScene(cl.scenePath, cl.outputPath, diagnostics);
+        conversion = convertScene(cl.scenePath, cl.outputPath, diagnostics, cl.render.cancel);
     } catch (...) {
         for (const std::string& line : diagnostics.messages()) std::cerr << "warning: " << line << "\n";
         throw;

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "json_writer.h"
+#include "render_options.h"
 #include "scene_compare.h"
 #include "scene_loader.h"
 #include "scene_writing.h"
@@ -62,10 +63,16 @@ void writeText(const fs::path& path, const std::string& text) {
 
 }  // namespace
 
-Conversion convertScene(const std::string& input, const std::string& output, Diagnostics& diagnostics) {
+Conversion convertScene(const std::string& input, const std::string& output, Diagnostics& diagnostics,
+                        const std::atomic<bool>* cancel) {
+    // Ctrl-C is seen between the steps (a load of the largest course mesh takes about 0.2 s).
+    const auto checkCancel = [cancel] {
+        if (cancel && cancel->load()) throw RenderCancelled{};
+    };
     Conversion conversion;
     conversion.format = checkOutput(output, input);
     const Scene scene = loadScene(input, LoadOptions{diagnostics.strict()}, diagnostics);
+    checkCancel();
 
     const fs::path target(output);
     const fs::path directory = target.parent_path();
@@ -83,7 +90,14 @@ Conversion convertScene(const std::string& input, const std::string& output, Dia
     try {
         writeText(temp, text);
         Diagnostics reloadWarnings;  // the input's warnings were reported; the result may repeat some
-        const Scene reloaded = loadScene(temp.string(), LoadOptions{}, reloadWarnings);
+        Scene reloaded;
+        try {
+            reloaded = loadScene(temp.string(), LoadOptions{}, reloadWarnings);
+        } catch (const SceneError& e) {
+            throw std::runtime_error(output + ": not written: the converted scene does not load (please report this): " +
+                                     e.what());
+        }
+        checkCancel();
         const SceneDifferences differences = compareScenes(expected, reloaded);
         if (!differences.equal())
             throw std::runtime_error(output + ": not written: the converted scene does not load back as the same scene (" +

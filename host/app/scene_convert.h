@@ -3,6 +3,7 @@
 // (scene_compare.h), or nothing is written. docs/SCENE_CONVERSION.md.
 #pragma once
 
+#include <atomic>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,9 @@ struct Conversion {
 
 // Throws std::runtime_error (or SceneError for a bad input) with a message naming the file. The
 // input's warnings go to `diagnostics`; the output path is checked before the input is read.
-Conversion convertScene(const std::string& input, const std::string& output, Diagnostics& diagnostics);
+// `cancel` (Ctrl-C, interrupt.h) is polled between the steps; when set, RenderCancelled is thrown and
+// nothing is left behind.
+Conversion convertScene(const std::string& input, const std::string& output, Diagnostics& diagnostics,
+                        const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace vkrt

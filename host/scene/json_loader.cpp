@@ -523,7 +523,7 @@ private:
             checkKeys(context_, parameters, {"bgColor", "envMapPrefix", "envMapVertCross", "camera"});
             // The camera to render by name, as XML's <sceneParameters><camera> (vkrt's addition, §3.1).
             if (const JsonNode camera = member(parameters, "camera")) {
-                const std::string name = readString(context_, camera);
+                const std::string name = readText(context_, camera);  // "" names a nameless camera, as in XML
                 const std::optional<int> index = rules::cameraByName(scene_, name);
                 if (!index) context_.fail(camera, rules::kUnknownCameraName, name);
                 scene_.defaultCamera = *index;

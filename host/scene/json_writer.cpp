@@ -48,8 +48,8 @@ public:
             if (named_[i]) prototypes.push_back(shape(scene_.prototypes[i]));
         if (!prototypes.empty()) s["instance"] = prototypes;
         Json shapes = Json::array();
-        for (const Shape& plain : scene_.shapes) shapes.push_back(shape(plain));
-        for (const Instance& placed : scene_.instances) shapes.push_back(instance(placed));
+        for (const writing::ShapeSlot& slot : writing::shapeOrder(scene_))
+            shapes.push_back(slot.instance ? instance(scene_.instances[slot.index]) : shape(scene_.shapes[slot.index]));
         s["shape"] = shapes;
         s["sceneParameters"] = parameters();
         return Json{{"scene", s}};
@@ -205,7 +205,9 @@ private:
 }  // namespace
 
 std::string jsonSceneText(const Scene& scene, const std::filesystem::path& outputDirectory) {
-    return JsonSceneWriter(scene, outputDirectory).write().dump(2) + "\n";
+    // A name that is not UTF-8 (XML text can hold one) is written with U+FFFD in its place instead of
+    // throwing; the written file then names it differently, and vkrt convert's check says so.
+    return JsonSceneWriter(scene, outputDirectory).write().dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace vkrt

@@ -13,7 +13,7 @@ namespace vkrt {
 
 namespace {
 
-bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
 
 std::vector<std::string_view> tokens(std::string_view line) {
     std::vector<std::string_view> out;
@@ -35,7 +35,8 @@ std::vector<std::string_view> tokens(std::string_view line) {
 // A coordinate as the loaders read numbers: the whole token, finite, within float.
 void checkCoordinate(std::size_t line, std::string_view keyword, std::string_view token) {
     double value = 0.0;
-    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+    const std::size_t skip = token.size() > 1 && token[0] == '+' ? 1 : 0;  // tinyobjloader takes "+1"; from_chars does not
+    const auto [end, error] = std::from_chars(token.data() + skip, token.data() + token.size(), value);
     if (error != std::errc() || end != token.data() + token.size() || !finiteFloat(value))
         fail(line, keyword, "not a finite 32-bit number", token);
 }
@@ -68,11 +69,12 @@ void validateObjText(const std::string& text) {
     Kind v{"vertex"}, vt{"texture coordinate"}, vn{"normal"};
     std::size_t lineNumber = 0, begin = 0;
     while (begin <= text.size()) {
-        std::size_t end = text.find('\n', begin);
+        // A line ends at \n, \r\n or a lone \r, as tinyobjloader's safeGetline reads them.
+        std::size_t end = text.find_first_of("\r\n", begin);
         if (end == std::string::npos) end = text.size();
         ++lineNumber;
         std::string_view line(text.data() + begin, end - begin);
-        begin = end + 1;
+        begin = end + (end + 1 < text.size() && text[end] == '\r' && text[end + 1] == '\n' ? 2 : 1);
         if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
         const std::vector<std::string_view> t = tokens(line);
         if (t.empty()) continue;

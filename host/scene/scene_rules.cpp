@@ -75,10 +75,11 @@ std::optional<glm::vec3> unitNormal(const glm::vec3& normal) {
     const float length = glm::length(normal);
     if (!(length > 0.0f) || !std::isfinite(length)) return std::nullopt;
     // A normal already unit to float precision is kept as it is: dividing it by its rounded length
-    // can move a last bit, so a written scene (vkrt convert) would not load back the same. A float
-    // quotient below is within 2^-23 of unit length, inside this bound, so the rule is idempotent.
+    // can move a last bit, so a written scene (vkrt convert) would not load back the same. The float
+    // quotient below has |n|^2 within about 7 * 2^-24 of 1 (the length's and the division's
+    // roundings), inside this bound of 16 * 2^-24, so the rule is idempotent.
     const double lengthSquared = glm::dot(glm::dvec3(normal), glm::dvec3(normal));
-    if (std::abs(lengthSquared - 1.0) < 0x1p-22) return normal;
+    if (std::abs(lengthSquared - 1.0) < 0x1p-20) return normal;
     return normal / length;
 }
 

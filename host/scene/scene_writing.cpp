@@ -36,10 +36,17 @@ std::string relativePath(const std::string& path, const std::filesystem::path& o
     namespace fs = std::filesystem;
     std::error_code ec;
     const fs::path target = fs::absolute(path, ec);
-    const fs::path base = fs::absolute(outputDirectory.empty() ? fs::path(".") : outputDirectory, ec);
+    const fs::path base = fs::absolute(outputDirectory.empty() ? fs::path(".") : outputDirectory, ec).lexically_normal();
     if (ec) return path;
+    // Through a symbolic link, `..` from the output folder leads somewhere else than its spelling
+    // says (the loaders resolve paths by spelling): name the file by its real, absolute path then.
+    const fs::path real = fs::weakly_canonical(base, ec);
+    if (ec || real != base) {
+        const fs::path canonical = fs::weakly_canonical(target, ec);
+        return (ec ? target.lexically_normal() : canonical).string();
+    }
     // A prefix such as .../textures/reef_ names no file: relate its folder, keep its file name.
-    const fs::path relative = target.parent_path().lexically_normal().lexically_relative(base.lexically_normal());
+    const fs::path relative = target.parent_path().lexically_normal().lexically_relative(base);
     if (relative.empty()) return target.lexically_normal().string();
     return (relative / target.filename()).lexically_normal().string();
 }
@@ -113,6 +120,43 @@ std::vector<bool> namedPrototypes(const Scene& scene) {
     for (const Instance& instance : scene.instances)
         if (instance.ownPrototype) named.at(static_cast<std::size_t>(instance.prototype)) = false;
     return named;
+}
+
+std::vector<ShapeSlot> shapeOrder(const Scene& scene) {
+    std::vector<bool> seen(scene.meshes.size(), false);
+    const auto use = [&](const Shape& shape) {
+        if (shape.type == ShapeType::Mesh && shape.mesh >= 0) seen.at(static_cast<std::size_t>(shape.mesh)) = true;
+    };
+    const std::vector<bool> named = namedPrototypes(scene);
+    for (std::size_t i = 0; i < scene.prototypes.size(); ++i)
+        if (named[i]) use(scene.prototypes[i]);
+    for (const Emitter& emitter : scene.emitters)
+        if (emitter.prototype < 0) use(emitter.shape);
+    // The mesh an entry would load first, or -1 when it loads none.
+    const auto firstUse = [&](const Shape& shape) {
+        return shape.type == ShapeType::Mesh && shape.mesh >= 0 && !seen.at(static_cast<std::size_t>(shape.mesh)) ? shape.mesh : -1;
+    };
+    const auto plainMesh = [&](std::size_t i) { return firstUse(scene.shapes[i]); };
+    const auto instanceMesh = [&](std::size_t j) {
+        const Instance& instance = scene.instances[j];
+        return instance.ownPrototype ? firstUse(scene.prototypes.at(static_cast<std::size_t>(instance.prototype))) : -1;
+    };
+    std::vector<ShapeSlot> order;
+    std::size_t i = 0, j = 0;
+    while (i < scene.shapes.size() || j < scene.instances.size()) {
+        const int p = i < scene.shapes.size() ? plainMesh(i) : -2;
+        const int q = j < scene.instances.size() ? instanceMesh(j) : -2;
+        // An entry that loads no new mesh goes first; of two that do, the one whose mesh comes first.
+        const bool takePlain = p == -1 || (p >= 0 && (q == -2 || (q >= 0 && p < q)));
+        if (takePlain) {
+            if (p >= 0) seen[static_cast<std::size_t>(p)] = true;
+            order.push_back({false, i++});
+        } else {
+            if (q >= 0) seen[static_cast<std::size_t>(q)] = true;
+            order.push_back({true, j++});
+        }
+    }
+    return order;
 }
 
 }  // namespace vkrt::writing

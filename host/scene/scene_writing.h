@@ -19,7 +19,8 @@ std::string vec3Text(const glm::vec3& v);  // "x y z", the form every course fil
 
 // `path` (as the model stores it, resolved) relative to the folder the scene is written to, so the
 // written file finds the same meshes, textures and environment maps; absolute when no relative
-// path exists (another drive or root). An environment-map prefix keeps its partial file name.
+// path exists (another drive or root) or when the output folder's path runs through a symbolic
+// link (where `..` would not lead back). An environment-map prefix keeps its partial file name.
 std::string relativePath(const std::string& path, const std::filesystem::path& outputDirectory);
 
 // The type name a loader reads back as this shader: Diffuse (diffuseBounce), Emitter (emission),
@@ -44,5 +45,14 @@ std::string_view axisName(int axis);  // X, Y, Z
 // Scene::prototypes placed through instance ids (written as the format's prototypes), as opposed
 // to those that are a transformed plain shape's own (Instance::ownPrototype).
 std::vector<bool> namedPrototypes(const Scene& scene);
+
+// The one shape list both formats write, from Scene::shapes (plain) and Scene::instances: each keeps
+// its order, and they are interleaved so that meshes come up in Scene::meshes' order, which the
+// loaders number by first use (named prototypes first, then shape lights, then the shape list).
+struct ShapeSlot {
+    bool instance = false;  // Scene::instances[index], else Scene::shapes[index]
+    std::size_t index = 0;
+};
+std::vector<ShapeSlot> shapeOrder(const Scene& scene);
 
 }  // namespace vkrt::writing

@@ -31,7 +31,8 @@ bool isElement(pugi::xml_node node, std::string_view name) {
 
 // Two passes over the document (docs/XML_FORMAT.md §7.2), so that child and element order never matter:
 //   1. definitions by name: textures, shaders (top-level and inline in shapes), prototypes;
-//   2. everything placed in the scene: cameras, lights, shapes and instances, scene parameters.
+//   2. everything placed in the scene: cameras and lights, then shapes and instances, then scene
+//      parameters.
 class SceneBuilder {
 public:
     SceneBuilder(const ParseContext& context, Scene& scene) : context_(context), scene_(scene), meshes_(scene.meshes) {}
@@ -56,15 +57,16 @@ public:
             } else if (name == "light") {
                 if (std::string_view(node.attribute("type").value()) == "shape") placeShapeLight(node);
                 else if (auto light = parseLight(context_, node)) scene_.lights.push_back(*light);
-            } else if (name == "shape") {
-                placeShape(node);
             } else if (name == "sceneParameters") {
                 if (parameters) context_.warn(node, "repeated inside <scene>, the first one is used");
                 else parameters = node;
-            } else if (name != "shader" && name != "texture" && name != "instance") {
+            } else if (name != "shader" && name != "texture" && name != "instance" && name != "shape") {
                 context_.warn(node, "unknown element inside <scene>, ignored");
             }
         }
+        // Shapes after every light, as JSON reads them: a shape light's mesh then takes the same
+        // place in Scene::meshes (the order of first use) whichever format the scene comes from.
+        for (pugi::xml_node node : root.children("shape")) placeShape(node);
         if (scene_.cameras.empty()) context_.fail(root, "the scene has no <camera>");
         readSceneParameters(root, parameters);
     }

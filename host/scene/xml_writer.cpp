@@ -30,8 +30,10 @@ public:
         for (std::size_t i = 0; i < scene_.shaders.size(); ++i) writeShader(root.append_child("shader"), scene_.shaders[i], shaderNames_[i]);
         for (std::size_t i = 0; i < scene_.prototypes.size(); ++i)
             if (named_[i]) writeShape(root.append_child("instance"), scene_.prototypes[i]);
-        for (const Shape& plain : scene_.shapes) writeShape(root.append_child("shape"), plain);
-        for (const Instance& placed : scene_.instances) writeInstance(root.append_child("shape"), placed);
+        for (const writing::ShapeSlot& slot : writing::shapeOrder(scene_)) {
+            if (slot.instance) writeInstance(root.append_child("shape"), scene_.instances[slot.index]);
+            else writeShape(root.append_child("shape"), scene_.shapes[slot.index]);
+        }
     }
 
 private:

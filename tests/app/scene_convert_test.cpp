@@ -12,6 +12,7 @@
 #include "diagnostics.h"
 #include "scene_compare.h"
 #include "scene_convert.h"
+#include "render_options.h"
 #include "scene_loader.h"
 #include "scene_writing.h"
 
@@ -107,6 +108,36 @@ TEST(SceneConvert, ABadInputLeavesTheOutputUntouched) {
     std::size_t files = 0;
     for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++files;
     EXPECT_EQ(files, 2u);
+}
+
+// Through a symbolic link, `..` from the output folder leads elsewhere than its spelling: the
+// written paths must find the mesh from the file's real folder too.
+TEST(SceneConvert, PathsWorkFromAnOutputFolderReachedThroughASymbolicLink) {
+    const fs::path dir = freshDir("symlink");
+    fs::create_directories(dir / "scenes");
+    fs::create_directories(dir / "elsewhere" / "deep");
+    fs::create_directory_symlink(dir / "elsewhere" / "deep", dir / "link");
+    writeFile(dir / "scenes" / "m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    writeFile(dir / "scenes" / "s.xml", R"(<scene><camera><position>0 0 5</position><viewDir>0 0 -1</viewDir></camera>
+<shader name="s" type="Lambertian"><diffuse>1 1 1</diffuse></shader><shape type="mesh"><shader ref="s"/><file>m.obj</file></shape></scene>)");
+    Diagnostics diagnostics;
+    convertScene((dir / "scenes" / "s.xml").string(), (dir / "link" / "out.json").string(), diagnostics);
+    Diagnostics reload;
+    const Scene viaRealPath = loadScene((dir / "elsewhere" / "deep" / "out.json").string(), LoadOptions{}, reload);
+    ASSERT_EQ(viaRealPath.meshes.size(), 1u);
+    EXPECT_EQ(viaRealPath.meshes[0].triangles.size(), 1u);
+}
+
+// Ctrl-C during a conversion stops it between steps and leaves nothing behind.
+TEST(SceneConvert, AnInterruptStopsItLeavingNothing) {
+    const fs::path dir = freshDir("cancel");
+    writeFile(dir / "in.xml", kScene);
+    const std::atomic<bool> cancelled{true};
+    Diagnostics diagnostics;
+    EXPECT_THROW(convertScene((dir / "in.xml").string(), (dir / "out.json").string(), diagnostics, &cancelled), RenderCancelled);
+    std::size_t files = 0;
+    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++files;
+    EXPECT_EQ(files, 1u);
 }
 
 }  // namespace

@@ -368,6 +368,10 @@ TEST_F(JsonForms, SceneParametersMayNameTheCameraToRender) {
     const Issue issue = jsonErrorOf(json);
     expectJsonIssueAt(issue, json, R"("c")", "scene.sceneParameters.camera", "c");
     EXPECT_NE(issue.problem.find("no camera of that name"), std::string::npos) << issue.message();
+    // "" names a nameless camera, as an empty XML <camera/> does.
+    const std::string unnamed = R"("camera": [{"_name": "a", "position": "0 0 0", "viewDir": "0 0 -1"},)"
+                                R"({"position": "1 0 0", "viewDir": "0 0 -1"}])";
+    EXPECT_EQ(loadJsonClean("{\"scene\": {" + unnamed + R"(, "sceneParameters": {"camera": ""}}})").defaultCamera, 1);
 }
 
 TEST_F(JsonForms, StrictTurnsTheFirstWarningIntoTheError) {

@@ -123,6 +123,10 @@ TEST_F(ObjMeshErrors, GarbageTinyobjloaderWouldAcceptIsRefusedAtItsLine) {
     EXPECT_EQ(objError("word.obj", tri + "f 1 2 x\n"), "OBJ line 4: f: vertex index is not an integer 'x'");
     EXPECT_EQ(objError("short.obj", tri + "f 1 2\n"), "OBJ line 4: f: a face needs at least 3 corners, found 2");
     EXPECT_EQ(objError("ahead.obj", "f 1 2 3\n" + tri), "OBJ line 1: f: vertex index beyond the 0 defined before this line '1'");
+    // Lines end at \n, \r\n or a lone \r (tinyobjloader's reading), and line numbers count them so.
+    EXPECT_EQ(objError("cr.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 4\r"), "OBJ line 4: f: vertex index beyond the 3 defined before this line '4'");
+    EXPECT_EQ(objError("crlf.obj", "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 4\r\n"), "OBJ line 4: f: vertex index beyond the 3 defined before this line '4'");
+    EXPECT_EQ(objError("plus.obj", "v +1 0 0\nv 1 +0.5 0\nv 0 1 0\nf +1 2 3\n"), "(loaded)");
     // Still fine: comments, w and vertex colours, v//vn corners, negative indices.
     EXPECT_EQ(objError("ok.obj", "v 0 0 0 1 # w\nv 1 0 0 0.5 0.5 0.5\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf -3 -2 -1\n"), "(loaded)");
 }

@@ -177,6 +177,31 @@ TEST_F(SceneRoundTripFields, AHandMadeSceneWithEveryFieldSurvivesBothWriters) {
     }
 }
 
+// Meshes are numbered by first use; a transformed mesh shape (an instance in the model) before a
+// plain one, and a shape light's mesh after both in the file, come back in the same order.
+TEST_F(SceneRoundTripFields, MeshesComeBackInTheOrderOfFirstUse) {
+    write("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    write("b.obj", "v 0 0 0\nv 2 0 0\nv 0 2 0\nf 1 2 3\n");
+    write("c.obj", "v 0 0 0\nv 3 0 0\nv 0 3 0\nf 1 2 3\n");
+    const std::string xml = R"(<scene><camera><position>0 0 5</position><viewDir>0 0 -1</viewDir></camera>
+  <shader name="s" type="Lambertian"><diffuse>1 1 1</diffuse></shader>
+  <shape type="mesh"><shader ref="s"/><file>b.obj</file><transform><translate>1 0 0</translate></transform></shape>
+  <shape type="mesh"><shader ref="s"/><file>a.obj</file></shape>
+  <light type="shape"><intensity>1 1 1</intensity><shape type="mesh"><file>c.obj</file></shape></light>
+</scene>
+)";
+    Diagnostics diagnostics;
+    const Scene original = load(xml, diagnostics);
+    ASSERT_EQ(original.meshes.size(), 3u);
+    EXPECT_EQ(fs::path(original.meshes[0].path).filename(), "c.obj");  // lights are placed before shapes
+    for (Format format : {Format::Json, Format::Xml}) {
+        const fs::path out = dir / (format == Format::Json ? "meshes.json" : "meshes_out.xml");
+        writeScene(original, format, out);
+        const SceneDifferences d = compareScenes(original, loadQuietly(out.string()));
+        EXPECT_TRUE(d.equal()) << out << ":\n" << d.summary();
+    }
+}
+
 // Each floatText reads back as its float through the loaders' path (decimal -> double -> float),
 // over random bit patterns of every exponent, subnormals and the extremes included.
 TEST(SceneWriting, EveryFloatTextReadsBackAsTheSameFloat) {

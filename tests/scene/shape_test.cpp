@@ -139,8 +139,9 @@ TEST_F(ShapeParsing, UnknownElementsWarnWithTheirLineAndAreIgnored) {
     const Scene scene = load(xml, diagnostics);
     EXPECT_EQ(scene.shapes.size(), 1u);
     ASSERT_EQ(diagnostics.warnings().size(), 2u);
-    expectIssue(diagnostics.warnings()[0], lineOf(xml, "<attribute>"), "attribute", "");
-    expectIssue(diagnostics.warnings()[1], lineOf(xml, "<fog"), "fog", "");
+    // In the order of the passes (XML_FORMAT.md §7.2): the scene's own children, then its shapes.
+    expectIssue(diagnostics.warnings()[0], lineOf(xml, "<fog"), "fog", "");
+    expectIssue(diagnostics.warnings()[1], lineOf(xml, "<attribute>"), "attribute", "");
     EXPECT_THROW(load(xml, diagnostics, /*strict=*/true), SceneError);
 }
 
