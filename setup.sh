@@ -11,6 +11,7 @@ packages=(
   libglm-dev libtinyobjloader-dev libopenimageio-dev openimageio-tools libpugixml-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev
   gnuplot-nox
+  clang libclang-rt-14-dev
   python3
 )
 
