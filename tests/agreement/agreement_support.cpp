@@ -31,6 +31,15 @@ GpuRenderer& gpu() {
     return *renderer;
 }
 
+std::size_t differingPixels(const Image& a, const Image& b) {
+    EXPECT_EQ(a.width, b.width);
+    EXPECT_EQ(a.height, b.height);
+    if (a.pixels.size() != b.pixels.size()) return std::max(a.pixels.size(), b.pixels.size());
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) n += a.pixels[i] != b.pixels[i];
+    return n;
+}
+
 RenderOptions small(int size, int rpp) {
     RenderOptions options;
     options.width = size;

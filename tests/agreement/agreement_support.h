@@ -39,6 +39,10 @@ struct DeviceImages {
 // message and no non-finite sample on either device.
 DeviceImages renderBoth(const Scene& scene, RenderOptions options, KernelVariant variant = KernelVariant::Specialised);
 
+// Pixels of a and b (same size) that differ in any channel, floats compared exactly (bit-identity
+// tests: twins, round trips).
+std::size_t differingPixels(const Image& a, const Image& b);
+
 struct Agreement {
     ImageDifference diff;
     bool ok = false;

@@ -51,15 +51,6 @@ TEST(GpuCpuAgreement, EveryJsonSceneAt64x64With1Rpp) {
 // The instructor references' background (50/255 grey, upstream/reference/README.md).
 const glm::vec3 kTwinBackground(50.0f / 255.0f);
 
-// Pixels of a and b (same size) that differ in any channel, floats compared exactly.
-std::size_t differingPixels(const Image& a, const Image& b) {
-    EXPECT_EQ(a.width, b.width);
-    EXPECT_EQ(a.height, b.height);
-    if (a.pixels.size() != b.pixels.size()) return std::max(a.pixels.size(), b.pixels.size());
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < a.pixels.size(); ++i) n += a.pixels[i] != b.pixels[i];
-    return n;
-}
 
 // Bit-identical, not merely close: the twins hold equal scene models (floats exactly), so every
 // step after the loader (trees, tables, kernels, samples) sees the same input.

@@ -35,13 +35,6 @@ Scene throughTheOtherFormat(const Scene& scene, const std::string& path, const f
     return loadQuietly(written.string());
 }
 
-std::size_t differingPixels(const Image& a, const Image& b) {
-    if (a.pixels.size() != b.pixels.size()) return std::max(a.pixels.size(), b.pixels.size());
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < a.pixels.size(); ++i) n += a.pixels[i] != b.pixels[i];
-    return n;
-}
-
 TEST(SceneRoundTrip, EveryFileRendersBitIdenticallyAfterConversionOnBothDevices) {
     VKRT_SKIP_WITHOUT(upstreamDir());
     VKRT_SKIP_WITHOUT(jsonSceneDir());
