@@ -19,6 +19,7 @@
 #include "gpu_renderer.h"
 #include "image_compare.h"
 #include "interrupt.h"
+#include "output_file.h"
 #include "scene_convert.h"
 #include "scene_loader.h"
 #include "statistical_compare.h"
@@ -136,9 +137,7 @@ void checkImageFitsInMemory(int width, int height) {
 // Before the render, so that a long render is not thrown away for a bad -o.
 void checkOutputBeforeRendering(const std::string& output, const std::string& scenePath) {
     checkImageOutputPath(output);
-    std::error_code ec;
-    if (std::filesystem::equivalent(output, scenePath, ec))
-        throw std::runtime_error(output + ": is the scene file itself; choose another output name (-o)");
+    checkNotTheInput(output, scenePath);
 }
 
 int runRender(CommandLine& cl) {
@@ -232,14 +231,18 @@ int runCompare(CommandLine& cl) {
 int runConvert(const CommandLine& cl) {
     Diagnostics diagnostics(cl.strict);
     const auto start = std::chrono::steady_clock::now();
+    // The input's warnings are printed whether the conversion succeeds or not.
+    const auto printWarnings = [&] {
+        for (const std::string& line : diagnostics.messages()) std::cerr << "warning: " << line << "\n";
+    };
     Conversion conversion;
     try {
         conversion = convertScene(cl.scenePath, cl.outputPath, diagnostics, cl.render.cancel);
     } catch (...) {
-        for (const std::string& line : diagnostics.messages()) std::cerr << "warning: " << line << "\n";
+        printWarnings();
         throw;
     }
-    for (const std::string& line : diagnostics.messages()) std::cerr << "warning: " << line << "\n";
+    printWarnings();
     if (conversion.renamedShaders > 0)
         std::cerr << "note: " << conversion.renamedShaders
                   << " nameless shader(s) written as 'unnamed shader N' (a shader needs a name to be referred to there)\n";

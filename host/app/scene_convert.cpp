@@ -1,14 +1,11 @@
 #include "scene_convert.h"
 
-#include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
-#include <unistd.h>
-
 #include "json_writer.h"
+#include "output_file.h"
 #include "render_options.h"
 #include "scene_compare.h"
 #include "scene_loader.h"
@@ -21,24 +18,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string lowerExtension(const std::string& path) {
-    std::string ext = fs::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
-}
-
 // Before anything is read, as for images: a bad -o never costs the load of a 100K-triangle mesh.
 std::string checkOutput(const std::string& output, const std::string& input) {
     const std::string ext = lowerExtension(output);
     if (ext != ".json" && ext != ".xml")
         throw std::runtime_error(output + ": unsupported scene format '" + ext + "' (use .json or .xml)");
-    const fs::path parent = fs::path(output).parent_path();
-    const fs::path dir = parent.empty() ? fs::path(".") : parent;
-    std::error_code ec;
-    if (!fs::is_directory(dir, ec)) throw std::runtime_error(output + ": the folder '" + dir.string() + "' does not exist");
-    if (::access(dir.c_str(), W_OK) != 0) throw std::runtime_error(output + ": the folder '" + dir.string() + "' is not writable");
-    if (fs::is_directory(output, ec)) throw std::runtime_error(output + ": is a folder, not a scene file");
-    if (fs::equivalent(output, input, ec)) throw std::runtime_error(output + ": is the input file itself; choose another output name");
+    checkOutputFolder(output, "a scene file");
+    checkNotTheInput(output, input);
     return ext.substr(1);
 }
 
@@ -74,8 +60,7 @@ Conversion convertScene(const std::string& input, const std::string& output, Dia
     const Scene scene = loadScene(input, LoadOptions{diagnostics.strict()}, diagnostics);
     checkCancel();
 
-    const fs::path target(output);
-    const fs::path directory = target.parent_path();
+    const fs::path directory = fs::path(output).parent_path();
     const std::string text = conversion.format == "json" ? jsonSceneText(scene, directory) : xmlSceneText(scene, directory);
 
     // The model the file must load back as (the names and placeholders a write changes).
@@ -85,14 +70,14 @@ Conversion convertScene(const std::string& input, const std::string& output, Dia
         if (scene.shaders[i].undefined) conversion.definedPlaceholders.push_back(scene.shaders[i].name);
     }
 
-    // Same folder, so the rename is atomic and relative paths resolve as they will in the result.
-    const fs::path temp = directory / ("." + target.filename().string() + ".partial-" + std::to_string(::getpid()));
-    try {
-        writeText(temp, text);
+    // Written beside OUT (so relative paths resolve as they will in the result), loaded back and
+    // compared before the rename.
+    writeAtomically(output, [&](const std::string& temporary) {
+        writeText(temporary, text);
         Diagnostics reloadWarnings;  // the input's warnings were reported; the result may repeat some
         Scene reloaded;
         try {
-            reloaded = loadScene(temp.string(), LoadOptions{}, reloadWarnings);
+            reloaded = loadScene(temporary, LoadOptions{}, reloadWarnings);
         } catch (const SceneError& e) {
             throw std::runtime_error(output + ": not written: the converted scene does not load (please report this): " +
                                      e.what());
@@ -103,12 +88,7 @@ Conversion convertScene(const std::string& input, const std::string& output, Dia
             throw std::runtime_error(output + ": not written: the converted scene does not load back as the same scene (" +
                                      std::to_string(differences.count) + " fields differ; please report this):\n" +
                                      differences.summary());
-        fs::rename(temp, target);
-    } catch (...) {
-        std::error_code ignored;
-        fs::remove(temp, ignored);
-        throw;
-    }
+    });
     conversion.counts = countsOf(scene);
     return conversion;
 }

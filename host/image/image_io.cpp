@@ -11,15 +11,11 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include "output_file.h"
+
 namespace vkrt {
 
 namespace {
-
-std::string lowerExtension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext;
-}
 
 bool isSupportedOutput(const std::string& ext) {
     return ext == ".exr" || ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".ppm";
@@ -53,30 +49,12 @@ void checkImageOutputPath(const std::string& path) {
     const std::string ext = lowerExtension(path);
     if (!isSupportedOutput(ext))
         throw std::runtime_error(path + ": unsupported output format '" + ext + "' (use .png, .exr, .jpg or .ppm)");
-    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    const std::filesystem::path dir = parent.empty() ? std::filesystem::path(".") : parent;
-    std::error_code ec;
-    if (!std::filesystem::is_directory(dir, ec))
-        throw std::runtime_error(path + ": the folder '" + dir.string() + "' does not exist");
-    if (::access(dir.c_str(), W_OK) != 0)
-        throw std::runtime_error(path + ": the folder '" + dir.string() + "' is not writable");
-    if (std::filesystem::is_directory(path, ec)) throw std::runtime_error(path + ": is a folder, not an image file");
+    checkOutputFolder(path, "an image file");
 }
 
 void writeImage(const Image& image, const std::string& path) {
     checkImageOutputPath(path);
-    // Same folder, so the rename is atomic; the pid keeps two processes writing one name apart.
-    const std::filesystem::path target(path);
-    const std::filesystem::path temp =
-        target.parent_path() / ("." + target.filename().string() + ".partial-" + std::to_string(::getpid()));
-    try {
-        writeImageFile(image, path, temp.string());
-        std::filesystem::rename(temp, target);
-    } catch (...) {
-        std::error_code ignored;
-        std::filesystem::remove(temp, ignored);
-        throw;
-    }
+    writeAtomically(path, [&](const std::string& temporary) { writeImageFile(image, path, temporary); });
 }
 
 Image readImage(const std::string& path) {

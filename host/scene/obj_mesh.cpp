@@ -63,6 +63,15 @@ struct TripleHash {
     }
 };
 
+// An istream over text already in memory, without the copy std::istringstream makes (a 100 MB OBJ
+// would be held three times).
+struct TextBuffer : std::streambuf {
+    explicit TextBuffer(const std::string& text) {
+        char* begin = const_cast<char*>(text.data());  // read only: the get area is never written
+        setg(begin, begin, begin + text.size());
+    }
+};
+
 glm::vec3 vec3At(const std::vector<tinyobj::real_t>& values, int index) {
     const std::size_t i = static_cast<std::size_t>(index) * 3;
     return {values[i], values[i + 1], values[i + 2]};
@@ -80,7 +89,8 @@ Mesh loadObjMesh(const std::string& path) {
     buffer << file.rdbuf();
     const std::string text = buffer.str();
     validateObjText(text);  // what tinyobjloader would accept silently (obj_validation.h)
-    std::istringstream in(text);
+    TextBuffer buffered(text);
+    std::istream in(&buffered);
 
     tinyobj::attrib_t attrib;
     std::vector<tinyobj::shape_t> shapes;

@@ -91,7 +91,7 @@ TEST(SceneConvert, BadOutputsAreRefusedBeforeTheInputIsRead) {
     fs::create_directories(dir / "folder.json");
     EXPECT_NE(refusal(missing, (dir / "folder.json").string()).find("is a folder"), std::string::npos);
     writeFile(dir / "in.xml", kScene);
-    EXPECT_NE(refusal((dir / "in.xml").string(), (dir / "." / "in.xml").string()).find("is the input file itself"),
+    EXPECT_NE(refusal((dir / "in.xml").string(), (dir / "." / "in.xml").string()).find("is the scene file itself"),
               std::string::npos);
     EXPECT_EQ(readFile(dir / "in.xml"), kScene);
 }

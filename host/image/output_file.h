@@ -1,0 +1,25 @@
+// Files vkrt writes (images, converted scenes): checked before the work that makes them, so a long
+// render or load is not thrown away for a typo in -o, and written beside their name and renamed into
+// place, so a reader (or a kill during the write) never sees a partial file.
+#pragma once
+
+#include <functional>
+#include <string>
+
+namespace vkrt {
+
+// The extension with its dot, lower case (".png" for "X.PNG").
+std::string lowerExtension(const std::string& path);
+
+// Throws std::runtime_error naming `path` when its folder does not exist or cannot be written, or
+// when `path` is a folder; `what` names what it should be ("an image file", "a scene file").
+void checkOutputFolder(const std::string& path, const char* what);
+
+// Throws std::runtime_error when `output` is the file `input` under any spelling.
+void checkNotTheInput(const std::string& output, const std::string& input);
+
+// Calls write(temporary) for a temporary name in `path`'s folder (the pid keeps two processes apart),
+// then renames it to `path`; on any exception the temporary is removed and the exception goes on.
+void writeAtomically(const std::string& path, const std::function<void(const std::string& temporary)>& write);
+
+}  // namespace vkrt
