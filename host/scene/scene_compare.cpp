@@ -1,5 +1,6 @@
 #include "scene_compare.h"
 
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <functional>
@@ -59,12 +60,12 @@ public:
         if (a.size() != b.size()) return note(field + ".size", std::to_string(a.size()), std::to_string(b.size()));
         for (std::size_t i = 0; i < a.size(); ++i) compare(field + "[" + std::to_string(i) + "]", a[i], b[i]);
     }
-    // Bulk data (texels, vertices): the first differing element only.
-    template <typename T, typename Equal>
-    void data(const std::string& field, const std::vector<T>& a, const std::vector<T>& b, Equal equal) {
+    // Bulk data (texels, vertices): the first differing element only, shown by `text`.
+    template <typename T, typename Equal, typename Text>
+    void data(const std::string& field, const std::vector<T>& a, const std::vector<T>& b, Equal equal, Text text) {
         if (a.size() != b.size()) return note(field + ".size", std::to_string(a.size()), std::to_string(b.size()));
         for (std::size_t i = 0; i < a.size(); ++i)
-            if (!equal(a[i], b[i])) return note(field + "[" + std::to_string(i) + "]", "one value", "another");
+            if (!equal(a[i], b[i])) return note(field + "[" + std::to_string(i) + "]", text(a[i]), text(b[i]));
     }
 
     SceneDifferences result;
@@ -75,6 +76,13 @@ private:
 
 bool sameVec3(const glm::vec3& a, const glm::vec3& b) { return sameBits(a.x, b.x) && sameBits(a.y, b.y) && sameBits(a.z, b.z); }
 bool sameVec2(const glm::vec2& a, const glm::vec2& b) { return sameBits(a.x, b.x) && sameBits(a.y, b.y); }
+std::string vec2Text(const glm::vec2& v) { return writing::floatText(v.x) + " " + writing::floatText(v.y); }
+std::string indexText(const glm::uvec3& t) { return std::to_string(t.x) + " " + std::to_string(t.y) + " " + std::to_string(t.z); }
+std::string texelText(std::uint32_t rgba) {
+    char hex[16];
+    std::snprintf(hex, sizeof hex, "0x%08x", rgba);
+    return hex;
+}
 
 void compareShape(Differ& d, const std::string& f, const Shape& a, const Shape& b) {
     d.check(f + ".name", a.name, b.name);
@@ -151,14 +159,14 @@ SceneDifferences compareScenes(const Scene& a, const Scene& b, std::size_t limit
         d.checkPath(f + ".path", x.path, y.path);
         d.check(f + ".width", x.width, y.width);
         d.check(f + ".height", x.height, y.height);
-        d.data(f + ".rgba8", x.rgba8, y.rgba8, std::equal_to<>());
+        d.data(f + ".rgba8", x.rgba8, y.rgba8, std::equal_to<>(), texelText);
     });
     d.each("meshes", a.meshes, b.meshes, [&](const std::string& f, const Mesh& x, const Mesh& y) {
         d.checkPath(f + ".path", x.path, y.path);
-        d.data(f + ".positions", x.positions, y.positions, sameVec3);
-        d.data(f + ".normals", x.normals, y.normals, sameVec3);
-        d.data(f + ".uvs", x.uvs, y.uvs, sameVec2);
-        d.data(f + ".triangles", x.triangles, y.triangles, std::equal_to<>());
+        d.data(f + ".positions", x.positions, y.positions, sameVec3, writing::vec3Text);
+        d.data(f + ".normals", x.normals, y.normals, sameVec3, writing::vec3Text);
+        d.data(f + ".uvs", x.uvs, y.uvs, sameVec2, vec2Text);
+        d.data(f + ".triangles", x.triangles, y.triangles, std::equal_to<>(), indexText);
     });
     const auto shape = [&](const std::string& f, const Shape& x, const Shape& y) { compareShape(d, f, x, y); };
     d.each("shapes", a.shapes, b.shapes, shape);

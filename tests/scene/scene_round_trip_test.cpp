@@ -250,6 +250,11 @@ TEST(SceneCompare, ReportsEachDifferingFieldByItsPath) {
     b = a;
     b.meshes[0].positions.push_back(glm::vec3(1.0f));
     EXPECT_NE(compareScenes(a, b).summary().find("meshes[0].positions.size: 0 vs 1"), std::string::npos);
+    // Bulk data names the first differing element by its values.
+    Scene c = b;
+    c.meshes[0].positions[0].z = 2.0f;
+    EXPECT_NE(compareScenes(b, c).summary().find("meshes[0].positions[0]: 1 1 1 vs 1 1 2"), std::string::npos)
+        << compareScenes(b, c).summary();
 }
 
 }  // namespace
