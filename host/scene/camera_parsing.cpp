@@ -2,12 +2,13 @@
 
 #include <string_view>
 
+#include "local_origin.h"
 #include "scene_rules.h"
 #include "value_parsing.h"
 
 namespace vkrt {
 
-Camera parseCamera(const ParseContext& context, pugi::xml_node node) {
+Camera parseCamera(const ParseContext& context, pugi::xml_node node, glm::dvec3* exactPosition) {
     checkAttributes(context, node, {"type"});
     checkChildren(context, node, {"position", "viewDir", "lookatPoint", "focalLength", "imagePlaneWidth"});
     Camera camera;
@@ -21,14 +22,25 @@ Camera parseCamera(const ParseContext& context, pugi::xml_node node) {
         camera.type = known.value_or(CameraType::Perspective);
     }
 
-    camera.position = parseVec3(context, requireChild(context, node, "position"));
+    glm::dvec3 eye;
+    camera.position = parseVec3(context, requireChild(context, node, "position"), &eye);
+    if (exactPosition) *exactPosition = eye;
     const pugi::xml_node viewDir = node.child("viewDir");
     const pugi::xml_node lookatPoint = node.child("lookatPoint");
     if (!viewDir && !lookatPoint) context.fail(node, "missing required element <viewDir> (or <lookatPoint>)");
     // viewDir is parsed even when lookatPoint overrides it, so garbage in it is still reported.
     const glm::vec3 direction = viewDir ? parseVec3(context, viewDir) : glm::vec3(0.0f);
     if (lookatPoint) {
-        camera.gaze = parseVec3(context, lookatPoint) - camera.position;
+        glm::dvec3 target;
+        const glm::vec3 lookat = parseVec3(context, lookatPoint, &target);
+        // Under localOrigin the gaze is the difference of the file's numbers, taken in double (far
+        // from the origin the two floats would have lost it); otherwise the floats' difference.
+        camera.gaze = lookat - camera.position;
+        if (context.localOrigin) {
+            const std::optional<glm::vec3> gaze = rules::localPosition(target, eye);
+            if (!gaze) context.fail(lookatPoint, rules::kBeyondFloatLocally, elementText(lookatPoint));
+            camera.gaze = *gaze;
+        }
         if (const std::string p = rules::lookatProblem(camera.gaze); !p.empty()) context.fail(lookatPoint, p, elementText(lookatPoint));
     } else {
         camera.gaze = direction;

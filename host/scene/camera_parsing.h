@@ -12,6 +12,7 @@ namespace vkrt {
 // viewDir, as in LIB-boost), else viewDir. A zero gaze, focalLength <= 0 (perspective) or
 // imagePlaneWidth <= 0 is a SceneError. Defaults: focalLength 1, imagePlaneWidth 0.5. A missing
 // type means perspective; an unknown type is a warning and perspective.
-Camera parseCamera(const ParseContext& context, pugi::xml_node node);
+// `exactPosition`, when given, receives the eye in double (the local origin, local_origin.h).
+Camera parseCamera(const ParseContext& context, pugi::xml_node node, glm::dvec3* exactPosition = nullptr);
 
 }  // namespace vkrt

@@ -1,7 +1,9 @@
 #include "json_context.h"
 
 #include <algorithm>
+#include <optional>
 
+#include "local_origin.h"
 #include "number_text.h"
 
 namespace vkrt {
@@ -152,10 +154,12 @@ std::string readString(const JsonContext& context, const JsonNode& node) {
     return text;
 }
 
-float readScalar(const JsonContext& context, const JsonNode& node) {
+float readScalar(const JsonContext& context, const JsonNode& node, double* exact) {
     if (node->is_number()) {
-        const std::optional<float> value = finiteFloat(node->get<double>());
+        const double number = node->get<double>();
+        const std::optional<float> value = finiteFloat(number);
         if (!value) context.fail(node, kNotAFiniteFloat, quoted(context, node));
+        if (exact) *exact = number;
         return *value;
     }
     if (node->is_string()) {
@@ -164,26 +168,42 @@ float readScalar(const JsonContext& context, const JsonNode& node) {
         if (!number.error.empty()) context.fail(node, number.error, number.errorValue);
         context.warn(node, "a number written as a string, read as a number", text);
         if (number.irregular) context.warn(node, irregularNumberProblem(number, 1), text);
+        if (exact) *exact = number.exact[0];
         return number.values[0];
     }
     context.fail(node, std::string("expected a number, found ") + typeName(*node), quoted(context, node));
 }
 
-glm::vec3 readVec3(const JsonContext& context, const JsonNode& node) {
+glm::vec3 readVec3(const JsonContext& context, const JsonNode& node, glm::dvec3* exact) {
     if (node->is_string()) {
         const std::string text = node->get<std::string>();
         const NumberText numbers = readNumberText(text, 3);
         if (!numbers.error.empty()) context.fail(node, numbers.error, numbers.errorValue);
         if (numbers.irregular) context.warn(node, irregularNumberProblem(numbers, 3), text);
+        if (exact) *exact = {numbers.exact[0], numbers.exact[1], numbers.exact[2]};
         return {numbers.values[0], numbers.values[1], numbers.values[2]};
     }
     if (node->is_array()) {
         if (node->size() != 3) context.fail(node, "expected 3 numbers, found " + std::to_string(node->size()), quoted(context, node));
         glm::vec3 v;
-        for (std::size_t i = 0; i < 3; ++i) v[static_cast<int>(i)] = readScalar(context, {&(*node)[i], elementPath(node.path, i)});
+        glm::dvec3 d;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const int c = static_cast<int>(i);
+            v[c] = readScalar(context, {&(*node)[i], elementPath(node.path, i)}, &d[c]);
+        }
+        if (exact) *exact = d;
         return v;
     }
     context.fail(node, std::string("expected 3 numbers (a string or an array), found ") + typeName(*node), quoted(context, node));
+}
+
+glm::vec3 readPosition(const JsonContext& context, const JsonNode& node, bool world) {
+    if (!world || !context.localOrigin) return readVec3(context, node);
+    glm::dvec3 exact;
+    readVec3(context, node, &exact);
+    const std::optional<glm::vec3> local = rules::localPosition(exact, context.origin);
+    if (!local) context.fail(node, rules::kBeyondFloatLocally, quoted(context, node));
+    return *local;
 }
 
 }  // namespace vkrt

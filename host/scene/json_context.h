@@ -32,6 +32,8 @@ struct JsonContext {
     Diagnostics& diagnostics;
     bool strict = false;                   // LoadOptions::strict: every warning becomes a SceneError
     std::filesystem::path sceneDirectory;  // mesh, texture and env-map paths are relative to it
+    bool localOrigin = false;              // LoadOptions::localOrigin (local_origin.h)
+    glm::dvec3 origin{0.0};                // set once the default camera is known
 
     // An issue at the value's first byte, or at its key (for a key that is the problem), or at
     // any byte offset (element `path`; "json" when the path is the document's root).
@@ -69,8 +71,12 @@ std::string quoted(const JsonContext& context, const JsonNode& node);
 std::string readString(const JsonContext& context, const JsonNode& node);  // a non-empty string
 std::string readText(const JsonContext& context, const JsonNode& node);    // any string (names)
 // A JSON number, or a string holding one (accepted with a warning: the G0 files, §2).
-float readScalar(const JsonContext& context, const JsonNode& node);
+// `exact`, when given, receives the number in double before its rounding to float.
+float readScalar(const JsonContext& context, const JsonNode& node, double* exact = nullptr);
 // "x y z" (read like XML element text, number_text.h) or [x, y, z].
-glm::vec3 readVec3(const JsonContext& context, const JsonNode& node);
+glm::vec3 readVec3(const JsonContext& context, const JsonNode& node, glm::dvec3* exact = nullptr);
+// A point: in world space (`world`) under LoadOptions::localOrigin, read in double and stored
+// relative to context.origin (local_origin.h); otherwise readVec3.
+glm::vec3 readPosition(const JsonContext& context, const JsonNode& node, bool world);
 
 }  // namespace vkrt

@@ -9,6 +9,7 @@
 
 #include "json_context.h"
 #include "json_source.h"
+#include "local_origin.h"
 #include "mesh_library.h"
 #include "missing_shaders.h"
 #include "render_fallbacks.h"
@@ -65,7 +66,7 @@ public:
         for (const JsonNode& node : objectsOf(context_, member(scene, "shader"))) defineShader(node);
         for (const JsonNode& node : objectsOf(context_, member(scene, "instance"))) definePrototype(node);
 
-        for (const JsonNode& node : objectsOf(context_, member(scene, "camera"))) scene_.cameras.push_back(parseCamera(node));
+        placeCameras(scene);
         for (const JsonNode& node : objectsOf(context_, member(scene, "light"))) placeLight(node);
         for (const JsonNode& node : objectsOf(context_, member(scene, "shape"))) placeShape(node);
         if (scene_.cameras.empty()) context_.fail(scene, "the scene has no camera");
@@ -231,7 +232,9 @@ private:
         if (const JsonNode name = attributeMember(context_, node, "name")) shape.name = readText(context_, name);
         shape.type = type;
         shape.where = context_.locationOf(node);
-        parseGeometry(node, shape);
+        // Placed as it stands (no prototype, no transform): its points are world positions.
+        const bool world = role != ShapeRole::Prototype && !member(node, "xform") && !member(node, "transform");
+        parseGeometry(node, shape, world);
         const JsonNode reference = member(node, "shader");
         if (reference) {
             shape.shader = shaderOf(reference, role);
@@ -243,26 +246,26 @@ private:
         return shape;
     }
 
-    void parseGeometry(const JsonNode& node, Shape& shape) {
+    void parseGeometry(const JsonNode& node, Shape& shape, bool world) {
         switch (shape.type) {
             case ShapeType::Sphere: {
-                shape.center = readVec3(context_, requireMember(context_, node, "center"));
+                shape.center = readPosition(context_, requireMember(context_, node, "center"), world);
                 shape.radius = readChecked(requireMember(context_, node, "radius"), rules::radiusProblem);
                 break;
             }
             case ShapeType::Box: {
                 const JsonNode minPt = requireMember(context_, node, "minPt");
                 const JsonNode maxPt = requireMember(context_, node, "maxPt");
-                shape.minPt = readVec3(context_, minPt);
-                shape.maxPt = readVec3(context_, maxPt);
+                shape.minPt = readPosition(context_, minPt, world);
+                shape.maxPt = readPosition(context_, maxPt, world);
                 if (const std::string p = rules::orderBoxCorners(shape.minPt, shape.maxPt); !p.empty())
                     context_.warn(minPt, p, quoted(context_, minPt) + " > " + quoted(context_, maxPt));
                 break;
             }
             case ShapeType::Triangle: {
-                shape.v0 = readVec3(context_, requireMember(context_, node, "v0"));
-                shape.v1 = readVec3(context_, requireMember(context_, node, "v1"));
-                shape.v2 = readVec3(context_, requireMember(context_, node, "v2"));
+                shape.v0 = readPosition(context_, requireMember(context_, node, "v0"), world);
+                shape.v1 = readPosition(context_, requireMember(context_, node, "v1"), world);
+                shape.v2 = readPosition(context_, requireMember(context_, node, "v2"), world);
                 if (rules::isDegenerateTriangle(shape.v0, shape.v1, shape.v2)) context_.warn(node, rules::kDegenerateTriangle, shape.name);
                 break;
             }
@@ -280,20 +283,25 @@ private:
     }
 
     // --- transforms (§5) ---
-    std::vector<TransformStep> transformOf(const JsonNode& node) {
+    // No transform: no steps, the identity (moved to the local origin under localOrigin).
+    rules::Placement transformOf(const JsonNode& node) {
         const JsonNode xform = member(node, "xform");
         const JsonNode object = member(node, "transform");
         if (xform && object) context_.warnAtKey(object, "ignored, the shape's xform is used");
         const JsonNode& used = xform ? xform : object;
-        if (!used) return {};
-        std::vector<TransformStep> steps = xform ? parseXform(xform) : parseTransformObject(object);
-        if (const std::string p = rules::composedTransformProblem(rules::composeTransform(steps)); !p.empty())
-            context_.fail(used, p);
-        return steps;
+        rules::Placement placement;
+        std::vector<glm::dvec3> exactTranslations;  // one per step, read by translate steps
+        if (used) placement.steps = xform ? parseXform(xform, exactTranslations) : parseTransformObject(object, exactTranslations);
+        placement.objectToWorld = context_.localOrigin
+                                      ? rules::placeRelativeTo(placement.steps, exactTranslations, context_.origin)
+                                      : rules::composeTransform(placement.steps);
+        const std::string problem = used ? rules::composedTransformProblem(placement.objectToWorld) : "";
+        if (!problem.empty()) context_.fail(used, problem);
+        return placement;
     }
 
     // The ordered array: M = T0 * T1 * ... * Tn-1, the last listed acting first (as XML).
-    std::vector<TransformStep> parseXform(const JsonNode& node) {
+    std::vector<TransformStep> parseXform(const JsonNode& node, std::vector<glm::dvec3>& exactTranslations) {
         if (!node->is_array()) context_.fail(node, std::string("expected an array, found ") + typeName(*node), quoted(context_, node));
         std::vector<TransformStep> steps;
         for (std::size_t i = 0; i < node->size(); ++i) {
@@ -306,8 +314,9 @@ private:
                 context_.warn(typeNode, "read as rotation (the course's parser ignores this spelling)", kind);
                 kind = "rotation";
             }
+            glm::dvec3 exact(0.0);
             if (kind == "translate") {
-                steps.push_back({TransformKind::Translate, readVec3(context_, requireMember(context_, step, "amount")), 0});
+                steps.push_back({TransformKind::Translate, readVec3(context_, requireMember(context_, step, "amount"), &exact), 0});
             } else if (kind == "scale") {
                 steps.push_back({TransformKind::Scale, readScale(requireMember(context_, step, "amount")), 0});
             } else if (kind == "rotation") {
@@ -316,7 +325,9 @@ private:
                 steps.push_back({TransformKind::Rotate, glm::vec3(degrees, 0.0f, 0.0f), axis});
             } else {
                 context_.warn(typeNode, "unknown transform type, ignored", kind);
+                continue;
             }
+            exactTranslations.push_back(exact);
         }
         return steps;
     }
@@ -324,13 +335,15 @@ private:
     // The 2019 object {"translate", "rotate": {..} or [{..}, ..], "scale"}: xml2json kept one key
     // per kind, so the order between kinds is lost. Composed as M = T * R0 * R1 * ... * S, the
     // order of the XML files these came from (threeEggs.xml, metallicDragons.xml; §5).
-    std::vector<TransformStep> parseTransformObject(const JsonNode& node) {
+    std::vector<TransformStep> parseTransformObject(const JsonNode& node, std::vector<glm::dvec3>& exactTranslations) {
         requireObject(context_, node);
         checkKeys(context_, node, {"translate", "rotate", "scale"}, {"name"});
         std::vector<TransformStep> steps;
         int kinds = 0;
         if (const JsonNode e = member(node, "translate")) {
-            steps.push_back({TransformKind::Translate, readVec3(context_, e), 0});
+            glm::dvec3 exact;
+            steps.push_back({TransformKind::Translate, readVec3(context_, e, &exact), 0});
+            exactTranslations.push_back(exact);
             ++kinds;
         }
         if (const JsonNode e = member(node, "rotate")) {
@@ -339,11 +352,13 @@ private:
                 const int axis = readAxis(requireAttribute(context_, rotation, "axis"));
                 const float degrees = readScalar(context_, requireAttribute(context_, rotation, "angle"));
                 steps.push_back({TransformKind::Rotate, glm::vec3(degrees, 0.0f, 0.0f), axis});
+                exactTranslations.emplace_back(0.0);
             }
             ++kinds;
         }
         if (const JsonNode e = member(node, "scale")) {
             steps.push_back({TransformKind::Scale, readScale(e), 0});
+            exactTranslations.emplace_back(0.0);
             ++kinds;
         }
         if (kinds > 1)
@@ -365,7 +380,36 @@ private:
     }
 
     // --- pass 2 ---
-    Camera parseCamera(const JsonNode& node) {
+    // Cameras first, so that the default one is known before anything is placed: under
+    // LoadOptions::localOrigin its eye is the origin every world position is measured from.
+    void placeCameras(const JsonNode& scene) {
+        std::vector<glm::dvec3> eyes;
+        std::vector<JsonNode> positions;
+        for (const JsonNode& node : objectsOf(context_, member(scene, "camera"))) {
+            glm::dvec3 eye;
+            scene_.cameras.push_back(parseCamera(node, eye));
+            eyes.push_back(eye);
+            positions.push_back(member(node, "position"));
+        }
+        // The camera to render by name, as XML's <sceneParameters><camera> (vkrt's addition, §3.1).
+        const JsonNode parameters = member(scene, "sceneParameters");
+        if (parameters) requireObject(context_, parameters);
+        if (const JsonNode camera = member(parameters, "camera")) {
+            const std::string name = readText(context_, camera);  // "" names a nameless camera, as in XML
+            const std::optional<int> index = rules::cameraByName(scene_, name);
+            if (!index) context_.fail(camera, rules::kUnknownCameraName, name);
+            scene_.defaultCamera = *index;
+        }
+        if (!context_.localOrigin || eyes.empty()) return;
+        context_.origin = scene_.origin = eyes[static_cast<std::size_t>(scene_.defaultCamera)];
+        for (std::size_t i = 0; i < eyes.size(); ++i) {
+            const std::optional<glm::vec3> local = rules::localPosition(eyes[i], scene_.origin);
+            if (!local) context_.fail(positions[i], rules::kBeyondFloatLocally, quoted(context_, positions[i]));
+            scene_.cameras[i].position = *local;
+        }
+    }
+
+    Camera parseCamera(const JsonNode& node, glm::dvec3& eye) {
         checkKeys(context_, node, {"position", "viewDir", "lookatPoint", "focalLength", "imagePlaneWidth"}, {"name", "type"});
         Camera camera;
         if (const JsonNode name = attributeMember(context_, node, "name")) camera.name = readText(context_, name);
@@ -376,14 +420,21 @@ private:
             if (!known) context_.warn(type, rules::kUnknownCameraType, typeText);
             camera.type = known.value_or(CameraType::Perspective);
         }
-        camera.position = readVec3(context_, requireMember(context_, node, "position"));
+        camera.position = readVec3(context_, requireMember(context_, node, "position"), &eye);
         const JsonNode viewDir = member(node, "viewDir");
         const JsonNode lookatPoint = member(node, "lookatPoint");
         if (!viewDir && !lookatPoint) context_.fail(node, "missing required key viewDir (or lookatPoint)");
         // viewDir is read even when lookatPoint overrides it (J26, §3.1), so garbage in it is reported.
         const glm::vec3 direction = viewDir ? readVec3(context_, viewDir) : glm::vec3(0.0f);
         if (lookatPoint) {
-            camera.gaze = readVec3(context_, lookatPoint) - camera.position;
+            glm::dvec3 target;
+            camera.gaze = readVec3(context_, lookatPoint, &target) - camera.position;
+            // Under localOrigin the gaze is the difference of the file's numbers, taken in double.
+            if (context_.localOrigin) {
+                const std::optional<glm::vec3> gaze = rules::localPosition(target, eye);
+                if (!gaze) context_.fail(lookatPoint, rules::kBeyondFloatLocally, quoted(context_, lookatPoint));
+                camera.gaze = *gaze;
+            }
             if (const std::string p = rules::lookatProblem(camera.gaze); !p.empty()) context_.fail(lookatPoint, p, quoted(context_, lookatPoint));
         } else {
             camera.gaze = direction;
@@ -415,7 +466,7 @@ private:
         Light light;
         light.type = *known;
         light.where = context_.locationOf(node);
-        light.position = readVec3(context_, requireMember(context_, node, "position"));
+        light.position = readPosition(context_, requireMember(context_, node, "position"), /*world=*/true);
         light.intensity = readColourValue(requireMember(context_, node, "intensity"));
         if (light.type == LightType::Area) {
             const JsonNode normal = requireMember(context_, node, "normal");
@@ -456,8 +507,13 @@ private:
             emitter.shape = parseShape(shape, *type, ShapeRole::Emitter);
         }
         emitter.name = emitter.shape.name;
-        emitter.steps = transformOf(shape);
-        emitter.objectToWorld = rules::composeTransform(emitter.steps);
+        // A plain shape without a transform stands in world space (identity); an instance, or a
+        // shape with a transform, is placed by it.
+        if (emitter.prototype >= 0 || member(shape, "xform") || member(shape, "transform")) {
+            rules::Placement placement = transformOf(shape);
+            emitter.steps = std::move(placement.steps);
+            emitter.objectToWorld = placement.objectToWorld;
+        }
         scene_.emitters.push_back(emitter);
         scene_.lights.push_back(emitterStandInLight(scene_, static_cast<int>(scene_.emitters.size()) - 1));
         if (fallbacks_.first(Fallback::ShapeLight)) context_.warn(node, fallbackProblem(Fallback::ShapeLight), emitter.name);
@@ -487,8 +543,8 @@ private:
         }
         Shape shape = parseShape(node, *type, ShapeRole::Loose);
         if (member(node, "xform") || member(node, "transform")) {
-            const std::vector<TransformStep> steps = transformOf(node);
-            rules::addPlainShape(scene_, std::move(shape), &steps);
+            const rules::Placement placement = transformOf(node);
+            rules::addPlainShape(scene_, std::move(shape), &placement);
         } else {
             rules::addPlainShape(scene_, std::move(shape), nullptr);
         }
@@ -506,8 +562,9 @@ private:
         if (instance.shaderOverride < 0 && missingShaders_.isPlaceholder(shape.shader))
             context_.fail(node, "no shader: the prototype's shader reference is unresolved and the instance names none",
                           scene_.shaders[static_cast<std::size_t>(shape.shader)].name);
-        instance.steps = transformOf(node);
-        instance.objectToWorld = rules::composeTransform(instance.steps);
+        rules::Placement placement = transformOf(node);
+        instance.steps = std::move(placement.steps);
+        instance.objectToWorld = placement.objectToWorld;
         instance.where = context_.locationOf(node);
         scene_.instances.push_back(instance);
     }
@@ -521,13 +578,6 @@ private:
         if (parameters) {
             requireObject(context_, parameters);
             checkKeys(context_, parameters, {"bgColor", "envMapPrefix", "envMapVertCross", "camera"});
-            // The camera to render by name, as XML's <sceneParameters><camera> (vkrt's addition, §3.1).
-            if (const JsonNode camera = member(parameters, "camera")) {
-                const std::string name = readText(context_, camera);  // "" names a nameless camera, as in XML
-                const std::optional<int> index = rules::cameraByName(scene_, name);
-                if (!index) context_.fail(camera, rules::kUnknownCameraName, name);
-                scene_.defaultCamera = *index;
-            }
         }
         const JsonNode* used = nullptr;
         const JsonNode spellings[] = {member(parameters, "bgColor"), member(scene, "_bgColor"), member(scene, "bgColor")};
@@ -554,7 +604,7 @@ private:
         }
     }
 
-    const JsonContext& context_;
+    JsonContext context_;  // a copy: the origin is set once the cameras are read
     Scene& scene_;
     MeshLibrary meshes_;
     TextureTable textures_;
@@ -568,7 +618,7 @@ private:
 
 Scene loadJsonScene(const std::string& path, const std::string& text, const LoadOptions& options, Diagnostics& diagnostics) {
     const JsonSource source(path, text);
-    const JsonContext context{source, diagnostics, options.strict, std::filesystem::path(path).parent_path()};
+    const JsonContext context{source, diagnostics, options.strict, std::filesystem::path(path).parent_path(), options.localOrigin};
     Scene scene;
     scene.path = path;
     JsonSceneBuilder(context, scene).build(JsonNode{&source.root(), ""});

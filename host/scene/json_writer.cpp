@@ -205,6 +205,7 @@ private:
 }  // namespace
 
 std::string jsonSceneText(const Scene& scene, const std::filesystem::path& outputDirectory) {
+    writing::requireFileCoordinates(scene);
     // A name that is not UTF-8 (XML text can hold one) is written with U+FFFD in its place instead of
     // throwing; the written file then names it differently, and vkrt convert's check says so.
     return JsonSceneWriter(scene, outputDirectory).write().dump(2, ' ', false, Json::error_handler_t::replace) + "\n";

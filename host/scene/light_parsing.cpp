@@ -28,7 +28,7 @@ std::optional<Light> parseLight(const ParseContext& context, pugi::xml_node node
     }
     light.type = *known;
     checkChildren(context, node, {"position", "intensity", "normal", "width", "length"});
-    light.position = parseVec3(context, requireChild(context, node, "position"));
+    light.position = parsePosition(context, requireChild(context, node, "position"), /*world=*/true);
     light.intensity = parseColour(context, requireChild(context, node, "intensity"));
     if (light.type == LightType::Area) {
         const pugi::xml_node normal = requireChild(context, node, "normal");

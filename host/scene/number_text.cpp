@@ -64,6 +64,7 @@ NumberText readNumberText(const std::string& text, int count) {
             return out;
         }
         out.values[static_cast<std::size_t>(i)] = *f;
+        out.exact[static_cast<std::size_t>(i)] = value;
         pos = static_cast<std::size_t>(end - text.data());
         if (pos < text.size() && !isSpace(text[pos])) out.irregular = true;
     }

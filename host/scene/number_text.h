@@ -15,6 +15,8 @@ namespace vkrt {
 // then what istream would have read.
 struct NumberText {
     std::array<float, 3> values{};
+    std::array<double, 3> exact{};  // the same numbers in double, before rounding to float (the
+                                    // text's nearest double): positions rebased to a local origin
     std::string error;       // empty when the text holds `count` numbers
     std::string errorValue;  // the offending token (or the whole text), for the message
     bool irregular = false;

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include <glm/glm.hpp>
 #include <pugixml.hpp>
 
 #include "diagnostics.h"
@@ -20,6 +21,8 @@ struct ParseContext {
     Diagnostics& diagnostics;
     bool strict = false;                  // LoadOptions::strict: every warning becomes a SceneError
     std::filesystem::path sceneDirectory; // `file` and `sourcefile` paths are relative to it
+    bool localOrigin = false;             // LoadOptions::localOrigin (local_origin.h)
+    glm::dvec3 origin{0.0};               // set once the default camera is known
 
     // An issue about `node` (its element name and line).
     Issue issueAt(pugi::xml_node node, std::string problem, std::string value = {}) const;

@@ -155,6 +155,10 @@ struct Emitter {
 
 struct Scene {
     std::string path;                 // the scene file
+    // Where the model's coordinates start, in the file's world: every position above is relative
+    // to it. Zero (the file's own coordinates) unless loaded with LoadOptions::localOrigin, which
+    // puts it at the default camera's eye (local_origin.h).
+    glm::dvec3 origin{0.0};
     glm::vec3 background{0.0f};
     // Environment maps, resolved against the scene file's directory; recorded, not rendered (a
     // warning says so). envMapPrefix names six cube faces `<prefix>posX.png` ...; envMapVertCross

@@ -117,6 +117,14 @@ std::string SceneDifferences::summary() const {
 
 SceneDifferences compareScenes(const Scene& a, const Scene& b, std::size_t limit) {
     Differ d(limit);
+    if (a.origin != b.origin) {
+        const auto text = [](const glm::dvec3& v) {
+            char buffer[96];
+            std::snprintf(buffer, sizeof buffer, "%.17g %.17g %.17g", v.x, v.y, v.z);
+            return std::string(buffer);
+        };
+        d.note("origin", text(a.origin), text(b.origin));
+    }
     d.check("background", a.background, b.background);
     d.checkPath("envMapPrefix", a.envMapPrefix, b.envMapPrefix);
     d.checkPath("envMapVertCross", a.envMapVertCross, b.envMapVertCross);

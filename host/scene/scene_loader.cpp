@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "json_loader.h"
+#include "local_origin.h"
 #include "source_text.h"
 #include "xml_loader.h"
 
@@ -59,8 +60,10 @@ Scene loadScene(const std::string& path, const LoadOptions& options, Diagnostics
                           text.substr(at, 1), lines.columnOf(static_cast<std::ptrdiff_t>(at))});
     }
     // A known name with content of neither kind (empty, '['): that format's parser says what is wrong.
-    return format == Format::Xml ? loadXmlScene(path, text, options, diagnostics)
-                                 : loadJsonScene(path, text, options, diagnostics);
+    Scene scene = format == Format::Xml ? loadXmlScene(path, text, options, diagnostics)
+                                        : loadJsonScene(path, text, options, diagnostics);
+    if (options.localOrigin) rules::rebaseWorldMeshes(scene);
+    return scene;
 }
 
 }  // namespace vkrt

@@ -14,6 +14,10 @@ namespace vkrt {
 
 struct LoadOptions {
     bool strict = false;  // every warning becomes a SceneError
+    // Read world positions in double and store them relative to the default camera's eye
+    // (Scene::origin, local_origin.h): what renders use, so that a scene far from the origin keeps
+    // its image. Off, the model holds the file's own numbers (vkrt convert, the loader's tests).
+    bool localOrigin = false;
 };
 
 Scene loadScene(const std::string& path, const LoadOptions& options, Diagnostics& diagnostics);

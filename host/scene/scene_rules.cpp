@@ -256,16 +256,16 @@ std::string composedTransformProblem(const glm::mat4& objectToWorld) {
     return "";
 }
 
-void addPlainShape(Scene& scene, Shape shape, const std::vector<TransformStep>* steps) {
-    if (!steps) {
+void addPlainShape(Scene& scene, Shape shape, const Placement* placement) {
+    if (!placement) {
         scene.shapes.push_back(std::move(shape));
         return;
     }
     Instance instance;
     instance.name = shape.name;
     instance.prototype = static_cast<int>(scene.prototypes.size());
-    instance.steps = *steps;
-    instance.objectToWorld = composeTransform(instance.steps);
+    instance.steps = placement->steps;
+    instance.objectToWorld = placement->objectToWorld;
     instance.ownPrototype = true;
     instance.where = shape.where;
     scene.prototypes.push_back(std::move(shape));

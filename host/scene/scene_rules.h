@@ -117,9 +117,17 @@ glm::mat4 composeTransform(const std::vector<TransformStep>& steps);
 // entry beyond float (repeated scales overflow), or no inverse that float holds (they underflow).
 std::string composedTransformProblem(const glm::mat4& objectToWorld);
 
-// A plain shape: in Scene::shapes, or, when the file gives it a transform (`steps` not null), a
-// prototype of its own placed by one instance, so the renderers keep one transformed-shape path.
-void addPlainShape(Scene& scene, Shape shape, const std::vector<TransformStep>* steps);
+// A transform as read: the steps as the file lists them (what a written scene gives back) and the
+// matrix placing the object in the model's world (composeTransform(steps), or under
+// LoadOptions::localOrigin local_origin.h's placeRelativeTo).
+struct Placement {
+    std::vector<TransformStep> steps;
+    glm::mat4 objectToWorld{1.0f};
+};
+
+// A plain shape: in Scene::shapes, or, when the file gives it a transform (`placement` not null),
+// a prototype of its own placed by one instance, so the renderers keep one transformed-shape path.
+void addPlainShape(Scene& scene, Shape shape, const Placement* placement);
 
 // --- files named by the scene ---
 // `relative` resolved against the scene file's directory (meshes, textures, environment maps).

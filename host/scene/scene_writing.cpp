@@ -1,5 +1,7 @@
 #include "scene_writing.h"
 
+#include <stdexcept>
+
 #include <charconv>
 #include <cstdio>
 #include <set>
@@ -71,6 +73,11 @@ std::vector<std::string_view> writtenParameters(const Shader& shader) {
     for (std::string_view name : rules::shaderParametersUsedBy(*rules::shaderType(shaderTypeName(shader))))
         if (name != "diffusetex") written.push_back(name);
     return written;
+}
+
+void requireFileCoordinates(const Scene& scene) {
+    if (scene.origin != glm::dvec3(0.0))
+        throw std::logic_error("a scene loaded with a local origin cannot be written: load it without LoadOptions::localOrigin");
 }
 
 std::vector<std::string> shaderNames(const Scene& scene) {

@@ -33,6 +33,10 @@ std::vector<std::string_view> writtenParameters(const Shader& shader);
 // JSON "_name": "") "unnamed shader N", N the first number no other shader's name uses.
 std::vector<std::string> shaderNames(const Scene& scene);
 
+// A writer writes the file's own coordinates: a scene loaded with LoadOptions::localOrigin holds
+// positions relative to its camera and is refused (std::logic_error: the caller loaded it wrong).
+void requireFileCoordinates(const Scene& scene);
+
 // The model a written file loads back as: `scene` with the names shaderNames gives and every
 // undefined shader's placeholder written as a definition (undefined = false). These are the only
 // fields a write changes (docs/SCENE_CONVERSION.md).

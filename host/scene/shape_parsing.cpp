@@ -23,10 +23,10 @@ int meshOf(const ParseContext& context, pugi::xml_node file, MeshLibrary& meshes
 
 }  // namespace
 
-void parseGeometry(const ParseContext& context, pugi::xml_node node, Shape& shape, MeshLibrary& meshes) {
+void parseGeometry(const ParseContext& context, pugi::xml_node node, Shape& shape, MeshLibrary& meshes, bool world) {
     switch (shape.type) {
         case ShapeType::Sphere: {
-            shape.center = parseVec3(context, requireChild(context, node, "center"));
+            shape.center = parsePosition(context, requireChild(context, node, "center"), world);
             const pugi::xml_node radius = requireChild(context, node, "radius");
             shape.radius = parseScalar(context, radius);
             if (const std::string p = rules::radiusProblem(shape.radius); !p.empty()) context.fail(radius, p, elementText(radius));
@@ -35,16 +35,16 @@ void parseGeometry(const ParseContext& context, pugi::xml_node node, Shape& shap
         case ShapeType::Box: {
             const pugi::xml_node minPt = requireChild(context, node, "minPt");
             const pugi::xml_node maxPt = requireChild(context, node, "maxPt");
-            shape.minPt = parseVec3(context, minPt);
-            shape.maxPt = parseVec3(context, maxPt);
+            shape.minPt = parsePosition(context, minPt, world);
+            shape.maxPt = parsePosition(context, maxPt, world);
             if (const std::string p = rules::orderBoxCorners(shape.minPt, shape.maxPt); !p.empty())
                 context.warn(minPt, p, elementText(minPt) + " > " + elementText(maxPt));
             break;
         }
         case ShapeType::Triangle: {
-            shape.v0 = parseVec3(context, requireChild(context, node, "v0"));
-            shape.v1 = parseVec3(context, requireChild(context, node, "v1"));
-            shape.v2 = parseVec3(context, requireChild(context, node, "v2"));
+            shape.v0 = parsePosition(context, requireChild(context, node, "v0"), world);
+            shape.v1 = parsePosition(context, requireChild(context, node, "v1"), world);
+            shape.v2 = parsePosition(context, requireChild(context, node, "v2"), world);
             if (rules::isDegenerateTriangle(shape.v0, shape.v1, shape.v2)) context.warn(node, rules::kDegenerateTriangle, shape.name);
             break;
         }

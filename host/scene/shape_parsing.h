@@ -13,6 +13,8 @@ namespace vkrt {
 // elements, a radius <= 0, a box with minPt > maxPt on some axis (equal is allowed: a zero-
 // thickness box), a bad mesh file (named at its <file> element). A zero-area triangle is only a
 // warning (it is never hit). The rules are scene_rules.h's, shared with the JSON loader.
-void parseGeometry(const ParseContext& context, pugi::xml_node node, Shape& shape, MeshLibrary& meshes);
+// `world`: the shape is placed as it stands (not a prototype, no transform), so its points are
+// positions (parsePosition).
+void parseGeometry(const ParseContext& context, pugi::xml_node node, Shape& shape, MeshLibrary& meshes, bool world);
 
 }  // namespace vkrt

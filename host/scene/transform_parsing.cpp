@@ -3,20 +3,23 @@
 #include <string>
 #include <string_view>
 
+#include "local_origin.h"
 #include "scene_rules.h"
 #include "value_parsing.h"
 
 namespace vkrt {
 
-std::vector<TransformStep> parseTransform(const ParseContext& context, pugi::xml_node transform) {
-    checkAttributes(context, transform, {});
+rules::Placement parseTransform(const ParseContext& context, pugi::xml_node transform) {
+    if (transform) checkAttributes(context, transform, {});
     std::vector<TransformStep> steps;
+    std::vector<glm::dvec3> exactTranslations;  // one per step, read by translate steps
     for (pugi::xml_node step : transform.children()) {
         if (step.type() != pugi::node_element) continue;
         const std::string_view kind = step.name();
+        glm::dvec3 exact(0.0);
         if (kind == "translate") {
             checkAttributes(context, step, {});
-            steps.push_back({TransformKind::Translate, parseVec3(context, step), 0});
+            steps.push_back({TransformKind::Translate, parseVec3(context, step, &exact), 0});
         } else if (kind == "scale") {
             checkAttributes(context, step, {});
             const glm::vec3 s = parseVec3(context, step);
@@ -30,11 +33,14 @@ std::vector<TransformStep> parseTransform(const ParseContext& context, pugi::xml
             steps.push_back({TransformKind::Rotate, glm::vec3(parseScalar(context, step), 0.0f, 0.0f), *axis});
         } else {
             context.warn(step, "unknown element inside <transform>, ignored");
+            continue;
         }
+        exactTranslations.push_back(exact);
     }
-    if (const std::string p = rules::composedTransformProblem(rules::composeTransform(steps)); !p.empty())
-        context.fail(transform, p);
-    return steps;
+    const glm::mat4 objectToWorld = context.localOrigin ? rules::placeRelativeTo(steps, exactTranslations, context.origin)
+                                                        : rules::composeTransform(steps);
+    if (const std::string p = rules::composedTransformProblem(objectToWorld); !p.empty()) context.fail(transform, p);
+    return {std::move(steps), objectToWorld};
 }
 
 }  // namespace vkrt

@@ -1,5 +1,6 @@
 #include "value_parsing.h"
 
+#include "local_origin.h"
 #include "number_text.h"
 #include "scene_rules.h"
 
@@ -10,7 +11,7 @@ namespace {
 // Reads `Count` floats from `text` (number_text.h). Messages are issued against `owner`'s line
 // with `element` as the element name (an attribute reports "<scene> bgColor", for example).
 template <int Count>
-std::array<float, 3> readFloats(const ParseContext& context, pugi::xml_node owner, const std::string& element,
+NumberText readFloats(const ParseContext& context, pugi::xml_node owner, const std::string& element,
                                 const std::string& text) {
     const NumberText numbers = readNumberText(text, Count);
     if (!numbers.error.empty()) {
@@ -23,18 +24,28 @@ std::array<float, 3> readFloats(const ParseContext& context, pugi::xml_node owne
         issue.element = element;
         context.warn(std::move(issue));
     }
-    return numbers.values;
+    return numbers;
 }
 
 }  // namespace
 
 float parseScalar(const ParseContext& context, pugi::xml_node element) {
-    return readFloats<1>(context, element, element.name(), elementText(element))[0];
+    return readFloats<1>(context, element, element.name(), elementText(element)).values[0];
 }
 
-glm::vec3 parseVec3(const ParseContext& context, pugi::xml_node element) {
-    const auto v = readFloats<3>(context, element, element.name(), elementText(element));
-    return {v[0], v[1], v[2]};
+glm::vec3 parseVec3(const ParseContext& context, pugi::xml_node element, glm::dvec3* exact) {
+    const NumberText numbers = readFloats<3>(context, element, element.name(), elementText(element));
+    if (exact) *exact = {numbers.exact[0], numbers.exact[1], numbers.exact[2]};
+    return {numbers.values[0], numbers.values[1], numbers.values[2]};
+}
+
+glm::vec3 parsePosition(const ParseContext& context, pugi::xml_node element, bool world) {
+    if (!world || !context.localOrigin) return parseVec3(context, element);
+    glm::dvec3 exact;
+    parseVec3(context, element, &exact);
+    const std::optional<glm::vec3> local = rules::localPosition(exact, context.origin);
+    if (!local) context.fail(element, rules::kBeyondFloatLocally, elementText(element));
+    return *local;
 }
 
 glm::vec3 parseColour(const ParseContext& context, pugi::xml_node element) {
@@ -45,8 +56,8 @@ glm::vec3 parseColour(const ParseContext& context, pugi::xml_node element) {
 
 glm::vec3 parseVec3Text(const ParseContext& context, pugi::xml_node owner, const std::string& label,
                         const std::string& text) {
-    const auto v = readFloats<3>(context, owner, label, text);
-    return {v[0], v[1], v[2]};
+    const NumberText numbers = readFloats<3>(context, owner, label, text);
+    return {numbers.values[0], numbers.values[1], numbers.values[2]};
 }
 
 }  // namespace vkrt

@@ -17,7 +17,12 @@ namespace vkrt {
 // Warnings (istream-compatible recovery): a number running into the next one ("2.5.0" reads as
 // 2.5 then .0), extra tokens after the expected count.
 float parseScalar(const ParseContext& context, pugi::xml_node element);
-glm::vec3 parseVec3(const ParseContext& context, pugi::xml_node element);
+// `exact`, when given, receives the numbers in double before their rounding to float.
+glm::vec3 parseVec3(const ParseContext& context, pugi::xml_node element, glm::dvec3* exact = nullptr);
+
+// A point: in world space (`world`) under LoadOptions::localOrigin, read in double and stored
+// relative to context.origin (local_origin.h); otherwise parseVec3.
+glm::vec3 parsePosition(const ParseContext& context, pugi::xml_node element, bool world);
 
 // A colour (diffuse, specular, intensity, background, emission): parseVec3, and a warning for a
 // negative component (rules::negativeColourProblem), the value kept.

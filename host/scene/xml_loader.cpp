@@ -10,6 +10,7 @@
 
 #include "camera_parsing.h"
 #include "light_parsing.h"
+#include "local_origin.h"
 #include "missing_shaders.h"
 #include "parse_context.h"
 #include "render_fallbacks.h"
@@ -31,8 +32,8 @@ bool isElement(pugi::xml_node node, std::string_view name) {
 
 // Two passes over the document (docs/XML_FORMAT.md §7.2), so that child and element order never matter:
 //   1. definitions by name: textures, shaders (top-level and inline in shapes), prototypes;
-//   2. everything placed in the scene: cameras and lights, then shapes and instances, then scene
-//      parameters.
+//   2. everything placed in the scene: cameras (and which one is the default: its eye is the local
+//      origin, local_origin.h), lights, then shapes and instances, then scene parameters.
 class SceneBuilder {
 public:
     SceneBuilder(const ParseContext& context, Scene& scene) : context_(context), scene_(scene), meshes_(scene.meshes) {}
@@ -48,19 +49,19 @@ public:
         }
         for (pugi::xml_node node : root.children("instance")) definePrototype(node);
 
+        placeCameras(root);
+
         pugi::xml_node parameters;
         for (pugi::xml_node node : root.children()) {
             if (node.type() != pugi::node_element) continue;
             const std::string_view name = node.name();
-            if (name == "camera") {
-                scene_.cameras.push_back(parseCamera(context_, node));
-            } else if (name == "light") {
+            if (name == "light") {
                 if (std::string_view(node.attribute("type").value()) == "shape") placeShapeLight(node);
                 else if (auto light = parseLight(context_, node)) scene_.lights.push_back(*light);
             } else if (name == "sceneParameters") {
                 if (parameters) context_.warn(node, "repeated inside <scene>, the first one is used");
                 else parameters = node;
-            } else if (name != "shader" && name != "texture" && name != "instance" && name != "shape") {
+            } else if (name != "shader" && name != "texture" && name != "instance" && name != "shape" && name != "camera") {
                 context_.warn(node, "unknown element inside <scene>, ignored");
             }
         }
@@ -72,6 +73,27 @@ public:
     }
 
 private:
+    // Cameras first, so that the default one is known before anything is placed: under
+    // LoadOptions::localOrigin its eye is the origin every world position is measured from.
+    void placeCameras(pugi::xml_node root) {
+        std::vector<glm::dvec3> eyes;
+        std::vector<pugi::xml_node> nodes;
+        for (pugi::xml_node node : root.children("camera")) {
+            glm::dvec3 eye;
+            scene_.cameras.push_back(parseCamera(context_, node, &eye));
+            eyes.push_back(eye);
+            nodes.push_back(node);
+        }
+        if (const pugi::xml_node camera = root.child("sceneParameters").child("camera")) selectCamera(camera);
+        if (!context_.localOrigin || eyes.empty()) return;
+        context_.origin = scene_.origin = eyes[static_cast<std::size_t>(scene_.defaultCamera)];
+        for (std::size_t i = 0; i < eyes.size(); ++i) {
+            const std::optional<glm::vec3> local = rules::localPosition(eyes[i], scene_.origin);
+            if (!local) context_.fail(nodes[i].child("position"), rules::kBeyondFloatLocally, elementText(nodes[i].child("position")));
+            scene_.cameras[i].position = *local;
+        }
+    }
+
     void defineTexture(pugi::xml_node node) {
         checkAttributes(context_, node, {"type"});
         checkChildren(context_, node, {"sourcefile"});
@@ -129,8 +151,9 @@ private:
         return missingShaders_.placeholderFor(scene_, name, {context_.source.path(), context_.source.lineOf(reference)});
     }
 
-    // Geometry with its shader, as a loose shape or a prototype.
-    Shape parseShape(pugi::xml_node node, ShapeType type, bool shaderRequired = true) {
+    // Geometry with its shader, as a loose shape or a prototype; `world`: placed as it stands
+    // (parseGeometry).
+    Shape parseShape(pugi::xml_node node, ShapeType type, bool world, bool shaderRequired = true) {
         std::vector<std::string_view> allowed = rules::geometryKeys(type);
         allowed.push_back("shader");
         if (isElement(node, "shape")) allowed.push_back("transform");
@@ -139,7 +162,7 @@ private:
         shape.name = node.attribute("name").value();
         shape.type = type;
         shape.where = {context_.source.path(), context_.source.lineOf(node)};
-        parseGeometry(context_, node, shape, meshes_);
+        parseGeometry(context_, node, shape, meshes_, world);
         shape.shader = shaderOf(node);
         if (shape.shader < 0 && shaderRequired) context_.fail(node, "missing required element <shader>", shape.name);
         return shape;
@@ -154,7 +177,7 @@ private:
         switch (rules::definePrototypeName(prototypeByName_, name, type, next)) {
             case rules::PrototypeDefinition::Duplicate: return context_.warn(node, rules::kDuplicatePrototype, name);
             case rules::PrototypeDefinition::UnknownType: return context_.warn(node, rules::kUnknownPrototype, typeName);
-            case rules::PrototypeDefinition::Added: scene_.prototypes.push_back(parseShape(node, *type));
+            case rules::PrototypeDefinition::Added: scene_.prototypes.push_back(parseShape(node, *type, /*world=*/false));
         }
     }
 
@@ -170,10 +193,9 @@ private:
             instance.name = name;
             instance.prototype = *prototype;
             instance.shaderOverride = shaderOf(node);
-            if (const pugi::xml_node transform = node.child("transform")) {
-                instance.steps = parseTransform(context_, transform);
-                instance.objectToWorld = rules::composeTransform(instance.steps);
-            }
+            rules::Placement placement = parseTransform(context_, node.child("transform"));
+            instance.steps = std::move(placement.steps);
+            instance.objectToWorld = placement.objectToWorld;
             instance.where = {context_.source.path(), context_.source.lineOf(node)};
             scene_.instances.push_back(instance);
             return;
@@ -184,10 +206,11 @@ private:
             context_.warn(node, "unknown shape type, skipped", typeName);
             return;
         }
-        Shape shape = parseShape(node, *type);
-        if (const pugi::xml_node transform = node.child("transform")) {
-            const std::vector<TransformStep> steps = parseTransform(context_, transform);
-            rules::addPlainShape(scene_, std::move(shape), &steps);
+        const pugi::xml_node transform = node.child("transform");
+        Shape shape = parseShape(node, *type, /*world=*/!transform);
+        if (transform) {
+            const rules::Placement placement = parseTransform(context_, transform);
+            rules::addPlainShape(scene_, std::move(shape), &placement);
         } else {
             rules::addPlainShape(scene_, std::move(shape), nullptr);
         }
@@ -231,11 +254,16 @@ private:
                 context_.warn(shape, "unknown shape type, skipped", typeName);
                 return;
             }
-            emitter.shape = parseShape(shape, *type, /*shaderRequired=*/false);
+            emitter.shape = parseShape(shape, *type, /*world=*/!shape.child("transform"), /*shaderRequired=*/false);
         }
         emitter.name = emitter.shape.name;
-        if (const pugi::xml_node transform = shape.child("transform")) emitter.steps = parseTransform(context_, transform);
-        emitter.objectToWorld = rules::composeTransform(emitter.steps);
+        // A plain shape without a transform stands in world space (identity); an instance, or a
+        // shape with a transform, is placed by it.
+        if (const pugi::xml_node transform = shape.child("transform"); transform || emitter.prototype >= 0) {
+            rules::Placement placement = parseTransform(context_, transform);
+            emitter.steps = std::move(placement.steps);
+            emitter.objectToWorld = placement.objectToWorld;
+        }
         scene_.emitters.push_back(emitter);
         scene_.lights.push_back(emitterStandInLight(scene_, static_cast<int>(scene_.emitters.size()) - 1));
         if (fallbacks_.first(Fallback::ShapeLight)) context_.warn(node, fallbackProblem(Fallback::ShapeLight), emitter.name);
@@ -272,7 +300,6 @@ private:
                 crossNode = e;
                 cross = trimmed(elementText(e));
             }
-            if (const pugi::xml_node camera = parameters.child("camera")) selectCamera(camera);
         }
         // The cube faces' prefix and the vertical-cross image are separate fields, as in JSON.
         for (const auto& [node, text, field] : {std::tuple{prefixNode, &prefix, &scene_.envMapPrefix},
@@ -290,7 +317,7 @@ private:
         scene_.defaultCamera = *index;
     }
 
-    const ParseContext& context_;
+    ParseContext context_;  // a copy: the origin is set once the cameras are read
     Scene& scene_;
     MeshLibrary meshes_;
     TextureTable textures_;
@@ -305,8 +332,8 @@ private:
 
 Scene loadXmlScene(const std::string& path, const std::string& text, const LoadOptions& options, Diagnostics& diagnostics) {
     const XmlSource source(path, text);
-    const ParseContext context{source, diagnostics, options.strict,
-                               std::filesystem::path(path).parent_path()};
+    const ParseContext context{source, diagnostics, options.strict, std::filesystem::path(path).parent_path(),
+                               options.localOrigin};
     const pugi::xml_node root = source.root();
     if (std::string_view(root.name()) != "scene") context.fail(root, "the root element must be <scene>", root.name());
 

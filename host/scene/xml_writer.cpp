@@ -174,6 +174,7 @@ private:
 }  // namespace
 
 std::string xmlSceneText(const Scene& scene, const std::filesystem::path& outputDirectory) {
+    writing::requireFileCoordinates(scene);
     pugi::xml_document document;
     pugi::xml_node declaration = document.append_child(pugi::node_declaration);
     declaration.append_attribute("version") = "1.0";

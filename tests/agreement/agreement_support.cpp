@@ -88,7 +88,7 @@ Agreement renderBothAndCompare(const Scene& scene, const std::string& label, Ren
 
 Agreement renderBothAndCompare(const std::string& path, RenderOptions options, KernelVariant variant) {
     Diagnostics diagnostics;
-    const Scene scene = loadScene(path, LoadOptions{}, diagnostics);
+    const Scene scene = loadScene(path, LoadOptions{false, /*localOrigin=*/true}, diagnostics);
     return renderBothAndCompare(scene, std::filesystem::path(path).stem().string(), options, variant);
 }
 
