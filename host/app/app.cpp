@@ -41,7 +41,10 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 // Loads the scene, prints its warnings, and settles which camera renders.
 Scene loadWithWarnings(CommandLine& cl) {
     Diagnostics diagnostics(cl.strict);
-    Scene scene = loadScene(cl.scenePath, LoadOptions{cl.strict}, diagnostics);
+    Scene scene = [&] {
+        const ExitAtOnceOnInterrupt scope;  // a large mesh or texture takes seconds to read
+        return loadScene(cl.scenePath, LoadOptions{cl.strict, /*localOrigin=*/true}, diagnostics);
+    }();
     for (const std::string& line : diagnostics.messages()) std::cerr << "warning: " << line << "\n";
     cl.render.camera = cl.camera.value_or(scene.defaultCamera);
     if (cl.render.camera >= static_cast<int>(scene.cameras.size()))
@@ -68,7 +71,10 @@ struct DeviceRender {
 // Each renderer prepares the scene its own way (its own tree) and renders it.
 DeviceRender renderOnCpu(const Scene& scene, const RenderOptions& options) {
     const auto start = std::chrono::steady_clock::now();
-    const SceneAccel accel = prepareCpuScene(scene);
+    const SceneAccel accel = [&] {
+        const ExitAtOnceOnInterrupt scope;  // the tree of a large mesh takes seconds
+        return prepareCpuScene(scene);
+    }();
     const double prepareSeconds = secondsSince(start);
     RenderStats stats;
     Image image = renderCpu(scene, accel, options, &stats);
@@ -79,7 +85,10 @@ DeviceRender renderOnCpu(const Scene& scene, const RenderOptions& options) {
 
 DeviceRender renderOnGpu(GpuRenderer& gpu, const Scene& scene, const RenderOptions& options, bool general) {
     const auto start = std::chrono::steady_clock::now();
-    const GpuSceneData data = GpuRenderer::prepare(scene);
+    const GpuSceneData data = [&] {
+        const ExitAtOnceOnInterrupt scope;
+        return GpuRenderer::prepare(scene);
+    }();
     const double prepareSeconds = secondsSince(start);
     GpuRenderStats stats;
     GpuRenderSettings settings;

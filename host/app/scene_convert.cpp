@@ -4,6 +4,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "interrupt.h"
 #include "json_writer.h"
 #include "output_file.h"
 #include "render_options.h"
@@ -57,7 +58,11 @@ Conversion convertScene(const std::string& input, const std::string& output, Dia
     };
     Conversion conversion;
     conversion.format = checkOutput(output, input);
-    const Scene scene = loadScene(input, LoadOptions{diagnostics.strict()}, diagnostics);
+    const Scene scene = [&] {
+        // Nothing is written before this load ends, so Ctrl-C inside it may end the process.
+        const ExitAtOnceOnInterrupt scope;
+        return loadScene(input, LoadOptions{diagnostics.strict()}, diagnostics);
+    }();
     checkCancel();
 
     const fs::path directory = fs::path(output).parent_path();
