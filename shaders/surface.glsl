@@ -34,10 +34,23 @@ float transformedMagnitude(vec4 r0, vec4 r1, vec4 r2, float m) {
     return max(max(a0.w + (a0.x + a0.y + a0.z) * m, a1.w + (a1.x + a1.y + a1.z) * m), a2.w + (a2.x + a2.y + a2.z) * m);
 }
 
+// The rare case of normalizeOr: v's squared length left float range (a triangle's edge cross
+// product is ~|edge|^2, so edges beyond ~1e9 overflow it, below ~1e-10 underflow it). Scaling by a
+// power of two keeps the direction exactly; the CPU does the same (surface.cpp unitVector).
+vec3 rescaledUnitOr(vec3 v, vec3 fallback) {
+    float largest = maxAbs(v);
+    if (!(largest > 0.0) || isinf(largest)) return fallback;
+    int exponent;
+    frexp(largest, exponent);
+    v = ldexp(v, ivec3(-exponent));  // largest component now in [0.5, 1)
+    return v * inversesqrt(dot(v, v));
+}
+
 // A unit vector, or `fallback` when v is zero or not finite (degenerate geometry must not make NaN).
+// The common path costs what a plain normalize does: the rescale sits behind the test it needs anyway.
 vec3 normalizeOr(vec3 v, vec3 fallback) {
     float len2 = dot(v, v);
-    if (!(len2 > 0.0) || isinf(len2)) return fallback;
+    if (!(len2 > 0.0) || isinf(len2)) return rescaledUnitOr(v, fallback);
     return v * inversesqrt(len2);
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "ray_offset.h"
@@ -27,6 +28,22 @@ glm::vec2 sphereUv(const glm::vec3& n) {
     const float u = 0.5f + std::atan2(n.x, n.z) * kInvTwoPi;
     const float v = 0.5f + std::asin(glm::clamp(n.y, -1.0f, 1.0f)) * std::numbers::inv_pi_v<float>;
     return {u, v};
+}
+
+// normalize(v), also for a v whose squared length leaves float range: the cross product of a
+// triangle's edges is ~|edge|^2, so the squared length overflows for edges beyond ~1e9 (the
+// normal came out 0 and the triangle black) and underflows for edges below ~1e-10. Scaling by a
+// power of two first changes neither the direction nor, for ordinary v, a single bit.
+glm::vec3 unitVector(glm::vec3 v) {
+    const float len2 = glm::dot(v, v);
+    if (!(len2 >= std::numeric_limits<float>::min() && len2 <= std::numeric_limits<float>::max())) {
+        const float largest = maxAbs(v);
+        if (!(largest > 0.0f) || !std::isfinite(largest)) return glm::normalize(v);
+        int exponent = 0;
+        std::frexp(largest, &exponent);
+        v *= std::ldexp(1.0f, -exponent);  // largest component now in [0.5, 1)
+    }
+    return glm::normalize(v);
 }
 
 float unitRange(float x, float lo, float hi) { return hi > lo ? (x - lo) / (hi - lo) : 0.0f; }
@@ -126,7 +143,7 @@ SurfacePoint describeHit(const SceneAccel& accel, const Scene& scene, const bvh:
 
     sp.position = applyPoint(inst.objectToWorld, pObject);
     sp.errorMagnitude = errorMagnitude(inst.objectToWorld, objectMagnitude, sp.position);
-    sp.geometricNormal = glm::normalize(applyVector(inst.normalToWorld, nObject));
+    sp.geometricNormal = unitVector(applyVector(inst.normalToWorld, nObject));
     sp.shadingNormal = sp.geometricNormal;
     if (hasShadingNormal) {
         const glm::vec3 n = applyVector(inst.normalToWorld, shadingObject);

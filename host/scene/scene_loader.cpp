@@ -4,6 +4,7 @@
 #include <cctype>
 #include <filesystem>
 
+#include "geometry_extent.h"
 #include "json_loader.h"
 #include "local_origin.h"
 #include "source_text.h"
@@ -63,6 +64,7 @@ Scene loadScene(const std::string& path, const LoadOptions& options, Diagnostics
     Scene scene = format == Format::Xml ? loadXmlScene(path, text, options, diagnostics)
                                         : loadJsonScene(path, text, options, diagnostics);
     if (options.localOrigin) rules::rebaseWorldMeshes(scene);
+    rules::warnGeometryBeyondFloat(scene, options.strict, diagnostics);
     return scene;
 }
 

@@ -106,17 +106,23 @@ TEST_F(ValueParsing, NanInfAndOutOfRangeAreErrors) {
     }
 }
 
+// Accepted as a number; a sphere that large is beyond what float intersection computes, which is
+// a warning at the shape (geometry_extent.h), not a parse error.
 TEST_F(ValueParsing, LargestFloatIsStillAccepted) {
-    const Scene scene = loadClean(withRadius("3.4e38"));
+    Diagnostics diagnostics;
+    const Scene scene = load(withRadius("3.4e38"), diagnostics);
     EXPECT_FLOAT_EQ(scene.shapes[0].radius, 3.4e38f);
     EXPECT_TRUE(std::isfinite(scene.shapes[0].radius));
+    ASSERT_EQ(diagnostics.warnings().size(), 1u);
+    EXPECT_NE(diagnostics.warnings()[0].problem.find("beyond the 1e+18"), std::string::npos) << diagnostics.messages()[0];
 }
 
 // The bound is where a float rounds to infinity (2^128 - 2^103 = 3.40282357e38), not the largest
 // float itself: 3.4028235e38, the shortest text of the largest float (what vkrt convert writes),
 // lies above it and reads as it; 3.4028236e38 is past the midpoint.
 TEST_F(ValueParsing, TheLargestFloatsShortestTextReadsAsTheLargestFloat) {
-    const Scene scene = loadClean(withRadius("3.4028235e38"));
+    Diagnostics diagnostics;  // the extent warning of LargestFloatIsStillAccepted
+    const Scene scene = load(withRadius("3.4028235e38"), diagnostics);
     EXPECT_EQ(scene.shapes[0].radius, std::numeric_limits<float>::max());
     const std::string xml = withRadius("3.4028236e38");
     EXPECT_NE(errorOf(xml).problem.find("finite"), std::string::npos);
