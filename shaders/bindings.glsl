@@ -20,6 +20,7 @@ layout(constant_id = SPEC_PATH_STACK_SIZE) const uint PATH_STACK_SIZE = 8u;
 layout(constant_id = SPEC_PACKED_NODES) const bool PACKED_NODES = true;  // node layout: device_host.h
 layout(constant_id = SPEC_SAMPLER) const uint SAMPLER_KIND = SAMPLER_FROM_FRAME;  // device_host.h
 layout(constant_id = SPEC_SAMPLES_PER_DISPATCH) const uint SAMPLES_PER_DISPATCH = 1u;  // render.comp
+layout(constant_id = SPEC_HAS_THIN_LENS) const bool HAS_THIN_LENS = true;  // camera.glsl
 // 0: nothing in the scene pushes (feature_set.cpp), and the path stack's code is compiled out.
 const bool HAS_PATH_STACK = PATH_STACK_SIZE > 0u;
 const uint PATH_STACK_ENTRIES = HAS_PATH_STACK ? PATH_STACK_SIZE : 1u;  // an array needs one
@@ -52,6 +53,8 @@ layout(std140, set = 0, binding = BINDING_FRAME) uniform FrameBuffer { FramePara
 float framePlaneWidth() { return frame.cameraU.w; }
 float framePlaneHeight() { return frame.cameraV.w; }
 float frameFocalLength() { return frame.cameraW.w; }
+float frameLensRadius() { return frame.cameraPosition.w; }
+float frameFocusDistance() { return frame.background.w; }
 uint frameWidth() { return frame.image.x; }
 uint frameHeight() { return frame.image.y; }
 uint frameCameraType() { return frame.image.z; }

@@ -7,8 +7,10 @@ struct CameraRay {
     vec3 dir;  // unit length
 };
 
-// Pixel (i, j), j = 0 the top row, with the sub-pixel sample (sx, sy) in [0,1)^2.
-CameraRay cameraRay(uint i, uint j, vec2 subPixel) {
+// Pixel (i, j), j = 0 the top row, with the sub-pixel sample (sx, sy) in [0,1)^2; with a thin lens
+// (HAS_THIN_LENS), from the lens point `lensSample` towards where the pinhole ray meets the focus
+// plane: the float operations of host/cpu/camera.cpp, in the same order.
+CameraRay cameraRay(uint i, uint j, vec2 subPixel, vec2 lensSample) {
     float nx = float(frameWidth());
     float ny = float(frameHeight());
     float a = framePlaneWidth() * ((float(i) + subPixel.x) / nx - 0.5);
@@ -20,9 +22,22 @@ CameraRay cameraRay(uint i, uint j, vec2 subPixel) {
     if (frameCameraType() == CAMERA_ORTHOGRAPHIC) {
         r.origin = frame.cameraPosition.xyz + a * u + b * v;
         r.dir = -w;
+        if (HAS_THIN_LENS && frameLensRadius() > 0.0) {  // the general kernel also renders pinholes
+            vec2 disk = concentricDisk(lensSample) * frameLensRadius();
+            vec3 offset = disk.x * u + disk.y * v;
+            r.origin = r.origin + offset;
+            r.dir = normalize(-frameFocusDistance() * w - offset);
+        }
     } else {
+        vec3 q = -frameFocalLength() * w + a * u + b * v;
         r.origin = frame.cameraPosition.xyz;
-        r.dir = normalize(-frameFocalLength() * w + a * u + b * v);
+        r.dir = normalize(q);
+        if (HAS_THIN_LENS && frameLensRadius() > 0.0) {  // the general kernel also renders pinholes
+            vec2 disk = concentricDisk(lensSample) * frameLensRadius();
+            vec3 offset = disk.x * u + disk.y * v;
+            r.origin = frame.cameraPosition.xyz + offset;
+            r.dir = normalize(q * (frameFocusDistance() / frameFocalLength()) - offset);
+        }
     }
     return r;
 }

@@ -31,7 +31,8 @@ const uint NO_SAMPLE = 0xffffffffu;
 void addSample(uint x, uint y, uint index, inout SampleKey key, inout vec4 sum, inout uint nonFinite, inout uint failedSample) {
     key.index = index;
     vec2 subPixel = sample2D(samplerKind(), frame.pixelGrid, key.pixel, key.index, DIM_CAMERA, key.seed);
-    CameraRay camera = cameraRay(x, y, subPixel);
+    vec2 lens = HAS_THIN_LENS ? sample2D(samplerKind(), frame.pixelGrid, key.pixel, key.index, DIM_LENS, key.seed) : vec2(0.5);
+    CameraRay camera = cameraRay(x, y, subPixel, lens);
     vec3 radiance = cameraSampleRadiance(camera.origin, camera.dir, key);
     if (failedSample == NO_SAMPLE && failureFlags() != 0u) failedSample = index;
     if (any(isnan(radiance)) || any(isinf(radiance))) {

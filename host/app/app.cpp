@@ -50,6 +50,16 @@ Scene loadWithWarnings(CommandLine& cl) {
     if (cl.render.camera >= static_cast<int>(scene.cameras.size()))
         throw std::invalid_argument("--camera " + std::to_string(cl.render.camera) + ": " + cl.scenePath + " has " +
                                     std::to_string(scene.cameras.size()) + " camera(s)");
+    // The command line's lens overrides the scene's, as the course's -d does.
+    Camera& camera = scene.cameras[cl.render.camera];
+    if (cl.focusDistance) camera.focusDistance = *cl.focusDistance;
+    if (cl.aperture) camera.aperture = *cl.aperture;
+    // Half a lens asked for on the command line is said; `--aperture 0` (the pinhole on purpose) is not.
+    const bool askedForLens = cl.focusDistance.value_or(0.0f) > 0.0f || cl.aperture.value_or(0.0f) > 0.0f;
+    if (askedForLens && (camera.focusDistance > 0.0f) != (camera.aperture > 0.0f))
+        std::cerr << "warning: focus distance " << camera.focusDistance << ", aperture " << camera.aperture
+                  << ": depth of field needs both above 0 (-d/--focus-distance and --aperture, or the camera's "
+                     "focusDistance and aperture); rendering with a pinhole\n";
     return scene;
 }
 

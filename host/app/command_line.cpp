@@ -98,7 +98,7 @@ void addSweepOptions(CLI::App& app, CommandLine& cl, std::string& bg, SweepText&
 // that have no vkrt spelling of their own; -i -o -w -h -n -r -k are aliases of vkrt's options.
 struct CourseText {
     std::optional<double> aspect;
-    std::string depthOfField, split;
+    std::string split;
     std::optional<int> windowWidth, windowHeight;
 };
 
@@ -110,9 +110,13 @@ void addCourseOptions(CLI::App& app, CommandLine& cl, CourseText& course) {
         ->check(CLI::Range(1.0 / (1 << 16), double(1 << 16)));
     app.add_flag("-v,--verbose", cl.verbose, "Print the settings before running (the course's verbose output)")
         ->excludes("--quiet");
-    app.add_option("-d,--depth", course.depthOfField,
-                   "The course's depth-of-field focus distance: refused, depth of field is not supported yet (issue 21)")
-        ->expected(0, 1);
+    app.add_option("-d,--depth,--focus-distance", cl.focusDistance,
+                   "Depth of field: the distance along the view direction that is in focus (the course's -d; 0 = "
+                   "pinhole). Overrides the camera's focusDistance; needs an aperture (--aperture or the scene's)")
+        ->check(CLI::NonNegativeNumber);
+    app.add_option("--aperture", cl.aperture,
+                   "Depth of field: the lens diameter in scene units (0 = pinhole). Overrides the camera's aperture")
+        ->check(CLI::NonNegativeNumber);
     app.add_option("-s,--split", course.split,
                    "The course's BVH split method: accepted and ignored, vkrt always builds binned-SAH BVHs (docs/BVH.md)");
     app.add_option("-x,--winwidth", course.windowWidth,
@@ -154,7 +158,7 @@ void applyAspect(RenderOptions& render, double aspect, bool widthGiven, bool hei
     }
 }
 
-// After parsing: refuse -d, resolve -a, and say which course flags vkrt cannot honour.
+// After parsing: resolve -a, and say which course flags vkrt cannot honour.
 void applyCourseOptions(const CLI::App& app, CommandLine& cl, const CourseText& course) {
     // -i and the positional scene fill one field: a second scene would be dropped without a word.
     const std::size_t scenes = app.count("-i") + app.count("scene");
@@ -166,9 +170,6 @@ void applyCourseOptions(const CLI::App& app, CommandLine& cl, const CourseText& 
         throw CLI::ValidationError("scene", std::to_string(scenes) + " scene files given (" + names +
                                                 "); vkrt renders one scene per run");
     }
-    if (app.count("-d") > 0)
-        throw CLI::ValidationError("-d" + (course.depthOfField.empty() ? "" : " " + course.depthOfField),
-                                   "depth of field is not supported yet (issue 21); leave -d out to render in focus");
     if (course.aspect) applyAspect(cl.render, *course.aspect, app.count("-w") > 0, app.count("-h") > 0);
     if (app.count("-s") > 0)
         cl.notices.push_back("-s " + course.split + " ignored: vkrt always builds binned-SAH BVHs (docs/BVH.md), "
@@ -193,6 +194,8 @@ std::string describeSettings(const CommandLine& cl) {
     out << "image: " << r.width << "x" << r.height << " (aspect " << number(double(r.width) / r.height) << ")\n";
     if (cl.command != Command::Sweep) out << "rays per pixel: " << r.samplesPerPixel << " (" << samplerName(r.sampler) << ")\n";
     out << "recursion depth: " << r.maxDepth << "\n";
+    if (cl.focusDistance) out << "focus distance: " << *cl.focusDistance << "\n";
+    if (cl.aperture) out << "aperture: " << *cl.aperture << "\n";
     out << "CPU threads: " << (r.threads == 0 ? std::string("all cores") : std::to_string(r.threads)) << "\n";
     out << "seed: " << r.seed << "\n";
     if (cl.command != Command::Sweep)

@@ -31,6 +31,8 @@ struct CommandLine {
     bool statistical = false;     // compare --stat: z-test of GPU and CPU renders with different seeds
     study::SweepOptions sweep;    // sweep: everything but the render options above (copied in by the parser)
     bool verbose = false;         // -v: print the settings before running (the course's verbose output)
+    // Depth of field (-d/--focus-distance, --aperture): override the rendered camera's values.
+    std::optional<float> focusDistance, aperture;
     std::vector<std::string> notices;  // one line per course flag accepted but ignored, and why
 };
 

@@ -16,12 +16,17 @@ struct CameraFrame {
     float planeWidth = 0.5f;
     float planeHeight = 0.5f;  // planeWidth * ny / nx
     int nx = 1, ny = 1;
+    bool thinLens = false;     // Camera::thinLens(): rays leave a disc and meet on the focus plane
+    float focusDistance = 0.0f;
+    float lensRadius = 0.0f;   // aperture / 2
 };
 
 CameraFrame makeCameraFrame(const Camera& camera, int width, int height);
 
-// The ray through pixel (i, j) (j = 0 the top row) at sub-pixel position `sample` in [0,1)^2.
-// The direction is unit length, so hit distances are world distances.
-bvh::Ray cameraRay(const CameraFrame& frame, int i, int j, glm::vec2 sample);
+// The ray through pixel (i, j) (j = 0 the top row) at sub-pixel position `sample` in [0,1)^2; with
+// a thin lens, from the lens point `lensSample` in [0,1)^2 (concentric-mapped onto the disc) towards
+// where the pinhole ray meets the focus plane. The direction is unit length, so hit distances are
+// world distances. The GLSL kernel (shaders/camera.glsl) performs the same float operations.
+bvh::Ray cameraRay(const CameraFrame& frame, int i, int j, glm::vec2 sample, glm::vec2 lensSample = glm::vec2(0.5f));
 
 }  // namespace vkrt::cpu

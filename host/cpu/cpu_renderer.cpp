@@ -39,7 +39,11 @@ glm::vec3 renderPixel(const RenderContext& ctx, Integrator& integrator, int i, i
     glm::dvec3 sumD(0.0), sumSqD(0.0);
     for (std::uint32_t s = 0; s < ctx.samplesPerPixel; ++s) {
         const glm::vec2 offset = sampling::sample2D(ctx.sampler, ctx.pixelGrid, pixel, s, sampling::DIM_CAMERA, ctx.seed);
-        glm::vec3 c = integrator.cameraRadiance(cpu::cameraRay(ctx.camera, i, j, offset), {pixel, s});
+        // The lens sample is drawn only for a thin lens: a pinhole render is the same computation
+        // as before depth of field existed.
+        const glm::vec2 lens = ctx.camera.thinLens ? sampling::sample2D(ctx.sampler, ctx.pixelGrid, pixel, s, sampling::DIM_LENS, ctx.seed)
+                                                   : glm::vec2(0.5f);
+        glm::vec3 c = integrator.cameraRadiance(cpu::cameraRay(ctx.camera, i, j, offset, lens), {pixel, s});
         if (!isFinite(c)) {
             ++nonFinite;
             c = glm::vec3(0.0f);

@@ -71,6 +71,7 @@ std::array<std::uint32_t, gpu::SPEC_COUNT> FeatureSet::specializationValues(std:
     v[gpu::SPEC_PACKED_NODES] = packedNodes;
     v[gpu::SPEC_SAMPLER] = sampler;
     v[gpu::SPEC_SAMPLES_PER_DISPATCH] = samplesPerDispatch;
+    v[gpu::SPEC_HAS_THIN_LENS] = thinLens;
     return v;
 }
 
@@ -92,6 +93,7 @@ std::string FeatureSet::describe() const {
     add(dielectric, "dielectric");
     add(textures, "textures");
     add(coolToWarm, "cool-to-warm");
+    add(thinLens, "thin-lens");
     add(!packedNodes, "exact-nodes");
     add(sampler != gpu::SAMPLER_FROM_FRAME, ("sampler=" + samplerName(static_cast<SamplerKind>(sampler))).c_str());
     add(true, ("depth=" + std::to_string(maxDepth) + " stack=" + std::to_string(pathStackSize)).c_str());
@@ -119,6 +121,7 @@ FeatureSet deriveFeatureSet(const Scene& scene, const SceneAccel& accel, const R
     // The one sampler the render uses: sample2D's other samplers would run too (every path runs
     // on lavapipe; host/gpu/README.md).
     f.sampler = static_cast<std::uint32_t>(options.sampler);
+    f.thinLens = scene.cameras.at(options.camera).thinLens();
     return f;
 }
 
@@ -132,7 +135,7 @@ FeatureSet generalFeatureSet(const RenderOptions& options, bool packedNodes) {
 
 FeatureSet traversalFeatureSet(const bvh::SceneBvh& bvh, bool packedNodes) {
     FeatureSet f = geometryFeatures(bvh, packedNodes);
-    f.areaLights = f.specular = f.reflection = f.gloss = f.dielectric = f.textures = f.coolToWarm = false;
+    f.areaLights = f.specular = f.reflection = f.gloss = f.dielectric = f.textures = f.coolToWarm = f.thinLens = false;
     f.maxDepth = 0;
     f.pathStackSize = 1;
     return f;

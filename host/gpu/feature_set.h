@@ -32,6 +32,7 @@ struct FeatureSet {
     bool packedNodes = true;           // the BVH nodes' layout (GpuNodes::packed, node_packing.h)
     std::uint32_t sampler = gpu::SAMPLER_FROM_FRAME;  // the render's SamplerKind, compiled in; the
                                                       // general kernel reads it from the frame
+    bool thinLens = true;              // the render's camera has depth of field
 
     auto operator<=>(const FeatureSet&) const = default;
 

@@ -52,11 +52,12 @@ gpu::FrameParams makeFrameParams(const Scene& scene, const SceneAccel& accel, co
     const auto glossSamples = static_cast<std::uint32_t>(options.glossSamples);
 
     gpu::FrameParams f{};
-    f.cameraPosition = glm::vec4(camera.position, 0.0f);
+    // A pinhole keeps 0 and 0: the lanes are read only by a kernel built with HAS_THIN_LENS.
+    f.cameraPosition = glm::vec4(camera.position, camera.thinLens() ? 0.5f * camera.aperture : 0.0f);
     f.cameraU = glm::vec4(basis.u, planeWidth);
     f.cameraV = glm::vec4(basis.v, planeHeight);
     f.cameraW = glm::vec4(basis.w, camera.focalLength);
-    f.background = glm::vec4(options.background.value_or(scene.background), 0.0f);
+    f.background = glm::vec4(options.background.value_or(scene.background), camera.thinLens() ? camera.focusDistance : 0.0f);
     f.image = glm::uvec4(static_cast<std::uint32_t>(options.width), static_cast<std::uint32_t>(options.height),
                          camera.type == CameraType::Orthographic ? gpu::CAMERA_ORTHOGRAPHIC : gpu::CAMERA_PERSPECTIVE, 0u);
     f.sampling = glm::uvec4(static_cast<std::uint32_t>(options.sampler), rpp, lightSamples, glossSamples);

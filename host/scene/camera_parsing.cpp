@@ -10,7 +10,7 @@ namespace vkrt {
 
 Camera parseCamera(const ParseContext& context, pugi::xml_node node, glm::dvec3* exactPosition) {
     checkAttributes(context, node, {"type"});
-    checkChildren(context, node, {"position", "viewDir", "lookatPoint", "focalLength", "imagePlaneWidth"});
+    checkChildren(context, node, {"position", "viewDir", "lookatPoint", "focalLength", "imagePlaneWidth", "focusDistance", "aperture"});
     Camera camera;
     camera.name = node.attribute("name").value();
     camera.where = {context.source.path(), context.source.lineOf(node)};
@@ -57,6 +57,18 @@ Camera parseCamera(const ParseContext& context, pugi::xml_node node, glm::dvec3*
         if (const std::string p = rules::imagePlaneWidthProblem(camera.imagePlaneWidth); !p.empty())
             context.fail(w, p, elementText(w));
     }
+    const pugi::xml_node focus = node.child("focusDistance");
+    if (focus) {
+        camera.focusDistance = parseScalar(context, focus);
+        if (const std::string p = rules::focusDistanceProblem(camera.focusDistance); !p.empty()) context.fail(focus, p, elementText(focus));
+    }
+    const pugi::xml_node aperture = node.child("aperture");
+    if (aperture) {
+        camera.aperture = parseScalar(context, aperture);
+        if (const std::string p = rules::apertureProblem(camera.aperture); !p.empty()) context.fail(aperture, p, elementText(aperture));
+    }
+    if ((camera.focusDistance > 0.0f) != (camera.aperture > 0.0f))
+        context.warn(camera.aperture > 0.0f ? aperture : focus, rules::kLensWithoutBoth, camera.name);
     rules::conditionCamera(camera);
     if (const std::string p = rules::narrowFieldProblem(camera); !p.empty()) context.warn(node, p, camera.name);
     return camera;

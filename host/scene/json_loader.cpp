@@ -410,7 +410,8 @@ private:
     }
 
     Camera parseCamera(const JsonNode& node, glm::dvec3& eye) {
-        checkKeys(context_, node, {"position", "viewDir", "lookatPoint", "focalLength", "imagePlaneWidth"}, {"name", "type"});
+        checkKeys(context_, node, {"position", "viewDir", "lookatPoint", "focalLength", "imagePlaneWidth", "focusDistance", "aperture"},
+                  {"name", "type"});
         Camera camera;
         if (const JsonNode name = attributeMember(context_, node, "name")) camera.name = readText(context_, name);
         camera.where = context_.locationOf(node);
@@ -446,6 +447,12 @@ private:
                 context_.fail(f, p, quoted(context_, f));
         }
         if (const JsonNode w = member(node, "imagePlaneWidth")) camera.imagePlaneWidth = readChecked(w, rules::imagePlaneWidthProblem);
+        const JsonNode focus = member(node, "focusDistance");
+        if (focus) camera.focusDistance = readChecked(focus, rules::focusDistanceProblem);
+        const JsonNode aperture = member(node, "aperture");
+        if (aperture) camera.aperture = readChecked(aperture, rules::apertureProblem);
+        if ((camera.focusDistance > 0.0f) != (camera.aperture > 0.0f))
+            context_.warn(camera.aperture > 0.0f ? aperture : focus, rules::kLensWithoutBoth, camera.name);
         rules::conditionCamera(camera);
         if (const std::string p = rules::narrowFieldProblem(camera); !p.empty()) context_.warn(node, p, camera.name);
         return camera;

@@ -73,6 +73,8 @@ private:
         out["viewDir"] = vec3(c.gaze);  // conditioned already: loading it back changes nothing
         out["focalLength"] = number(c.focalLength);
         out["imagePlaneWidth"] = number(c.imagePlaneWidth);
+        if (c.focusDistance != 0.0f) out["focusDistance"] = number(c.focusDistance);
+        if (c.aperture != 0.0f) out["aperture"] = number(c.aperture);
         return out;
     }
 

@@ -27,6 +27,12 @@ struct Camera {
                                         // scaled into float's comfort range (rules::conditionCamera)
     float focalLength = 1.0f;
     float imagePlaneWidth = 0.5f;
+    // A thin lens (Cook 1984; docs/RENDERING.md §1): points at focusDistance along the gaze are
+    // sharp, and rays leave a disc of diameter `aperture` (scene units) around the eye. 0 and 0
+    // (the default) is the pinhole; the lens is used only when both are > 0.
+    float focusDistance = 0.0f;
+    float aperture = 0.0f;
+    bool thinLens() const { return focusDistance > 0.0f && aperture > 0.0f; }
     SourceLocation where;
 };
 

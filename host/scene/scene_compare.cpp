@@ -136,6 +136,8 @@ SceneDifferences compareScenes(const Scene& a, const Scene& b, std::size_t limit
         d.check(f + ".gaze", x.gaze, y.gaze);
         d.check(f + ".focalLength", x.focalLength, y.focalLength);
         d.check(f + ".imagePlaneWidth", x.imagePlaneWidth, y.imagePlaneWidth);
+        d.check(f + ".focusDistance", x.focusDistance, y.focusDistance);
+        d.check(f + ".aperture", x.aperture, y.aperture);
     });
     d.each("lights", a.lights, b.lights, [&](const std::string& f, const Light& x, const Light& y) {
         d.check(f + ".type", static_cast<long long>(x.type), static_cast<long long>(y.type));

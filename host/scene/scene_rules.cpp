@@ -30,6 +30,12 @@ std::string focalLengthProblem(CameraType type, float focalLength) {
 }
 
 std::string imagePlaneWidthProblem(float width) { return !(width > 0.0f) ? "image plane width must be positive" : ""; }
+std::string focusDistanceProblem(float distance) {
+    return !(distance >= 0.0f) ? "focus distance must not be negative (0 is the pinhole)" : "";
+}
+std::string apertureProblem(float aperture) {
+    return !(aperture >= 0.0f) ? "aperture (the lens diameter) must not be negative (0 is the pinhole)" : "";
+}
 
 namespace {
 // The power of two that brings `largest` (> 0, finite) into [1, 2); 1 inside [2^-16, 2^16]. In

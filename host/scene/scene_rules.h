@@ -25,6 +25,11 @@ std::string viewDirProblem(const glm::vec3& viewDir);
 std::string lookatProblem(const glm::vec3& gaze);  // gaze = lookatPoint - position
 std::string focalLengthProblem(CameraType type, float focalLength);
 std::string imagePlaneWidthProblem(float width);
+// Depth of field: each must be >= 0 (0: the pinhole); one without the other is a warning.
+std::string focusDistanceProblem(float distance);
+std::string apertureProblem(float aperture);
+inline constexpr const char* kLensWithoutBoth =
+    "depth of field needs both a focus distance and an aperture above 0; the camera stays a pinhole";
 // After the checks above: a gaze whose largest component lies outside [2^-16, 2^16] is scaled by a
 // power of two (exact, so its direction does not change) into [1, 2), and so is a perspective
 // camera's (focalLength, imagePlaneWidth) pair, which only their ratio matters for. The renderers

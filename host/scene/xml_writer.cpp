@@ -61,6 +61,8 @@ private:
         vec3(node, "viewDir", c.gaze);  // conditioned already: loading it back changes nothing
         scalar(node, "focalLength", c.focalLength);
         scalar(node, "imagePlaneWidth", c.imagePlaneWidth);
+        if (c.focusDistance != 0.0f) scalar(node, "focusDistance", c.focusDistance);
+        if (c.aperture != 0.0f) scalar(node, "aperture", c.aperture);
     }
 
     // A shape light stands where its stand-in point light is in Scene::lights.

@@ -234,11 +234,11 @@ VKRT_CONST uint SAMPLER_SOBOL = 3u;
 // which runs every path for all 8 lanes (host/gpu/README.md, fact 2).
 VKRT_CONST uint SAMPLER_FROM_FRAME = 0xffffffffu;
 struct FrameParams {
-    vec4 cameraPosition;  // xyz eye, w unused
+    vec4 cameraPosition;  // xyz eye, w = lens radius (aperture / 2; 0 for a pinhole)
     vec4 cameraU;         // xyz unit right vector, w = image plane width
     vec4 cameraV;         // xyz unit up vector,    w = image plane height
     vec4 cameraW;         // xyz unit backward vector (-gaze), w = focal length
-    vec4 background;      // rgb
+    vec4 background;      // rgb, w = focus distance (0 for a pinhole)
     uvec4 image;          // x width, y height, z camera type, w unused
     uvec4 sampling;       // x sampler, y samples per pixel, z light samples, w gloss samples
     uvec4 scene;          // x seed, y max depth, z light count, w top-level root node
@@ -339,7 +339,8 @@ VKRT_CONST uint SPEC_PATH_STACK_SIZE = 12;   // pending reflection/refraction ra
 VKRT_CONST uint SPEC_PACKED_NODES = 13;     // the nodes are GpuBvhNode (3 texels), else GpuExactBvhNode (4)
 VKRT_CONST uint SPEC_SAMPLER = 14;          // SAMPLER_*, or SAMPLER_FROM_FRAME
 VKRT_CONST uint SPEC_SAMPLES_PER_DISPATCH = 15;  // a render's k (sample_batching.h): 1 compiles no sample loop
-VKRT_CONST uint SPEC_COUNT = 16;
+VKRT_CONST uint SPEC_HAS_THIN_LENS = 16;    // the camera has depth of field (Camera::thinLens)
+VKRT_CONST uint SPEC_COUNT = 17;
 
 // Entries of the kernel's BVH traversal stack. The host refuses a BVH whose top-level depth plus
 // deepest bottom-level depth exceeds it, so the stack can never overflow at run time.

@@ -20,7 +20,10 @@
 // C++: the CPU reference and the GPU renderer's host side both call these, so they live in a
 // namespace of their own, with the GLSL names they use.
 namespace vkrt::sampling {
+using glm::abs;
+using glm::cos;
 using glm::min;
+using glm::sin;
 using gpu::uint;
 using gpu::uvec4;
 using gpu::vec2;
@@ -64,6 +67,7 @@ VKRT_CONST float ONE_MINUS_EPSILON = 0.99999994f;
 
 // Sample dimensions. Depth is the recursion depth of the hit being shaded (0 = primary hit).
 VKRT_CONST uint DIM_CAMERA = 0u;
+VKRT_CONST uint DIM_LENS = 1u;  // the thin lens (depth 0's free slot: gloss and lights start at 1 << 16)
 VKRT_FN uint dimGloss(uint depth) { return ((depth + 1u) << 16u) | 0u; }
 VKRT_FN uint dimLight(uint depth, uint areaLightOrdinal) { return ((depth + 1u) << 16u) | (1u + areaLightOrdinal); }
 
@@ -197,6 +201,25 @@ VKRT_FN vec2 sample2D(uint samplerKind, uvec4 grid, uint pixel, uint index, uint
     if (dim != DIM_CAMERA) stratum = permuteIndex(index, grid.x, pcg4d(uvec4(pixel, 0xffffffffu, dim, seed)).x);
     if (samplerKind == SAMPLER_REGULAR) jitter = vec2(0.5f, 0.5f);
     return gridPoint(grid, stratum, jitter);
+}
+
+// Shirley & Chiu's concentric map of [0,1)^2 onto the unit disc ("A Low Distortion Map Between
+// Disk and Square", 1997): square rings go to circles, so the strata of a stratified lens sample
+// stay compact and of equal area on the lens.
+VKRT_FN vec2 concentricDisk(vec2 s) {
+    float ox = 2.0f * s.x - 1.0f;
+    float oy = 2.0f * s.y - 1.0f;
+    if (ox == 0.0f && oy == 0.0f) return vec2(0.0f, 0.0f);
+    float r;
+    float theta;
+    if (abs(ox) > abs(oy)) {
+        r = ox;
+        theta = 0.785398163f * (oy / ox);
+    } else {
+        r = oy;
+        theta = 1.570796327f - 0.785398163f * (ox / oy);
+    }
+    return vec2(r * cos(theta), r * sin(theta));
 }
 
 #ifdef __cplusplus

@@ -129,15 +129,21 @@ TEST(CourseCommandLine, VerboseSettingsNameTheResolvedValues) {
     EXPECT_NE(text.find("CPU threads: 3"), std::string::npos) << text;
 }
 
-TEST(CourseCommandLine, DepthOfFieldIsRefusedNamingIt) {
-    for (const std::vector<std::string>& args : {std::vector<std::string>{"s.xml", "-d", "5"},
-                                                 std::vector<std::string>{"s.xml", "--depth", "2.5"},
-                                                 std::vector<std::string>{"s.xml", "-d"},
-                                                 std::vector<std::string>{"-d", "0"}}) {
-        const std::string err = parseRefused(args);
-        EXPECT_NE(err.find("depth of field is not supported yet (issue 21)"), std::string::npos) << err;
-    }
-    EXPECT_NE(parseRefused({"s.xml", "-d", "5"}).find("-d 5:"), std::string::npos);
+// Issue 21: the course's -d is the focus distance; --aperture the lens diameter. Unset, neither
+// overrides the scene's camera.
+TEST(CourseCommandLine, DepthOfFieldTakesTheFocusDistanceAndAperture) {
+    const CommandLine cl = parseOk({"s.xml", "-d", "5", "--aperture", "0.25"});
+    EXPECT_EQ(cl.focusDistance, 5.0f);
+    EXPECT_EQ(cl.aperture, 0.25f);
+    EXPECT_EQ(parseOk({"s.xml", "--depth", "2.5"}).focusDistance, 2.5f);
+    EXPECT_EQ(parseOk({"s.xml", "--focus-distance", "0"}).focusDistance, 0.0f);
+    const CommandLine none = parseOk({"s.xml"});
+    EXPECT_FALSE(none.focusDistance.has_value());
+    EXPECT_FALSE(none.aperture.has_value());
+    EXPECT_NE(parseRefused({"s.xml", "-d", "-1"}), "");
+    EXPECT_NE(parseRefused({"s.xml", "--aperture", "-0.5"}), "");
+    EXPECT_NE(parseRefused({"s.xml", "-d"}), "");  // a value is required
+    EXPECT_NE(describeSettings(cl).find("focus distance: 5\naperture: 0.25"), std::string::npos) << describeSettings(cl);
 }
 
 TEST(CourseCommandLine, SplitMethodIsAcceptedWithANotice) {
@@ -170,7 +176,7 @@ TEST(CourseCommandLine, QuestionMarkPrintsTheHelpAndExitsZero) {
     EXPECT_EQ(p.result.exitCode, 0);
     for (const char* flag : {"-i", "-o", "-w", "-h", "-a", "-n", "-r", "-k", "-v", "-d", "-s", "-x", "-y", "-?"})
         EXPECT_NE(p.out.find(std::string(flag) + ","), std::string::npos) << flag << " missing from the help:\n" << p.out;
-    EXPECT_NE(p.out.find("depth of field is not supported yet"), std::string::npos) << p.out;
+    EXPECT_NE(p.out.find("--aperture"), std::string::npos) << p.out;
 }
 
 TEST(CourseCommandLine, CourseFlagsWorkInCompareAndSweep) {
@@ -181,7 +187,7 @@ TEST(CourseCommandLine, CourseFlagsWorkInCompareAndSweep) {
     const CommandLine sweep = parseOk({"sweep", "s.xml", "--out", "d", "-h", "100", "-a", "2", "-v"});
     EXPECT_EQ(sweep.render.width, 200);
     EXPECT_TRUE(sweep.verbose);
-    EXPECT_NE(parseRefused({"sweep", "s.xml", "--out", "d", "-d", "1"}).find("depth of field"), std::string::npos);
+    EXPECT_EQ(parseOk({"sweep", "s.xml", "--out", "d", "-d", "1", "--aperture", "0.1"}).focusDistance, 1.0f);
 }
 
 // Issue 22: `-o ""` used to write <scene>.png without a word; an explicit empty path is refused,

@@ -1,5 +1,7 @@
 // <camera>, <light>, background and environment-map forms (docs/XML_FORMAT.md §3.1-3.4).
+#include "json_writer.h"
 #include "scene_test_files.h"
+#include "xml_writer.h"
 
 namespace vkrt::test {
 namespace {
@@ -98,6 +100,50 @@ TEST_F(CameraParsing, SeveralCamerasAreKeptInOrderAndSceneParametersCanPickOne) 
     EXPECT_EQ(first.defaultCamera, 0);
     const Scene picked = loadClean(sceneWithCameras(cameras, "<sceneParameters><camera> b </camera></sceneParameters>"));
     EXPECT_EQ(picked.defaultCamera, 1);
+}
+
+// Issue 21: a thin lens is two optional camera elements, in both formats; negative values are
+// errors at the element, one without the other is a warning (the camera stays a pinhole), and both
+// writers keep them.
+TEST_F(CameraParsing, FocusDistanceAndApertureMakeAThinLens) {
+    const std::string xml = sceneWithCameras(
+        "<camera><position>0 0 0</position><viewDir>0 0 -1</viewDir><focusDistance>4.5</focusDistance>"
+        "<aperture>0.25</aperture></camera>");
+    const Scene scene = loadClean(xml);
+    EXPECT_EQ(scene.cameras[0].focusDistance, 4.5f);
+    EXPECT_EQ(scene.cameras[0].aperture, 0.25f);
+    EXPECT_TRUE(scene.cameras[0].thinLens());
+    EXPECT_FALSE(loadClean(sceneWithCameras("<camera><position>0 0 0</position><viewDir>0 0 -1</viewDir></camera>")).cameras[0].thinLens());
+
+    const Scene json = loadJsonClean(
+        "{\"scene\": {\"camera\": [{\"position\": \"0 0 0\", \"viewDir\": \"0 0 -1\", \"focusDistance\": 4.5, \"aperture\": 0.25}]}}");
+    EXPECT_EQ(json.cameras[0].focusDistance, 4.5f);
+    EXPECT_EQ(json.cameras[0].aperture, 0.25f);
+
+    for (const std::string& text : {xmlSceneText(scene, dir), jsonSceneText(scene, dir)}) {
+        EXPECT_NE(text.find("focusDistance"), std::string::npos) << text;
+        EXPECT_NE(text.find("aperture"), std::string::npos) << text;
+    }
+}
+
+TEST_F(CameraParsing, BadLensValuesAreErrorsAndHalfALensIsAWarning) {
+    const std::string negative = sceneWithCameras(
+        "<camera><position>0 0 0</position><viewDir>0 0 -1</viewDir>\n<aperture>-0.1</aperture><focusDistance>2</focusDistance></camera>");
+    const Issue e = errorOf(negative);
+    expectIssue(e, lineOf(negative, "<aperture>"), "aperture", "-0.1");
+    EXPECT_NE(e.problem.find("must not be negative"), std::string::npos) << e.message();
+    const std::string json = "{\"scene\": {\"camera\": [{\"position\": \"0 0 0\", \"viewDir\": \"0 0 -1\", \"focusDistance\": -3}]}}";
+    const Issue j = jsonErrorOf(json);
+    expectJsonIssueAt(j, json, "-3", "scene.camera[0].focusDistance", "-3");
+
+    const std::string half = sceneWithCameras(
+        "<camera name=\"c\"><position>0 0 0</position><viewDir>0 0 -1</viewDir>\n<focusDistance>2</focusDistance></camera>");
+    Diagnostics d;
+    const Scene scene = load(half, d);
+    ASSERT_EQ(d.warnings().size(), 1u);
+    expectIssue(d.warnings()[0], lineOf(half, "<focusDistance>"), "focusDistance", "c");
+    EXPECT_NE(d.warnings()[0].problem.find("stays a pinhole"), std::string::npos);
+    EXPECT_FALSE(scene.cameras[0].thinLens());
 }
 
 TEST_F(CameraParsing, UnknownCameraTypeWarnsAndIsPerspective) {
