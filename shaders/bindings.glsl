@@ -21,6 +21,7 @@ layout(constant_id = SPEC_PACKED_NODES) const bool PACKED_NODES = true;  // node
 layout(constant_id = SPEC_SAMPLER) const uint SAMPLER_KIND = SAMPLER_FROM_FRAME;  // device_host.h
 layout(constant_id = SPEC_SAMPLES_PER_DISPATCH) const uint SAMPLES_PER_DISPATCH = 1u;  // render.comp
 layout(constant_id = SPEC_HAS_THIN_LENS) const bool HAS_THIN_LENS = true;  // camera.glsl
+layout(constant_id = SPEC_HAS_TRANSLUCENCY) const bool HAS_TRANSLUCENCY = true;  // integrator.glsl
 // 0: nothing in the scene pushes (feature_set.cpp), and the path stack's code is compiled out.
 const bool HAS_PATH_STACK = PATH_STACK_SIZE > 0u;
 const uint PATH_STACK_ENTRIES = HAS_PATH_STACK ? PATH_STACK_SIZE : 1u;  // an array needs one

@@ -97,7 +97,7 @@ void emitReflection(inout PathQueue q, PathRay ray, Surface s, vec3 N, float rou
 }
 
 // Fresnel-weighted reflection and refraction at a dielectric boundary (RENDERING.md §6).
-void emitDielectric(inout PathQueue q, PathRay ray, Surface s, Material m, float hitDistance) {
+void emitDielectric(inout PathQueue q, PathRay ray, Surface s, Material m, float hitDistance, SampleKey key) {
     bool entering = dot(ray.dir, s.geomNormal) < 0.0;
     vec3 weight = ray.weight;
     // Leaving the medium: Beer-Lambert over the distance travelled inside (per-unit transmittance).
@@ -129,7 +129,17 @@ void emitDielectric(inout PathQueue q, PathRay ray, Surface s, Material m, float
         vec3 r = reflect(ray.dir, n);
         emitRay(q, offsetTowards(s, r), r, weight * F, ray.depth + 1u);
     }
-    if (F < 1.0) emitRay(q, offsetTowards(s, refracted), refracted, weight * (1.0 - F), ray.depth + 1u);
+    if (F < 1.0) {
+        float roughness = materialRoughness(m);
+        if (HAS_TRANSLUCENCY && roughness > 0.0) {
+            // Glossy translucency: the refracted direction perturbed in its (U, V) basis, one
+            // direction per pixel sample; one that leaves on the incoming side carries no light.
+            vec2 u = sample2D(samplerKind(), frame.pixelGrid, key.pixel, key.index, dimTranslucency(ray.depth), key.seed);
+            refracted = glossyDirection(refracted, roughness, u);
+            if (dot(refracted, n) >= 0.0) return;
+        }
+        emitRay(q, offsetTowards(s, refracted), refracted, weight * (1.0 - F), ray.depth + 1u);
+    }
 }
 
 vec3 cameraSampleRadiance(vec3 origin, vec3 dir, SampleKey key) {
@@ -151,7 +161,7 @@ vec3 cameraSampleRadiance(vec3 origin, vec3 dir, SampleKey key) {
             Material m = loadMaterial(s.material);
             uint type = materialType(m);
             if (HAS_DIELECTRIC && type == SHADER_DIELECTRIC) {
-                emitDielectric(q, ray, s, m, hit.t);
+                emitDielectric(q, ray, s, m, hit.t, key);
             } else {
                 // Two-sided shading: turn the normals towards the viewer.
                 vec3 V = -ray.dir;

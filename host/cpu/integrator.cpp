@@ -179,11 +179,23 @@ glm::vec3 Integrator::dielectric(const bvh::Ray& ray, const bvh::Hit& hit, const
             reflected = trace(next, depth + 1, here * f, key);
         }
         if (worthTracing(here * (1.0f - f))) {
-            ++counts_.refraction;
             bvh::Ray next;
             next.dir = refractDirection(ray.dir, n, n1, n2);
-            next.origin = offsetRayOrigin(sp.position, sideOf(sp.geometricNormal, next.dir), sp.errorMagnitude);
-            refracted = trace(next, depth + 1, here * (1.0f - f), key);
+            bool transmits = true;
+            if (shader.roughness > 0.0f) {
+                // Glossy translucency (RENDERING.md §6): the refracted direction perturbed as gloss
+                // perturbs the mirror one, one direction per pixel sample; a direction that leaves
+                // on the incoming side carries no light.
+                const glm::vec2 s = sampling::sample2D(ctx_.sampler, ctx_.pixelGrid, key.pixel, key.sample,
+                                                       sampling::dimTranslucency(static_cast<std::uint32_t>(depth)), ctx_.seed);
+                next.dir = glossyDirection(next.dir, shader.roughness, s);
+                transmits = glm::dot(next.dir, n) < 0.0f;
+            }
+            if (transmits) {
+                ++counts_.refraction;
+                next.origin = offsetRayOrigin(sp.position, sideOf(sp.geometricNormal, next.dir), sp.errorMagnitude);
+                refracted = trace(next, depth + 1, here * (1.0f - f), key);
+            }
         }
     }
     return transmittance * (f * reflected + (1.0f - f) * refracted);

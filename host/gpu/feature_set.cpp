@@ -72,6 +72,7 @@ std::array<std::uint32_t, gpu::SPEC_COUNT> FeatureSet::specializationValues(std:
     v[gpu::SPEC_SAMPLER] = sampler;
     v[gpu::SPEC_SAMPLES_PER_DISPATCH] = samplesPerDispatch;
     v[gpu::SPEC_HAS_THIN_LENS] = thinLens;
+    v[gpu::SPEC_HAS_TRANSLUCENCY] = translucency;
     return v;
 }
 
@@ -94,6 +95,7 @@ std::string FeatureSet::describe() const {
     add(textures, "textures");
     add(coolToWarm, "cool-to-warm");
     add(thinLens, "thin-lens");
+    add(translucency, "translucency");
     add(!packedNodes, "exact-nodes");
     add(sampler != gpu::SAMPLER_FROM_FRAME, ("sampler=" + samplerName(static_cast<SamplerKind>(sampler))).c_str());
     add(true, ("depth=" + std::to_string(maxDepth) + " stack=" + std::to_string(pathStackSize)).c_str());
@@ -104,7 +106,7 @@ FeatureSet deriveFeatureSet(const Scene& scene, const SceneAccel& accel, const R
     FeatureSet f = geometryFeatures(accel.bvh, packedNodes);
     f.areaLights = std::any_of(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.type == LightType::Area; });
 
-    f.specular = f.reflection = f.gloss = f.dielectric = f.textures = f.coolToWarm = false;
+    f.specular = f.reflection = f.gloss = f.dielectric = f.textures = f.coolToWarm = f.translucency = false;
     for (const int index : usedShaders(scene)) {
         const Shader& s = scene.shaders.at(index);
         f.specular |= s.type == ShaderType::BlinnPhong || s.type == ShaderType::BlinnPhongMirrored;
@@ -112,9 +114,11 @@ FeatureSet deriveFeatureSet(const Scene& scene, const SceneAccel& accel, const R
         f.dielectric |= s.type == ShaderType::Dielectric;
         // Conservative: roughness only matters on reflecting shaders, but switching gloss on for
         // a rough Lambertian costs a little speed, never a wrong image.
-        f.gloss |= s.roughness > 0.0f;
+        // A Dielectric's roughness is translucency, not gloss: its kernel needs no gloss samples.
+        f.gloss |= s.roughness > 0.0f && s.type != ShaderType::Dielectric;
         f.textures |= s.diffuseTexture != kNoTexture || s.specularTexture != kNoTexture;
         f.coolToWarm |= s.type == ShaderType::CoolToWarm;
+        f.translucency |= s.type == ShaderType::Dielectric && s.roughness > 0.0f;
     }
     f.maxDepth = (f.reflection || f.dielectric) ? static_cast<std::uint32_t>(std::max(options.maxDepth, 0)) : 0u;
     f.pathStackSize = scenePathStack(f, options);
@@ -135,7 +139,7 @@ FeatureSet generalFeatureSet(const RenderOptions& options, bool packedNodes) {
 
 FeatureSet traversalFeatureSet(const bvh::SceneBvh& bvh, bool packedNodes) {
     FeatureSet f = geometryFeatures(bvh, packedNodes);
-    f.areaLights = f.specular = f.reflection = f.gloss = f.dielectric = f.textures = f.coolToWarm = f.thinLens = false;
+    f.areaLights = f.specular = f.reflection = f.gloss = f.dielectric = f.textures = f.coolToWarm = f.thinLens = f.translucency = false;
     f.maxDepth = 0;
     f.pathStackSize = 1;
     return f;

@@ -33,6 +33,7 @@ struct FeatureSet {
     std::uint32_t sampler = gpu::SAMPLER_FROM_FRAME;  // the render's SamplerKind, compiled in; the
                                                       // general kernel reads it from the frame
     bool thinLens = true;              // the render's camera has depth of field
+    bool translucency = true;          // a used Dielectric has roughness > 0 (glossy refraction)
 
     auto operator<=>(const FeatureSet&) const = default;
 

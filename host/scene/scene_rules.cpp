@@ -122,7 +122,9 @@ std::vector<std::string_view> shaderParametersUsedBy(const ShaderTypeName& type)
             return {"diffuse", "diffusetex", "specular", "phongExp", "mirrorCoef", "roughness"};
         case ShaderType::Mirror: return {"roughness"};
         case ShaderType::Glaze: return {"diffuse", "diffusetex", "mirrorCoef", "roughness"};
-        case ShaderType::Dielectric: return {"refractiveIndex", "attenuationCoef"};
+        // roughness: glossy translucency, the refracted direction perturbed as gloss perturbs the
+        // reflected one (vkrt's addition, issue 21).
+        case ShaderType::Dielectric: return {"refractiveIndex", "attenuationCoef", "roughness"};
     }
     return {};
 }

@@ -31,8 +31,9 @@ struct ObjectId {
     bool operator==(const ObjectId&) const = default;
 };
 
+// Gloss and glossy translucency (a rough Dielectric) blur the same way, so they share the region.
 bool reflectsGlossily(const Shader& shader) {
-    const bool reflects = shader.type == ShaderType::Mirror ||
+    const bool reflects = shader.type == ShaderType::Mirror || shader.type == ShaderType::Dielectric ||
                           ((shader.type == ShaderType::Glaze || shader.type == ShaderType::BlinnPhongMirrored) &&
                            shader.mirrorCoef > 0.0f);
     return reflects && shader.roughness > 0.0f;

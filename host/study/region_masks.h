@@ -20,7 +20,7 @@ struct RegionMasks {
     int width = 0, height = 0;
     PixelMask edge;      // the pixel's primary hits differ in object, or in normal by > kEdgeNormalDegrees, or hit/miss
     PixelMask penumbra;  // some light is neither fully visible nor fully hidden from the pixel's primary hits
-    PixelMask gloss;     // a primary hit reflects glossily (a reflecting shader with roughness > 0)
+    PixelMask gloss;     // a primary hit reflects or refracts glossily (a reflecting shader or Dielectric with roughness > 0)
 };
 
 struct ProbeOptions {

@@ -340,7 +340,8 @@ VKRT_CONST uint SPEC_PACKED_NODES = 13;     // the nodes are GpuBvhNode (3 texel
 VKRT_CONST uint SPEC_SAMPLER = 14;          // SAMPLER_*, or SAMPLER_FROM_FRAME
 VKRT_CONST uint SPEC_SAMPLES_PER_DISPATCH = 15;  // a render's k (sample_batching.h): 1 compiles no sample loop
 VKRT_CONST uint SPEC_HAS_THIN_LENS = 16;    // the camera has depth of field (Camera::thinLens)
-VKRT_CONST uint SPEC_COUNT = 17;
+VKRT_CONST uint SPEC_HAS_TRANSLUCENCY = 17; // a used Dielectric has roughness > 0
+VKRT_CONST uint SPEC_COUNT = 18;
 
 // Entries of the kernel's BVH traversal stack. The host refuses a BVH whose top-level depth plus
 // deepest bottom-level depth exceeds it, so the stack can never overflow at run time.

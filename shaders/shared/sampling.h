@@ -70,6 +70,8 @@ VKRT_CONST uint DIM_CAMERA = 0u;
 VKRT_CONST uint DIM_LENS = 1u;  // the thin lens (depth 0's free slot: gloss and lights start at 1 << 16)
 VKRT_FN uint dimGloss(uint depth) { return ((depth + 1u) << 16u) | 0u; }
 VKRT_FN uint dimLight(uint depth, uint areaLightOrdinal) { return ((depth + 1u) << 16u) | (1u + areaLightOrdinal); }
+// Glossy translucency at a dielectric hit of this depth (the slot after every light ordinal).
+VKRT_FN uint dimTranslucency(uint depth) { return ((depth + 1u) << 16u) | 0xffffu; }
 
 // A pseudo-random permutation of [0, n): a bijection on the enclosing power of two, built from
 // steps that are each invertible modulo 2^k (xor with a key, multiply by an odd constant,

@@ -200,6 +200,13 @@ TEST(RegionMasks, FindEdgesPenumbraeAndGloss) {
     const study::RegionMasks g = study::findRegions(glossy, prepareCpuScene(glossy), o);
     EXPECT_GT(study::countPixels(g.gloss), 0u);
     EXPECT_LT(study::countPixels(g.gloss), g.gloss.size() / 2);
+    // Rough glass (glossy translucency) is in the gloss region too; the same glass smooth is not.
+    Scene glass = exampleScene("translucency");
+    const study::RegionMasks t = study::findRegions(glass, prepareCpuScene(glass), o);
+    EXPECT_GT(study::countPixels(t.gloss), 0u);
+    EXPECT_LT(study::countPixels(t.gloss), t.gloss.size() / 2);
+    for (Shader& shader : glass.shaders) shader.roughness = 0.0f;
+    EXPECT_EQ(study::countPixels(study::findRegions(glass, prepareCpuScene(glass), o).gloss), 0u);
 
     // The masks survive their image form (the cache's).
     const study::RegionMasks back = study::masksFromImage(study::masksToImage(g));
