@@ -32,6 +32,9 @@ struct InstanceInput {
     std::uint32_t group = 0;
     glm::mat4 objectToWorld{1.0f};
     std::uint32_t materialOverride = gpu::MATERIAL_NONE;  // Instance::info (instanceMaterialOverride)
+    // Motion blur: the pose at motion time 1 (objectToWorld is time 0's); instance_motion.h.
+    bool moving = false;
+    glm::mat4 objectToWorldEnd{1.0f};
 };
 
 struct BuildOptions {
@@ -74,6 +77,9 @@ struct SceneBvh {
     std::vector<std::uint32_t> primSource;    // flat primitive -> its index in the group's input list
     std::vector<GroupRange> groups;           // per input group
     std::vector<gpu::Instance> instances;     // same order as the input instances
+    std::vector<gpu::InstanceMotion> motions; // the moving instances' poses, in instance order; the
+                                              // kernels read them after the instances in one table
+                                              // (Instance::info.w: motionTexel)
     std::uint32_t topRoot = 0;                // root node of the top level (over instances)
     BuildStats stats;
     WideBvh cpu;                              // the same trees, 4-wide, for the CPU traversal only;
@@ -92,7 +98,12 @@ struct Ray {
     glm::vec3 origin{0.0f};
     glm::vec3 dir{0.0f, 0.0f, -1.0f};  // need not be unit length; t is measured in units of |dir|
     float tmax = 3.402823466e38f;      // hits need 0 < t < tmax
+    float time = 0.0f;                 // where moving instances are (0: their transform, 1: the end one)
 };
+
+// Instance i as a ray at `time` sees it: the record itself, or a moving instance's pose then
+// (shaders/shared/motion.h, the kernels' arithmetic).
+gpu::Instance instanceAtTime(const SceneBvh& bvh, std::uint32_t i, float time);
 
 struct Hit {
     float t = 0.0f;

@@ -11,6 +11,7 @@
 
 #include "bvh.h"
 #include "flatten.h"
+#include "instance_motion.h"
 #include "prefault.h"
 #include "primitives.h"
 #include "sah_builder.h"
@@ -122,7 +123,8 @@ void buildWideCopy(const std::vector<std::vector<std::uint32_t>>& groupBlocks, c
         else bvh.cpu.topRoot = root;
         wideFirst += plans[k].total;
     }
-    for (const InstanceInput& in : instances) bvh.cpu.identity.push_back(in.objectToWorld == glm::mat4(1.0f) ? 1 : 0);
+    for (const InstanceInput& in : instances)
+        bvh.cpu.identity.push_back(in.objectToWorld == glm::mat4(1.0f) && !in.moving ? 1 : 0);
     bvh.cpu.built = true;
 }
 
@@ -219,7 +221,19 @@ SceneBvh buildSceneBvh(const std::vector<std::vector<PrimitiveInput>>& groups,
     for (std::size_t i = 0; i < instances.size(); ++i) {
         const GroupRange& g = bvh.groups[instances[i].group];
         bvh.instances[i] = makeInstance(instances[i], g.rootNode, i);
-        worldBoxes[i] = worldBounds(Aabb{g.lo, g.hi}, instances[i].objectToWorld);
+        if (instances[i].moving) {
+            try {
+                bvh.motions.push_back(decomposeMotion(instances[i].objectToWorld, instances[i].objectToWorldEnd));
+            } catch (const std::invalid_argument& e) {
+                throw std::invalid_argument("bvh: instance " + std::to_string(i) + ": " + e.what());
+            }
+            // The records follow the instances in the kernels' table.
+            bvh.instances[i].info.w = static_cast<std::uint32_t>(instances.size() * gpu::INSTANCE_TEXELS +
+                                                                 (bvh.motions.size() - 1) * gpu::MOTION_TEXELS);
+            worldBoxes[i] = motionBounds(Aabb{g.lo, g.hi}, bvh.motions.back());
+        } else {
+            worldBoxes[i] = worldBounds(Aabb{g.lo, g.hi}, instances[i].objectToWorld);
+        }
     }
     // The top level may use what the bottom levels leave of the kernels' stack: a kernel needs
     // topDepth + bottomDepth entries (one per inner node on the path in each level; nothing is

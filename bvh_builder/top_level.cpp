@@ -49,6 +49,7 @@ gpu::Instance makeInstance(const InstanceInput& in, std::uint32_t bottomRoot, st
 }
 
 bool isIdentity(const gpu::Instance& instance) {
+    if (gpu::instanceMotionTexel(instance.info) != gpu::MOTION_NONE) return false;
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 4; ++c)
             if (instance.objectToWorld[r][c] != (r == c ? 1.0f : 0.0f) || instance.worldToObject[r][c] != (r == c ? 1.0f : 0.0f))

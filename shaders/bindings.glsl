@@ -4,6 +4,8 @@
 #ifndef VKRT_BINDINGS_GLSL
 #define VKRT_BINDINGS_GLSL
 
+#include "motion.h"  // posedInstance below
+
 layout(constant_id = SPEC_HAS_TRIANGLES) const bool HAS_TRIANGLES = true;
 layout(constant_id = SPEC_HAS_SPHERES) const bool HAS_SPHERES = true;
 layout(constant_id = SPEC_HAS_BOXES) const bool HAS_BOXES = true;
@@ -22,6 +24,7 @@ layout(constant_id = SPEC_SAMPLER) const uint SAMPLER_KIND = SAMPLER_FROM_FRAME;
 layout(constant_id = SPEC_SAMPLES_PER_DISPATCH) const uint SAMPLES_PER_DISPATCH = 1u;  // render.comp
 layout(constant_id = SPEC_HAS_THIN_LENS) const bool HAS_THIN_LENS = true;  // camera.glsl
 layout(constant_id = SPEC_HAS_TRANSLUCENCY) const bool HAS_TRANSLUCENCY = true;  // integrator.glsl
+layout(constant_id = SPEC_HAS_MOTION) const bool HAS_MOTION = true;  // motion blur: render.comp, traverse.glsl, surface.glsl
 // 0: nothing in the scene pushes (feature_set.cpp), and the path stack's code is compiled out.
 const bool HAS_PATH_STACK = PATH_STACK_SIZE > 0u;
 const uint PATH_STACK_ENTRIES = HAS_PATH_STACK ? PATH_STACK_SIZE : 1u;  // an array needs one
@@ -56,6 +59,8 @@ float framePlaneHeight() { return frame.cameraV.w; }
 float frameFocalLength() { return frame.cameraW.w; }
 float frameLensRadius() { return frame.cameraPosition.w; }
 float frameFocusDistance() { return frame.background.w; }
+float frameShutterOpen() { return frame.shutter.x; }
+float frameShutterClose() { return frame.shutter.y; }
 uint frameWidth() { return frame.image.x; }
 uint frameHeight() { return frame.image.y; }
 uint frameCameraType() { return frame.image.z; }
@@ -98,6 +103,34 @@ VertexAttrib loadVertexAttrib(uint i) {
 // Row `row` (0-8) of an instance's three 3x4 matrices, and its info texel.
 vec4 instanceRow(uint i, uint row) { return uintBitsToFloat(imageLoad(instanceTexels, int(i * INSTANCE_TEXELS + row))); }
 uvec4 instanceInfo(uint i) { return imageLoad(instanceTexels, int(i * INSTANCE_TEXELS + INSTANCE_INFO_TEXEL)); }
+
+// Motion blur: the time of the camera sample being traced (render.comp sets it per sample when
+// HAS_MOTION; every ray of the sample's tree sees the scene at that time).
+float sampleTime = 0.0;
+
+// A moving instance's poses (device_host.h InstanceMotion), at `texel` of the instance table.
+InstanceMotion loadInstanceMotion(uint texel) {
+    InstanceMotion m;
+    int t = int(texel);
+    m.translation0 = uintBitsToFloat(imageLoad(instanceTexels, t));
+    m.translation1 = uintBitsToFloat(imageLoad(instanceTexels, t + 1));
+    m.rotation0 = uintBitsToFloat(imageLoad(instanceTexels, t + 2));
+    m.rotation1 = uintBitsToFloat(imageLoad(instanceTexels, t + 3));
+    for (int k = 0; k < 3; ++k) {
+        m.stretch0[k] = uintBitsToFloat(imageLoad(instanceTexels, t + 4 + k));
+        m.stretch1[k] = uintBitsToFloat(imageLoad(instanceTexels, t + 7 + k));
+    }
+    return m;
+}
+
+// Instance i's three matrices where it is at sampleTime (motion.h); only for a moving instance.
+Instance posedInstance(uint i, uint motionTexel) {
+    Instance still;
+    still.info = uvec4(0u);
+    return instanceAtTime(still, loadInstanceMotion(motionTexel), sampleTime);
+}
+// The motion record of instance i, or MOTION_NONE (always MOTION_NONE without HAS_MOTION).
+uint instanceMotion(uint i) { return HAS_MOTION ? instanceMotionTexel(instanceInfo(i)) : MOTION_NONE; }
 
 Material loadMaterial(uint i) {
     int t = int(i * MATERIAL_TEXELS);

@@ -32,6 +32,10 @@ void addSample(uint x, uint y, uint index, inout SampleKey key, inout vec4 sum, 
     key.index = index;
     vec2 subPixel = sample2D(samplerKind(), frame.pixelGrid, key.pixel, key.index, DIM_CAMERA, key.seed);
     vec2 lens = HAS_THIN_LENS ? sample2D(samplerKind(), frame.pixelGrid, key.pixel, key.index, DIM_LENS, key.seed) : vec2(0.5);
+    if (HAS_MOTION) {
+        float u = sample1D(samplerKind(), frame.pixelGrid, key.pixel, key.index, DIM_TIME, key.seed);
+        sampleTime = frameShutterOpen() + (frameShutterClose() - frameShutterOpen()) * u;
+    }
     CameraRay camera = cameraRay(x, y, subPixel, lens);
     vec3 radiance = cameraSampleRadiance(camera.origin, camera.dir, key);
     if (failedSample == NO_SAMPLE && failureFlags() != 0u) failedSample = index;

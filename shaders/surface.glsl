@@ -59,8 +59,17 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
     s.uv = vec2(0.0);
     vec3 o = origin;
     vec3 d = dir;
+    // A moving instance where it was at the sample's time (the traversal found the hit there).
+    uint motion = HAS_INSTANCES ? instanceMotion(hit.instance) : MOTION_NONE;
+    Instance posed;
+    if (motion != MOTION_NONE) posed = posedInstance(hit.instance, motion);
     if (HAS_INSTANCES) {
         vec4 r0 = instanceRow(hit.instance, 0u), r1 = instanceRow(hit.instance, 1u), r2 = instanceRow(hit.instance, 2u);
+        if (motion != MOTION_NONE) {
+            r0 = posed.worldToObject[0];
+            r1 = posed.worldToObject[1];
+            r2 = posed.worldToObject[2];
+        }
         o = rowTransformPoint(r0, r1, r2, origin);
         d = rowTransformVector(r0, r1, r2, dir);
     }
@@ -141,6 +150,14 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
     if (HAS_INSTANCES) {
         vec4 w0 = instanceRow(hit.instance, 3u), w1 = instanceRow(hit.instance, 4u), w2 = instanceRow(hit.instance, 5u);
         vec4 n0 = instanceRow(hit.instance, 6u), n1 = instanceRow(hit.instance, 7u), n2 = instanceRow(hit.instance, 8u);
+        if (motion != MOTION_NONE) {
+            w0 = posed.objectToWorld[0];
+            w1 = posed.objectToWorld[1];
+            w2 = posed.objectToWorld[2];
+            n0 = posed.normalToWorld[0];
+            n1 = posed.normalToWorld[1];
+            n2 = posed.normalToWorld[2];
+        }
         uint override = instanceMaterialOverride(instanceInfo(hit.instance));
         p = rowTransformPoint(w0, w1, w2, p);
         objectMagnitude = transformedMagnitude(w0, w1, w2, objectMagnitude);

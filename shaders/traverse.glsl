@@ -89,6 +89,13 @@ TraceRay rayIntoInstance(vec3 origin, vec3 dir, uint instance) {
     vec4 r0 = instanceRow(instance, 0u);  // worldToObject
     vec4 r1 = instanceRow(instance, 1u);
     vec4 r2 = instanceRow(instance, 2u);
+    uint motion = instanceMotion(instance);
+    if (motion != MOTION_NONE) {  // a moving instance: its inverse at the sample's time
+        Instance posed = posedInstance(instance, motion);
+        r0 = posed.worldToObject[0];
+        r1 = posed.worldToObject[1];
+        r2 = posed.worldToObject[2];
+    }
     vec3 o = vec3(dot(r0.xyz, origin) + r0.w, dot(r1.xyz, origin) + r1.w, dot(r2.xyz, origin) + r2.w);
     vec3 d = vec3(dot(r0.xyz, dir), dot(r1.xyz, dir), dot(r2.xyz, dir));
     return makeTraceRay(o, d);

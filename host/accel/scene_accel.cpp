@@ -91,7 +91,11 @@ SceneAccel buildSceneAccel(const Scene& scene, const bvh::BuildOptions& options)
         const Instance& inst = scene.instances[i];
         const std::uint32_t override =
             inst.shaderOverride >= 0 ? static_cast<std::uint32_t>(inst.shaderOverride) : gpu::MATERIAL_NONE;
-        instances.push_back({firstPrototypeGroup + static_cast<std::uint32_t>(inst.prototype), inst.objectToWorld, override});
+        // An end pose equal to the start is no motion: the instance renders as a static one, bit
+        // for bit (docs/RENDERING.md §9).
+        const bool moving = inst.moving && inst.objectToWorldEnd != inst.objectToWorld;
+        instances.push_back({firstPrototypeGroup + static_cast<std::uint32_t>(inst.prototype), inst.objectToWorld, override,
+                             moving, inst.objectToWorldEnd});
         accel.instanceOrigin.push_back(static_cast<int>(i));
     }
 

@@ -10,6 +10,12 @@ namespace vkrt {
 
 namespace {
 
+std::string number(double value) {
+    std::ostringstream out;
+    out << value;
+    return out.str();
+}
+
 // "r,g,b" or "r g b" -> a colour; throws CLI::ValidationError.
 glm::vec3 parseColour(const std::string& text) {
     std::string s = text;
@@ -40,6 +46,19 @@ void addImageOptions(CLI::App& app, CommandLine& cl, std::string& bg) {
         ->check(CLI::Range(1, 4096));
     app.add_option("--seed", cl.render.seed, "Random seed: the same seed and options give the same image");
     app.add_option("--bg", bg, "Background colour r,g,b (overrides the scene's bgColor)");
+    app.add_option_function<std::vector<float>>(
+           "--shutter",
+           [&cl](const std::vector<float>& v) {
+               const std::string text = number(v[0]) + "," + number(v[1]);
+               if (!std::isfinite(v[0]) || !std::isfinite(v[1])) throw CLI::ValidationError("--shutter", text + ": open and close must be finite");
+               if (v[1] < v[0]) throw CLI::ValidationError("--shutter", text + ": the shutter closes (" + number(v[1]) + ") before it opens (" + number(v[0]) + ")");
+               cl.render.shutter = glm::vec2(v[0], v[1]);
+           },
+           "Motion blur: the shutter's OPEN,CLOSE in the motion's time (0 = the instances' <transform>, 1 = "
+           "their <transformEnd>; default 0,1, the whole motion; 0,0 renders the start pose sharp). A scene "
+           "without moving instances renders the same image with any shutter")
+        ->delimiter(',')
+        ->expected(2);
     app.add_option("--camera", cl.camera, "Which camera of the scene (index; default: the one <sceneParameters> names, else the first)")
         ->check(CLI::NonNegativeNumber);
     app.add_option("-n,--numcpus,--threads", cl.render.threads,
@@ -127,12 +146,6 @@ void addCourseOptions(CLI::App& app, CommandLine& cl, CourseText& course) {
         ->check(CLI::PositiveNumber);
 }
 
-std::string number(double value) {
-    std::ostringstream out;
-    out << value;
-    return out.str();
-}
-
 // -a R fixes the side the command line leaves open, so the image is R times as wide as it is high
 // (the camera's image plane follows the pixel grid, docs/XML_FORMAT.md §3.3). Both sides given: R must
 // agree with them up to the rounding of one side, otherwise the command line contradicts itself.
@@ -196,6 +209,7 @@ std::string describeSettings(const CommandLine& cl) {
     out << "recursion depth: " << r.maxDepth << "\n";
     if (cl.focusDistance) out << "focus distance: " << *cl.focusDistance << "\n";
     if (cl.aperture) out << "aperture: " << *cl.aperture << "\n";
+    if (r.shutter) out << "shutter: " << r.shutter->x << "," << r.shutter->y << "\n";
     out << "CPU threads: " << (r.threads == 0 ? std::string("all cores") : std::to_string(r.threads)) << "\n";
     out << "seed: " << r.seed << "\n";
     if (cl.command != Command::Sweep)

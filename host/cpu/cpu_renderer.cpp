@@ -43,7 +43,13 @@ glm::vec3 renderPixel(const RenderContext& ctx, Integrator& integrator, int i, i
         // as before depth of field existed.
         const glm::vec2 lens = ctx.camera.thinLens ? sampling::sample2D(ctx.sampler, ctx.pixelGrid, pixel, s, sampling::DIM_LENS, ctx.seed)
                                                    : glm::vec2(0.5f);
-        glm::vec3 c = integrator.cameraRadiance(cpu::cameraRay(ctx.camera, i, j, offset, lens), {pixel, s});
+        // So is the time: a scene without motion is the same computation as before motion blur.
+        float time = 0.0f;
+        if (ctx.motion) {
+            const float u = sampling::sample1D(ctx.sampler, ctx.pixelGrid, pixel, s, sampling::DIM_TIME, ctx.seed);
+            time = ctx.shutter.x + (ctx.shutter.y - ctx.shutter.x) * u;
+        }
+        glm::vec3 c = integrator.cameraRadiance(cpu::cameraRay(ctx.camera, i, j, offset, lens), {pixel, s, time});
         if (!isFinite(c)) {
             ++nonFinite;
             c = glm::vec3(0.0f);

@@ -36,17 +36,20 @@ glm::vec3 Integrator::cameraRadiance(const bvh::Ray& ray, SampleKey key) {
 }
 
 glm::vec3 Integrator::trace(const bvh::Ray& ray, int depth, glm::vec3 weight, SampleKey key) {
+    bvh::Ray timed = ray;
+    timed.time = key.time;
     bvh::Hit hit;
-    if (!bvh::intersectClosest(ctx_.accel->bvh, ray, hit)) return ctx_.background;
-    return shade(ray, hit, depth, weight, key);
+    if (!bvh::intersectClosest(ctx_.accel->bvh, timed, hit)) return ctx_.background;
+    return shade(timed, hit, depth, weight, key);
 }
 
-bool Integrator::occluded(const glm::vec3& origin, const glm::vec3& lightPoint) {
+bool Integrator::occluded(const glm::vec3& origin, const glm::vec3& lightPoint, float time) {
     ++counts_.shadow;
     bvh::Ray shadow;
     shadow.origin = origin;
     shadow.dir = lightPoint - origin;
     shadow.tmax = kShadowRayEnd;
+    shadow.time = time;
     return bvh::intersectAny(ctx_.accel->bvh, shadow);
 }
 
@@ -101,7 +104,7 @@ glm::vec3 Integrator::directLight(const Shader& shader, const SurfacePoint& sp, 
         if (!shadowed) return coolToWarm(kd, intensity, n, l);
         if (glm::dot(n, l) <= 0.0f) return glm::vec3(0.0f);
         const glm::vec3 origin = offsetRayOrigin(sp.position, sideOf(ng, l), sp.errorMagnitude);
-        if (occluded(origin, q)) return glm::vec3(0.0f);
+        if (occluded(origin, q, key.time)) return glm::vec3(0.0f);
         glm::vec3 c = lambertian(kd, intensity, n, l);
         if (specular) c += blinnPhongSpecular(ks, shader.phongExp, intensity, n, l, view);
         return c;

@@ -32,6 +32,7 @@ struct RayCounts {
 struct SampleKey {
     std::uint32_t pixel = 0;   // j * width + i
     std::uint32_t sample = 0;  // s in [0, rpp)
+    float time = 0.0f;         // the sample's time in the shutter: every ray of its tree has it
 };
 
 class Integrator {
@@ -57,7 +58,7 @@ private:
                          float roughness, int depth, glm::vec3 weight, SampleKey key);
     glm::vec3 dielectric(const bvh::Ray& ray, const bvh::Hit& hit, const Shader& shader, const SurfacePoint& sp,
                          int depth, glm::vec3 weight, SampleKey key);
-    bool occluded(const glm::vec3& origin, const glm::vec3& lightPoint);
+    bool occluded(const glm::vec3& origin, const glm::vec3& lightPoint, float time);
 
     const RenderContext& ctx_;
     RayCounts counts_;

@@ -50,6 +50,8 @@ RenderContext makeRenderContext(const Scene& scene, const SceneAccel& accel, con
     ctx.pixelGrid = sampling::makeSampleGrid(ctx.samplesPerPixel);
     ctx.lightGrid = sampling::makeSampleGrid(static_cast<unsigned>(lightCount));
     ctx.glossGrid = sampling::makeSampleGrid(static_cast<unsigned>(glossCount));
+    ctx.shutter = shutterOf(options);
+    ctx.motion = !accel.bvh.motions.empty();
     return ctx;
 }
 

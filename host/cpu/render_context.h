@@ -27,6 +27,8 @@ struct RenderContext {
     unsigned lightSamples = 1;         // k per area light per pixel sample
     unsigned glossSamples = 1;         // g per glossy reflection per pixel sample
     glm::uvec4 pixelGrid{0}, lightGrid{0}, glossGrid{0};  // sampling.h grids of rpp, rpp*k, rpp*g strata
+    bool motion = false;               // some instance moves: each sample draws a time in the shutter
+    glm::vec2 shutter{0.0f, 1.0f};     // open, close (RenderOptions::shutter)
 };
 
 // Checks the options against the scene (std::invalid_argument naming the option and value).

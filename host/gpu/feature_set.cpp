@@ -45,6 +45,7 @@ FeatureSet geometryFeatures(const bvh::SceneBvh& bvh, bool packedNodes) {
         f.boxes |= kind == gpu::PRIM_KIND_BOX;
     }
     f.instances = needsTopLevel(bvh);
+    f.motion = !bvh.motions.empty();
     f.packedNodes = packedNodes;
     return f;
 }
@@ -73,6 +74,7 @@ std::array<std::uint32_t, gpu::SPEC_COUNT> FeatureSet::specializationValues(std:
     v[gpu::SPEC_SAMPLES_PER_DISPATCH] = samplesPerDispatch;
     v[gpu::SPEC_HAS_THIN_LENS] = thinLens;
     v[gpu::SPEC_HAS_TRANSLUCENCY] = translucency;
+    v[gpu::SPEC_HAS_MOTION] = motion;
     return v;
 }
 
@@ -96,6 +98,7 @@ std::string FeatureSet::describe() const {
     add(coolToWarm, "cool-to-warm");
     add(thinLens, "thin-lens");
     add(translucency, "translucency");
+    add(motion, "motion");
     add(!packedNodes, "exact-nodes");
     add(sampler != gpu::SAMPLER_FROM_FRAME, ("sampler=" + samplerName(static_cast<SamplerKind>(sampler))).c_str());
     add(true, ("depth=" + std::to_string(maxDepth) + " stack=" + std::to_string(pathStackSize)).c_str());

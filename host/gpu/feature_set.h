@@ -34,6 +34,7 @@ struct FeatureSet {
                                                       // general kernel reads it from the frame
     bool thinLens = true;              // the render's camera has depth of field
     bool translucency = true;          // a used Dielectric has roughness > 0 (glossy refraction)
+    bool motion = true;                // some instance moves (motion blur: a time per sample)
 
     auto operator<=>(const FeatureSet&) const = default;
 

@@ -66,6 +66,8 @@ gpu::FrameParams makeFrameParams(const Scene& scene, const SceneAccel& accel, co
     f.pixelGrid = sampling::makeSampleGrid(rpp);
     f.lightGrid = sampling::makeSampleGrid(rpp * lightSamples);
     f.glossGrid = sampling::makeSampleGrid(rpp * glossSamples);
+    const glm::vec2 shutter = shutterOf(options);  // read only by a kernel built with HAS_MOTION
+    f.shutter = glm::vec4(shutter.x, shutter.y, 0.0f, 0.0f);
     return f;
 }
 

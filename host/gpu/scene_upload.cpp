@@ -45,7 +45,9 @@ std::vector<BufferPlan> planSceneBuffers(const SceneTables& tables, const bvh::S
     plan[gpu::BINDING_PRIMS] = {"primitives", BufferKind::StorageTexel, texels(bytesOf(bvh.prims))};
     plan[gpu::BINDING_PRIM_INFO] = {"primitive info", BufferKind::StorageTexel, texels(bytesOf(tables.primInfos))};
     plan[gpu::BINDING_VERTEX_ATTRIBS] = {"vertex attributes", BufferKind::StorageTexel, texels(bytesOf(tables.vertexAttribs))};
-    plan[gpu::BINDING_INSTANCES] = {"instances", BufferKind::StorageTexel, texels(bytesOf(bvh.instances))};
+    // The moving instances' motion records follow the instances (Instance::info.w points at them).
+    plan[gpu::BINDING_INSTANCES] = {"instances", BufferKind::StorageTexel,
+                                    texels(bytesOf(bvh.instances) + bvh.motions.size() * sizeof(gpu::InstanceMotion))};
     plan[gpu::BINDING_SHADERS] = {"materials", BufferKind::StorageTexel, texels(bytesOf(tables.materials))};
     plan[gpu::BINDING_LIGHTS] = {"lights", BufferKind::StorageTexel, texels(bytesOf(tables.lights))};
     plan[gpu::BINDING_TEXTURES] = {"texture info", BufferKind::StorageTexel, texels(bytesOf(tables.textures))};
@@ -89,7 +91,11 @@ SceneUpload::SceneUpload(const Context& context, Transfers& transfers, const Ker
     upload(gpu::BINDING_PRIMS, bvh.prims);
     upload(gpu::BINDING_PRIM_INFO, tables.primInfos);
     upload(gpu::BINDING_VERTEX_ATTRIBS, tables.vertexAttribs);
-    upload(gpu::BINDING_INSTANCES, bvh.instances);
+    std::vector<std::byte> instanceTable = padded(bvh.instances, plan[gpu::BINDING_INSTANCES].bytes);
+    if (!bvh.motions.empty())
+        std::memcpy(instanceTable.data() + bvh.instances.size() * sizeof(gpu::Instance), bvh.motions.data(),
+                    bvh.motions.size() * sizeof(gpu::InstanceMotion));
+    transfers.upload(buffers_[gpu::BINDING_INSTANCES], instanceTable);
     upload(gpu::BINDING_SHADERS, tables.materials);
     upload(gpu::BINDING_LIGHTS, tables.lights);
     upload(gpu::BINDING_TEXTURES, tables.textures);

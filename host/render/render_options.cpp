@@ -1,5 +1,7 @@
 #include "render_options.h"
 
+#include <cmath>
+
 #include <stdexcept>
 
 namespace vkrt {
@@ -18,6 +20,15 @@ SamplerKind parseSampler(const std::string& name) {
     for (SamplerKind s : {SamplerKind::Jittered, SamplerKind::Regular, SamplerKind::Random, SamplerKind::Sobol})
         if (samplerName(s) == name) return s;
     throw std::invalid_argument("unknown sampler '" + name + "' (expected jittered, regular, random or sobol)");
+}
+
+glm::vec2 shutterOf(const RenderOptions& options) {
+    const glm::vec2 shutter = options.shutter.value_or(glm::vec2(0.0f, 1.0f));
+    const auto text = [&] { return std::to_string(shutter.x) + "," + std::to_string(shutter.y); };
+    if (!std::isfinite(shutter.x) || !std::isfinite(shutter.y))
+        throw std::invalid_argument("shutter " + text() + ": open and close must be finite");
+    if (shutter.y < shutter.x) throw std::invalid_argument("shutter " + text() + ": it closes before it opens");
+    return shutter;
 }
 
 }  // namespace vkrt

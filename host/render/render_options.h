@@ -29,6 +29,9 @@ struct RenderOptions {
     SamplerKind sampler = SamplerKind::Jittered;
     std::optional<glm::vec3> background;  // overrides the scene's bgColor
     int camera = 0;              // index into Scene::cameras
+    // Motion blur: the shutter's open and close in the instances' motion time (0: <transform>,
+    // 1: <transformEnd>); absent, the whole motion [0, 1]. A scene without motion ignores it.
+    std::optional<glm::vec2> shutter;
     int threads = 0;             // CPU threads, 0 = all hardware threads
     bool quiet = false;          // no progress bar
     // Set asynchronously (Ctrl-C); renderers stop at the next tile or pass and throw RenderCancelled.
@@ -36,5 +39,9 @@ struct RenderOptions {
 };
 
 struct RenderCancelled {};
+
+// The shutter a render uses (RenderOptions::shutter, or [0, 1]); throws std::invalid_argument
+// naming both values when one is not finite or the shutter closes before it opens.
+glm::vec2 shutterOf(const RenderOptions& options);
 
 }  // namespace vkrt

@@ -227,13 +227,14 @@ private:
             allowed.push_back("xform");
             allowed.push_back("transform");
         }
+        if (role == ShapeRole::Loose) allowed.push_back("xformEnd");
         checkKeys(context_, node, allowed, {"name", "type"});
         Shape shape;
         if (const JsonNode name = attributeMember(context_, node, "name")) shape.name = readText(context_, name);
         shape.type = type;
         shape.where = context_.locationOf(node);
         // Placed as it stands (no prototype, no transform): its points are world positions.
-        const bool world = role != ShapeRole::Prototype && !member(node, "xform") && !member(node, "transform");
+        const bool world = role != ShapeRole::Prototype && !placed(node);
         parseGeometry(node, shape, world);
         const JsonNode reference = member(node, "shader");
         if (reference) {
@@ -297,6 +298,30 @@ private:
                                       : rules::composeTransform(placement.steps);
         const std::string problem = used ? rules::composedTransformProblem(placement.objectToWorld) : "";
         if (!problem.empty()) context_.fail(used, problem);
+        return placement;
+    }
+
+    // Whether a loose shape is placed by a transform (else its points are world positions).
+    static bool placed(const JsonNode& node) {
+        return member(node, "xform") || member(node, "transform") || member(node, "xformEnd");
+    }
+
+    // transformOf, and for motion blur the shape's xformEnd (the pose at the end of the motion,
+    // an ordered array like xform; docs/JSON_FORMAT.md §5).
+    rules::Placement movingTransformOf(const JsonNode& node) {
+        rules::Placement placement = transformOf(node);
+        const JsonNode end = member(node, "xformEnd");
+        if (!end) return placement;
+        std::vector<glm::dvec3> exactTranslations;
+        placement.stepsEnd = parseXform(end, exactTranslations);
+        placement.objectToWorldEnd = context_.localOrigin
+                                         ? rules::placeRelativeTo(placement.stepsEnd, exactTranslations, context_.origin)
+                                         : rules::composeTransform(placement.stepsEnd);
+        if (const std::string problem = rules::composedTransformProblem(placement.objectToWorldEnd); !problem.empty())
+            context_.fail(end, problem);
+        if (const std::string problem = rules::motionProblem(placement.objectToWorld, placement.objectToWorldEnd); !problem.empty())
+            context_.fail(end, problem);
+        placement.moving = true;
         return placement;
     }
 
@@ -549,8 +574,8 @@ private:
             return;
         }
         Shape shape = parseShape(node, *type, ShapeRole::Loose);
-        if (member(node, "xform") || member(node, "transform")) {
-            const rules::Placement placement = transformOf(node);
+        if (placed(node)) {
+            const rules::Placement placement = movingTransformOf(node);
             rules::addPlainShape(scene_, std::move(shape), &placement);
         } else {
             rules::addPlainShape(scene_, std::move(shape), nullptr);
@@ -558,7 +583,7 @@ private:
     }
 
     void placeInstance(const JsonNode& node) {
-        checkKeys(context_, node, {"shader", "xform", "transform"}, {"name", "type", "id"});
+        checkKeys(context_, node, {"shader", "xform", "transform", "xformEnd"}, {"name", "type", "id"});
         const std::optional<int> prototype = prototypeOf(node);
         if (!prototype) return;
         Instance instance;
@@ -569,9 +594,7 @@ private:
         if (instance.shaderOverride < 0 && missingShaders_.isPlaceholder(shape.shader))
             context_.fail(node, "no shader: the prototype's shader reference is unresolved and the instance names none",
                           scene_.shaders[static_cast<std::size_t>(shape.shader)].name);
-        rules::Placement placement = transformOf(node);
-        instance.steps = std::move(placement.steps);
-        instance.objectToWorld = placement.objectToWorld;
+        rules::placeInstance(instance, movingTransformOf(node));
         instance.where = context_.locationOf(node);
         scene_.instances.push_back(instance);
     }

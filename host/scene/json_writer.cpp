@@ -178,6 +178,7 @@ private:
         if (placed.ownPrototype) {
             Json out = shape(scene_.prototypes.at(static_cast<std::size_t>(placed.prototype)));
             out["xform"] = xform(placed.steps);
+            if (placed.moving) out["xformEnd"] = xform(placed.stepsEnd);
             return out;
         }
         Json out = Json::object();
@@ -186,6 +187,7 @@ private:
         out["_id"] = scene_.prototypes.at(static_cast<std::size_t>(placed.prototype)).name;
         if (placed.shaderOverride >= 0) out["shader"] = reference(placed.shaderOverride);
         if (!placed.steps.empty()) out["xform"] = xform(placed.steps);
+        if (placed.moving) out["xformEnd"] = xform(placed.stepsEnd);
         return out;
     }
 

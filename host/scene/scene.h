@@ -139,6 +139,11 @@ struct Instance {
     std::vector<TransformStep> steps; // in file order
     glm::mat4 objectToWorld{1.0f};    // rules::composeTransform(steps): M = T0 * T1 * ... * Tn-1
                                       // (docs/XML_FORMAT.md §3.9)
+    // Motion blur (vkrt's addition): the pose at the end of the motion, XML <transformEnd> / JSON
+    // xformEnd; objectToWorld is the pose at its start (docs/RENDERING.md §9).
+    bool moving = false;
+    std::vector<TransformStep> stepsEnd;
+    glm::mat4 objectToWorldEnd{1.0f};
     // The file gave a plain shape with a transform, not an instance: the prototype is that shape's
     // own (rules::addPlainShape), and a written scene gives the shape back the same way.
     bool ownPrototype = false;

@@ -188,6 +188,9 @@ SceneDifferences compareScenes(const Scene& a, const Scene& b, std::size_t limit
         compareSteps(d, f + ".steps", x.steps, y.steps);
         d.check(f + ".objectToWorld", x.objectToWorld, y.objectToWorld);
         d.check(f + ".ownPrototype", x.ownPrototype, y.ownPrototype);
+        d.check(f + ".moving", x.moving, y.moving);
+        compareSteps(d, f + ".stepsEnd", x.stepsEnd, y.stepsEnd);
+        d.check(f + ".objectToWorldEnd", x.objectToWorldEnd, y.objectToWorldEnd);
     });
     d.each("emitters", a.emitters, b.emitters, [&](const std::string& f, const Emitter& x, const Emitter& y) {
         d.check(f + ".name", x.name, y.name);

@@ -264,6 +264,23 @@ std::string composedTransformProblem(const glm::mat4& objectToWorld) {
     return "";
 }
 
+std::string motionProblem(const glm::mat4& start, const glm::mat4& end) {
+    const double a = glm::determinant(glm::dmat3(glm::dmat4(start)));
+    const double b = glm::determinant(glm::dmat3(glm::dmat4(end)));
+    if ((a < 0.0) == (b < 0.0)) return "";
+    return std::string("the end transform ") + (b < 0.0 ? "mirrors the object and the start transform does not"
+                                                        : "does not mirror the object and the start transform does") +
+           ": no rigid motion joins them (the stretch would pass through a singular matrix)";
+}
+
+void placeInstance(Instance& instance, const Placement& placement) {
+    instance.steps = placement.steps;
+    instance.objectToWorld = placement.objectToWorld;
+    instance.moving = placement.moving;
+    instance.stepsEnd = placement.stepsEnd;
+    instance.objectToWorldEnd = placement.objectToWorldEnd;
+}
+
 void addPlainShape(Scene& scene, Shape shape, const Placement* placement) {
     if (!placement) {
         scene.shapes.push_back(std::move(shape));
@@ -272,8 +289,7 @@ void addPlainShape(Scene& scene, Shape shape, const Placement* placement) {
     Instance instance;
     instance.name = shape.name;
     instance.prototype = static_cast<int>(scene.prototypes.size());
-    instance.steps = placement->steps;
-    instance.objectToWorld = placement->objectToWorld;
+    placeInstance(instance, *placement);
     instance.ownPrototype = true;
     instance.where = shape.where;
     scene.prototypes.push_back(std::move(shape));

@@ -128,7 +128,19 @@ std::string composedTransformProblem(const glm::mat4& objectToWorld);
 struct Placement {
     std::vector<TransformStep> steps;
     glm::mat4 objectToWorld{1.0f};
+    // Motion blur: the pose at the end of the motion (XML <transformEnd>, JSON xformEnd).
+    bool moving = false;
+    std::vector<TransformStep> stepsEnd;
+    glm::mat4 objectToWorldEnd{1.0f};
 };
+
+// Why an object cannot move rigidly from `start` to `end` (each already a valid transform), or
+// "": one mirrors the object and the other does not, so the stretch between them would pass
+// through a singular matrix (docs/RENDERING.md §9).
+std::string motionProblem(const glm::mat4& start, const glm::mat4& end);
+
+// The instance takes the placement's pose(s).
+void placeInstance(Instance& instance, const Placement& placement);
 
 // A plain shape: in Scene::shapes, or, when the file gives it a transform (`placement` not null),
 // a prototype of its own placed by one instance, so the renderers keep one transformed-shape path.

@@ -156,7 +156,10 @@ private:
     Shape parseShape(pugi::xml_node node, ShapeType type, bool world, bool shaderRequired = true) {
         std::vector<std::string_view> allowed = rules::geometryKeys(type);
         allowed.push_back("shader");
-        if (isElement(node, "shape")) allowed.push_back("transform");
+        if (isElement(node, "shape")) {
+            allowed.push_back("transform");
+            allowed.push_back("transformEnd");
+        }
         checkChildren(context_, node, allowed);
         Shape shape;
         shape.name = node.attribute("name").value();
@@ -186,16 +189,14 @@ private:
         const std::string name = node.attribute("name").value();
         if (typeName == "instance") {
             checkAttributes(context_, node, {"type", "id"});
-            checkChildren(context_, node, {"shader", "transform"});
+            checkChildren(context_, node, {"shader", "transform", "transformEnd"});
             const std::optional<int> prototype = prototypeOf(node);
             if (!prototype) return;
             Instance instance;
             instance.name = name;
             instance.prototype = *prototype;
             instance.shaderOverride = shaderOf(node);
-            rules::Placement placement = parseTransform(context_, node.child("transform"));
-            instance.steps = std::move(placement.steps);
-            instance.objectToWorld = placement.objectToWorld;
+            rules::placeInstance(instance, placementOf(node));
             instance.where = {context_.source.path(), context_.source.lineOf(node)};
             scene_.instances.push_back(instance);
             return;
@@ -206,14 +207,29 @@ private:
             context_.warn(node, "unknown shape type, skipped", typeName);
             return;
         }
-        const pugi::xml_node transform = node.child("transform");
-        Shape shape = parseShape(node, *type, /*world=*/!transform);
-        if (transform) {
-            const rules::Placement placement = parseTransform(context_, transform);
+        const bool placed = node.child("transform") || node.child("transformEnd");
+        Shape shape = parseShape(node, *type, /*world=*/!placed);
+        if (placed) {
+            const rules::Placement placement = placementOf(node);
             rules::addPlainShape(scene_, std::move(shape), &placement);
         } else {
             rules::addPlainShape(scene_, std::move(shape), nullptr);
         }
+    }
+
+    // A shape's <transform> and, for motion blur, its <transformEnd> (the pose at the end of the
+    // motion; docs/XML_FORMAT.md §3.9).
+    rules::Placement placementOf(pugi::xml_node node) {
+        rules::Placement placement = parseTransform(context_, node.child("transform"));
+        if (const pugi::xml_node end = node.child("transformEnd")) {
+            rules::Placement last = parseTransform(context_, end);
+            if (const std::string p = rules::motionProblem(placement.objectToWorld, last.objectToWorld); !p.empty())
+                context_.fail(end, p);
+            placement.moving = true;
+            placement.stepsEnd = std::move(last.steps);
+            placement.objectToWorldEnd = last.objectToWorld;
+        }
+        return placement;
     }
 
     // The prototype an instance's `id` names; nullopt (after a warning) for a skipped one.

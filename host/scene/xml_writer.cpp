@@ -165,6 +165,7 @@ private:
             if (placed.shaderOverride >= 0) reference(node, placed.shaderOverride);
         }
         if (placed.ownPrototype || !placed.steps.empty()) writeTransform(node.append_child("transform"), placed.steps);
+        if (placed.moving) writeTransform(node.append_child("transformEnd"), placed.stepsEnd);
     }
 
     const Scene& scene_;

@@ -159,7 +159,8 @@ struct Instance {
     vec4 objectToWorld[3];  // rows of the 3x4 affine transform
     vec4 normalToWorld[3];  // rows of the inverse transpose of the 3x3 part (w unused)
     uvec4 info;             // x: root node of the bottom-level BVH, y: material override or
-                            // MATERIAL_NONE, z: geometry group, w: unused
+                            // MATERIAL_NONE, z: geometry group, w: the first texel of the
+                            // instance's InstanceMotion in the same table, or MOTION_NONE
 };
 VKRT_CONST uint INSTANCE_TEXELS = 10;     // worldToObject rows at texels 0-2, objectToWorld 3-5, normalToWorld 6-8
 VKRT_CONST uint INSTANCE_INFO_TEXEL = 9;
@@ -167,6 +168,23 @@ VKRT_CONST uint INSTANCE_INFO_TEXEL = 9;
 VKRT_FN uint instanceRootNode(uvec4 info) { return info.x; }
 VKRT_FN uint instanceMaterialOverride(uvec4 info) { return info.y; }
 VKRT_FN uint instanceGroup(uvec4 info) { return info.z; }
+VKRT_FN uint instanceMotionTexel(uvec4 info) { return info.w; }
+
+// A moving instance's two poses (motion blur, docs/RENDERING.md §9), decomposed once on the host
+// (bvh_builder/instance_motion.h) as M = T * R * S: translation, unit quaternion (x, y, z, w) and
+// the 3x3 stretch (rows). Time 0 is the instance's transform, time 1 its end transform; motion.h
+// interpolates T and S linearly and R by slerp. The records follow the instances in the instance
+// table (Instance::info.w names the first texel). 160 bytes.
+VKRT_CONST uint MOTION_NONE = 0u;  // texel 0 is instance 0's: never a motion record's
+struct InstanceMotion {
+    vec4 translation0;  // xyz, w = the angle between the rotations (radians, 0..pi)
+    vec4 translation1;  // xyz, w = 1 / sin(angle), 0 where the rotations are too close to slerp
+    vec4 rotation0;     // unit quaternion (x, y, z, w)
+    vec4 rotation1;     // the same, on rotation0's side (dot >= 0)
+    vec4 stretch0[3];   // rows of S at time 0 (w unused)
+    vec4 stretch1[3];   // rows of S at time 1
+};
+VKRT_CONST uint MOTION_TEXELS = 10;
 
 // ---------------------------------------------------------------------------------------------
 // Material (the format's <shader>). 80 bytes.
@@ -248,6 +266,8 @@ struct FrameParams {
     uvec4 world;          // the world group walked as part of the top level (node_packing.h,
                           // InlinedWorld): x its first node texel, y its node texels, z its first
                           // primitive, w its primitive count; y = w = 0 when none is
+    vec4 shutter;         // x open, y close: a camera sample's time is open + (close - open) * u,
+                          // in the instances' motion time (0: transform, 1: transformEnd); zw unused
 };
 // The kernels read these lanes straight from the uniform block, one lane each, through
 // bindings.glsl's frameSeed(), frameMaxDepth(), ...: passing the block's struct to a function makes
@@ -341,7 +361,8 @@ VKRT_CONST uint SPEC_SAMPLER = 14;          // SAMPLER_*, or SAMPLER_FROM_FRAME
 VKRT_CONST uint SPEC_SAMPLES_PER_DISPATCH = 15;  // a render's k (sample_batching.h): 1 compiles no sample loop
 VKRT_CONST uint SPEC_HAS_THIN_LENS = 16;    // the camera has depth of field (Camera::thinLens)
 VKRT_CONST uint SPEC_HAS_TRANSLUCENCY = 17; // a used Dielectric has roughness > 0
-VKRT_CONST uint SPEC_COUNT = 18;
+VKRT_CONST uint SPEC_HAS_MOTION = 18;       // an instance moves during the shutter (InstanceMotion)
+VKRT_CONST uint SPEC_COUNT = 19;
 
 // Entries of the kernel's BVH traversal stack. The host refuses a BVH whose top-level depth plus
 // deepest bottom-level depth exceeds it, so the stack can never overflow at run time.
@@ -363,11 +384,12 @@ static_assert(sizeof(PrimInfo) == 16 * PRIM_INFO_TEXELS);
 static_assert(sizeof(VertexAttrib) == 16 * VERTEX_ATTRIB_TEXELS);
 static_assert(sizeof(Instance) == 16 * INSTANCE_TEXELS);
 static_assert(offsetof(Instance, info) == 16 * INSTANCE_INFO_TEXEL);
+static_assert(sizeof(InstanceMotion) == 16 * MOTION_TEXELS);
 static_assert(offsetof(Instance, info) == 144);
 static_assert(sizeof(Material) == 16 * MATERIAL_TEXELS);
 static_assert(sizeof(Light) == 16 * LIGHT_TEXELS);
 static_assert(sizeof(TextureInfo) == 16 * TEXTURE_INFO_TEXELS);
-static_assert(sizeof(FrameParams) == 192);
+static_assert(sizeof(FrameParams) == 208);
 static_assert(sizeof(RenderStatus) == 16);
 static_assert(sizeof(PassParams) == 32);
 static_assert(sizeof(TraceRayInput) == 32);

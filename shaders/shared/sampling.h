@@ -24,6 +24,7 @@ using glm::abs;
 using glm::cos;
 using glm::min;
 using glm::sin;
+using glm::uintBitsToFloat;
 using gpu::uint;
 using gpu::uvec4;
 using gpu::vec2;
@@ -68,6 +69,7 @@ VKRT_CONST float ONE_MINUS_EPSILON = 0.99999994f;
 // Sample dimensions. Depth is the recursion depth of the hit being shaded (0 = primary hit).
 VKRT_CONST uint DIM_CAMERA = 0u;
 VKRT_CONST uint DIM_LENS = 1u;  // the thin lens (depth 0's free slot: gloss and lights start at 1 << 16)
+VKRT_CONST uint DIM_TIME = 2u;  // the camera sample's time in the shutter (motion blur; its x only)
 VKRT_FN uint dimGloss(uint depth) { return ((depth + 1u) << 16u) | 0u; }
 VKRT_FN uint dimLight(uint depth, uint areaLightOrdinal) { return ((depth + 1u) << 16u) | (1u + areaLightOrdinal); }
 // Glossy translucency at a dielectric hit of this depth (the slot after every light ordinal).
@@ -203,6 +205,22 @@ VKRT_FN vec2 sample2D(uint samplerKind, uvec4 grid, uint pixel, uint index, uint
     if (dim != DIM_CAMERA) stratum = permuteIndex(index, grid.x, pcg4d(uvec4(pixel, 0xffffffffu, dim, seed)).x);
     if (samplerKind == SAMPLER_REGULAR) jitter = vec2(0.5f, 0.5f);
     return gridPoint(grid, stratum, jitter);
+}
+
+// The 1D sample number `index` of a pixel's `grid.x` samples in dimension `dim` (a shutter time):
+// stratified in 1D over all grid.x strata (not over a grid's columns), the strata shuffled per
+// pixel and dimension as sample2D's. Sobol's first coordinate is already 1D-stratified (van der
+// Corput). 1 / count is the product of the grid's two host reciprocals: correctly rounded
+// multiplies, the same float on every device.
+VKRT_FN float sample1D(uint samplerKind, uvec4 grid, uint pixel, uint index, uint dim, uint seed) {
+    if (samplerKind == SAMPLER_SOBOL) return sobolSample2D(pixel, index, dim, seed).x;
+    uvec4 r = pcg4d(uvec4(pixel, index, dim, seed));
+    float jitter = unitFloat(r.x);
+    if (samplerKind == SAMPLER_RANDOM) return jitter;
+    uint stratum = permuteIndex(index, grid.x, pcg4d(uvec4(pixel, 0xffffffffu, dim, seed)).x);
+    if (samplerKind == SAMPLER_REGULAR) jitter = 0.5f;
+    float inverseCount = uintBitsToFloat(grid.z) * uintBitsToFloat(grid.w);
+    return min((float(stratum) + jitter) * inverseCount, ONE_MINUS_EPSILON);
 }
 
 // Shirley & Chiu's concentric map of [0,1)^2 onto the unit disc ("A Low Distortion Map Between

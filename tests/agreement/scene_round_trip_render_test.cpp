@@ -41,7 +41,7 @@ TEST(SceneRoundTrip, EveryFileRendersBitIdenticallyAfterConversionOnBothDevices)
     std::vector<std::string> paths = scenesIn(upstreamDir(), ".xml");
     for (const std::string& p : scenesIn(jsonSceneDir(), ".json")) paths.push_back(p);
     for (const std::string& p : scenesIn(sourceDir() + "/scenes", ".xml")) paths.push_back(p);
-    ASSERT_EQ(paths.size(), 54u + 58u + 5u);
+    ASSERT_EQ(paths.size(), 54u + 58u + 6u);
     const fs::path dir = fs::path(artifactDir()) / "round_trip_render";
     fs::remove_all(dir);
     fs::create_directories(dir);

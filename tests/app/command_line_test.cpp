@@ -146,6 +146,27 @@ TEST(CourseCommandLine, DepthOfFieldTakesTheFocusDistanceAndAperture) {
     EXPECT_NE(describeSettings(cl).find("focus distance: 5\naperture: 0.25"), std::string::npos) << describeSettings(cl);
 }
 
+// Issue 21: --shutter OPEN,CLOSE in the motion's time; unset, the renderers use the whole motion.
+TEST(CommandLineOptions, ShutterTakesOpenAndClose) {
+    const CommandLine cl = parseOk({"s.xml", "--shutter", "0.25,0.75"});
+    ASSERT_TRUE(cl.render.shutter.has_value());
+    EXPECT_EQ(*cl.render.shutter, glm::vec2(0.25f, 0.75f));
+    EXPECT_EQ(shutterOf(cl.render), glm::vec2(0.25f, 0.75f));
+    EXPECT_FALSE(parseOk({"s.xml"}).render.shutter.has_value());
+    EXPECT_EQ(shutterOf(parseOk({"s.xml"}).render), glm::vec2(0.0f, 1.0f));
+    EXPECT_EQ(*parseOk({"s.xml", "--shutter", "0,0"}).render.shutter, glm::vec2(0.0f));
+    EXPECT_NE(parseRefused({"s.xml", "--shutter", "1,0"}).find("closes (0) before it opens (1)"), std::string::npos);
+    EXPECT_NE(parseRefused({"s.xml", "--shutter", "0.5"}), "");      // two values
+    EXPECT_NE(parseRefused({"s.xml", "--shutter", "0,1,2"}), "");
+    EXPECT_NE(parseRefused({"s.xml", "--shutter", "a,b"}), "");
+    EXPECT_NE(parseRefused({"s.xml", "--shutter", "0,inf"}), "");
+    EXPECT_NE(describeSettings(cl).find("shutter: 0.25,0.75"), std::string::npos) << describeSettings(cl);
+    EXPECT_EQ(parseOk({"compare", "s.xml", "--shutter", "0,0.5"}).render.shutter, glm::vec2(0.0f, 0.5f));
+    RenderOptions backwards;
+    backwards.shutter = glm::vec2(1.0f, 0.0f);
+    EXPECT_THROW(shutterOf(backwards), std::invalid_argument);
+}
+
 TEST(CourseCommandLine, SplitMethodIsAcceptedWithANotice) {
     const CommandLine cl = parseOk({"s.xml", "-s", "objectMedian"});
     ASSERT_EQ(cl.notices.size(), 1u);

@@ -344,6 +344,21 @@ TEST_F(JsonBadInput, AComposedTransformBeyondFloatIsAnErrorAtTheXform) {
     EXPECT_NE(issue.problem.find("overflows float"), std::string::npos) << issue.message();
 }
 
+// Issue 21: xformEnd beside xform is the pose at the end of the motion; the other handedness is an
+// error at the xformEnd.
+TEST_F(JsonBadInput, XformEndMovesAShapeAndTheOtherHandednessIsAnError) {
+    const Scene scene = loadJsonClean(withShape(R"({"_type": "sphere", "center": "0 0 0", "radius": 1, "shader": {"_ref": "s"}, )"
+                                                R"("xform": [{"type": "translate", "amount": "1 0 0"}], "xformEnd": [{"type": "translate", "amount": "2 0 0"}]})"));
+    ASSERT_EQ(scene.instances.size(), 1u);
+    EXPECT_TRUE(scene.instances[0].moving);
+    EXPECT_EQ(glm::vec3(scene.instances[0].objectToWorldEnd[3]), glm::vec3(2, 0, 0));
+    const std::string mirrored = withShape(R"({"_type": "sphere", "center": "0 0 0", "radius": 1, "shader": {"_ref": "s"}, )"
+                                           R"("xformEnd": [{"type": "scale", "amount": "1 1 -1"}]})");
+    const Issue issue = jsonErrorOf(mirrored);
+    expectJsonIssueAt(issue, mirrored, "[{\"type\": \"scale\"", "scene.shape[0].xformEnd", "");
+    EXPECT_NE(issue.problem.find("mirrors the object"), std::string::npos) << issue.message();
+}
+
 TEST_F(JsonBadInput, NestingDeeperThan64LevelsIsRefusedWhereItGoesTooDeep) {
     // Each level's path repeats its parent's: 200000 levels would need ~100 GB of paths.
     const std::string json = jsonWith("\"deep\": " + std::string(200000, '[') + std::string(200000, ']'));

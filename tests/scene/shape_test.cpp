@@ -1,7 +1,9 @@
 // <shape>, <instance> prototypes and <transform> (docs/XML_FORMAT.md §3.6-3.9).
 #include <cmath>
 
+#include "json_writer.h"
 #include "scene_test_files.h"
+#include "xml_writer.h"
 
 namespace vkrt::test {
 namespace {
@@ -228,6 +230,41 @@ TEST_F(TransformParsing, AComposedTransformBeyondFloatIsAnErrorAtTheTransform) {
     EXPECT_NO_THROW(load(sceneWith(prototype + "<shape type=\"instance\" id=\"p\"><transform>" + three + "</transform></shape>"), diagnostics));
     ASSERT_EQ(diagnostics.warnings().size(), 1u);
     EXPECT_NE(diagnostics.warnings()[0].problem.find("reaches 1e+30"), std::string::npos) << diagnostics.messages()[0];
+}
+
+// Issue 21: <transformEnd> beside <transform> is the pose at the end of the motion (motion blur),
+// on instances and transformed plain shapes; a pose of the other handedness is an error at the
+// <transformEnd>; both writers keep it.
+TEST_F(TransformParsing, TransformEndIsThePoseAtTheEndOfTheMotion) {
+    const std::string prototype =
+        kShader + "<instance name=\"p\" type=\"sphere\"><shader ref=\"s\"/><center>0 0 0</center><radius>1</radius></instance>\n";
+    const Scene scene = loadClean(sceneWith(prototype +
+        "<shape name=\"a\" type=\"instance\" id=\"p\"><transform><translate>1 0 0</translate></transform>"
+        "<transformEnd><translate>3 0 0</translate><rotate axis=\"Y\">90</rotate></transformEnd></shape>\n"
+        "<shape name=\"b\" type=\"box\"><shader ref=\"s\"/><minPt>0 0 0</minPt><maxPt>1 1 1</maxPt>"
+        "<transformEnd><scale>2 2 2</scale></transformEnd></shape>\n"
+        "<shape name=\"c\" type=\"instance\" id=\"p\"><transform><translate>0 1 0</translate></transform></shape>"));
+    ASSERT_EQ(scene.instances.size(), 3u);
+    const Instance& a = scene.instances[0];
+    EXPECT_TRUE(a.moving);
+    ASSERT_EQ(a.stepsEnd.size(), 2u);
+    expectNear(apply(a.objectToWorld, {0, 0, 0}), {1, 0, 0});
+    expectNear(apply(a.objectToWorldEnd, {1, 0, 0}), {3, 0, -1});
+    // A plain shape with only a <transformEnd> starts where it stands (the identity).
+    const Instance& b = scene.instances[1];
+    EXPECT_TRUE(b.moving && b.ownPrototype);
+    EXPECT_EQ(b.objectToWorld, glm::mat4(1.0f));
+    expectNear(apply(b.objectToWorldEnd, {1, 1, 1}), {2, 2, 2});
+    EXPECT_FALSE(scene.instances[2].moving);
+    for (const std::string& text : {xmlSceneText(scene, dir), jsonSceneText(scene, dir)})
+        EXPECT_NE(text.find(text.front() == '<' ? "transformEnd" : "xformEnd"), std::string::npos) << text;
+
+    const std::string mirrored = sceneWith(prototype +
+        "<shape type=\"instance\" id=\"p\"><transform><translate>1 0 0</translate></transform>\n"
+        "<transformEnd><scale>-1 1 1</scale></transformEnd></shape>");
+    const Issue issue = errorOf(mirrored);
+    expectIssue(issue, lineOf(mirrored, "<transformEnd>"), "transformEnd", "");
+    EXPECT_NE(issue.problem.find("mirrors the object"), std::string::npos) << issue.message();
 }
 
 }  // namespace
