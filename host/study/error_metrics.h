@@ -17,6 +17,8 @@ struct ErrorMetrics {
     double rmseEdge = 0.0;      // NaN when the region is empty
     double rmsePenumbra = 0.0;
     double rmseGloss = 0.0;
+    double rmseDefocus = 0.0;
+    double rmseMotion = 0.0;
 };
 
 // Squared errors are of linear radiance (not clamped or quantised). Throws std::invalid_argument

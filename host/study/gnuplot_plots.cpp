@@ -74,8 +74,8 @@ void runGnuplot(const std::filesystem::path& script, const std::filesystem::path
 
 }  // namespace
 
-PlotFiles plotSweep(const std::vector<SweepPoint>& points, const std::array<double, 4>& referenceRmse,
-                    const std::array<std::size_t, 4>& regionPixels, const std::string& title,
+PlotFiles plotSweep(const std::vector<SweepPoint>& points, const std::array<double, kRegionCount>& referenceRmse,
+                    const std::array<std::size_t, kRegionCount>& regionPixels, const std::string& title,
                     const std::filesystem::path& outDir) {
     const std::filesystem::path dir = outDir / "plots";
     std::filesystem::create_directories(dir);
@@ -88,7 +88,7 @@ PlotFiles plotSweep(const std::vector<SweepPoint>& points, const std::array<doub
         if (added) {
             series.push_back({p.device, p.sampler, dir / (name + ".dat")});
             it->second.open(series.back().data);
-            it->second << "# rpp seconds rmse_all rmse_edge rmse_penumbra rmse_gloss (RMSE over seeds)\n";
+            it->second << "# rpp seconds rmse_all rmse_edge rmse_penumbra rmse_gloss rmse_defocus rmse_motion (RMSE over seeds)\n";
         }
         it->second << p.rpp << ' ' << number(p.seconds);
         for (double e : p.rmse) it->second << ' ' << number(e);
@@ -98,12 +98,12 @@ PlotFiles plotSweep(const std::vector<SweepPoint>& points, const std::array<doub
 
     PlotFiles out{outDir / "error_vs_time.png", outDir / "error_vs_rpp.png"};
     std::ostringstream gp;
-    gp << "set terminal pngcairo size 1200,900 noenhanced font 'sans,10'\n"
+    gp << "set terminal pngcairo size 1500,900 noenhanced font 'sans,10'\n"
        << "set logscale xy\nset grid\nset key bottom left box opaque\nset ylabel 'RMSE (linear radiance)'\n";
     auto figure = [&](const std::filesystem::path& png, bool byTime) {
         gp << "set output " << quoted(png.string()) << "\n"
            << "set xlabel " << quoted(byTime ? "render time (s)" : "rays per pixel") << "\n"
-           << "set multiplot layout 2,2 title " << quoted(title + (byTime ? ": error vs time" : ": error vs rpp")) << "\n";
+           << "set multiplot layout 2,3 title " << quoted(title + (byTime ? ": error vs time" : ": error vs rpp")) << "\n";
         for (Region region : kRegions) {
             const int g = static_cast<int>(region);
             gp << "set title " << quoted(regionName(region) + " pixels (" + std::to_string(regionPixels[g]) + ")") << "\n";

@@ -20,8 +20,8 @@ struct PlotFiles {
 // referenceRmse (per Region; NaN = none) is drawn as a dotted "reference noise" line: errors near
 // it are the reference's own noise, not the render's. regionPixels labels the panels.
 // Throws std::runtime_error when gnuplot is missing or fails (with its message).
-PlotFiles plotSweep(const std::vector<SweepPoint>& points, const std::array<double, 4>& referenceRmse,
-                    const std::array<std::size_t, 4>& regionPixels, const std::string& title,
+PlotFiles plotSweep(const std::vector<SweepPoint>& points, const std::array<double, kRegionCount>& referenceRmse,
+                    const std::array<std::size_t, kRegionCount>& regionPixels, const std::string& title,
                     const std::filesystem::path& outDir);
 
 }  // namespace vkrt::study

@@ -20,7 +20,7 @@ namespace {
 // estimate), so that old cache entries are not reused. The masks have their own version in their
 // file name: they are cheap to recompute and change independently.
 constexpr int kCacheFormat = 1;
-constexpr int kMasksFormat = 2;
+constexpr int kMasksFormat = 3;
 
 std::string hexFloat(float v) {
     char buf[32];
@@ -37,6 +37,8 @@ std::string describe(const ReferenceSpec& spec) {
       << "max-depth " << o.maxDepth << "\n"
       << "light-samples " << o.lightSamples << "\n"
       << "gloss-samples " << o.glossSamples << "\n"
+      << "lens " << hexFloat(spec.lens.x) << "," << hexFloat(spec.lens.y) << "\n"
+      << "shutter " << hexFloat(shutterOf(o).x) << "," << hexFloat(shutterOf(o).y) << "\n"
       << "background " << (o.background ? hexFloat(o.background->r) + "," + hexFloat(o.background->g) + "," + hexFloat(o.background->b) : "scene") << "\n"
       << "rpp " << spec.rpp << " as two halves with seeds " << kReferenceSeedA << ", " << kReferenceSeedB << "\n"
       << "sampler " << samplerName(spec.sampler) << "\n"

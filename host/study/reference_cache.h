@@ -31,6 +31,9 @@ struct ReferenceSpec {
     int rpp = 4096;
     SamplerKind sampler = SamplerKind::Sobol;
     Device device = Device::Gpu;
+    // The rendered camera's thin lens (focus distance, aperture): the command line may override
+    // the scene file's, so the file's text alone does not say it.
+    glm::vec2 lens{0.0f};
 };
 
 struct Reference {

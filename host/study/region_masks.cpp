@@ -51,10 +51,13 @@ public:
           accel_(accel),
           frame_(cpu::makeCameraFrame(scene.cameras.at(options.camera), options.width, options.height)),
           lights_(cpu::makeLightSources(scene)),
-          probe_(probe) {}
+          probe_(probe),
+          shutter_(shutterOf(options)),
+          moving_(!accel.bvh.motions.empty()) {}
 
-    // Fills the three masks' entries of pixel (i, j).
-    void probe(int i, int j, std::uint8_t& edge, std::uint8_t& penumbra, std::uint8_t& gloss) const {
+    // Fills the masks' entries of pixel (i, j).
+    void probe(int i, int j, std::uint8_t& edge, std::uint8_t& penumbra, std::uint8_t& gloss, std::uint8_t& defocus,
+               std::uint8_t& motion) const {
         const int n = probe_.pixelProbes;
         std::vector<int> visible(lights_.size(), 0), tested(lights_.size(), 0);
         ObjectId first;
@@ -65,7 +68,10 @@ public:
         auto at = [n](int k) { return n == 1 ? 0.5f : static_cast<float>(k) / static_cast<float>(n - 1); };
         for (int s = 0; s < n * n; ++s) {
             const glm::vec2 offset(at(s % n), at(s / n));
-            const bvh::Ray ray = cpu::cameraRay(frame_, i, j, offset);
+            bvh::Ray ray = cpu::cameraRay(frame_, i, j, offset);
+            ray.time = shutter_.x;
+            if (frame_.thinLens && !defocus) defocus = defocused(i, j, offset);
+            if (moving_ && !motion) motion = moves(ray);
             bvh::Hit hit;
             ObjectId id;
             glm::vec3 normal(0.0f);
@@ -93,6 +99,62 @@ public:
     }
 
 private:
+    // What a ray hits (object and point), at the ray's time.
+    struct Seen {
+        ObjectId id;
+        glm::vec3 point{0.0f};
+    };
+    Seen see(const bvh::Ray& ray) const {
+        Seen seen;
+        bvh::Hit hit;
+        if (bvh::intersectClosest(accel_.bvh, ray, hit)) {
+            seen.id = {true, hit.instance, accel_.origin(hit.instance, hit.prim).shape};
+            seen.point = ray.origin + hit.t * ray.dir;
+        }
+        return seen;
+    }
+
+    // World size of one pixel at distance `depth` along the gaze.
+    float pixelFootprint(float depth) const {
+        const float atUnitDepth = frame_.planeWidth / static_cast<float>(frame_.nx);
+        return frame_.type == CameraType::Orthographic ? atUnitDepth : atUnitDepth * depth / frame_.focalLength;
+    }
+
+    // The pinhole ray's hit spreads into a circle of confusion of A |d - D| / d on the focus plane
+    // (docs/RENDERING.md §1): a pixel or more of it is blur; so is a silhouette that rays from
+    // opposite points of the lens's rim see on different objects.
+    bool defocused(int i, int j, glm::vec2 offset) const {
+        const bvh::Ray pinhole = cpu::cameraRay(frame_, i, j, offset);  // the lens centre
+        const Seen centre = see(pinhole);
+        if (centre.id.hit) {
+            const float depth = glm::dot(centre.point - pinhole.origin, -frame_.w);
+            if (depth > 0.0f) {
+                const float circle = 2.0f * frame_.lensRadius * std::abs(depth - frame_.focusDistance) / depth;
+                if (circle >= pixelFootprint(frame_.focusDistance)) return true;
+            }
+        }
+        for (const glm::vec2 rim : {glm::vec2(0.0f, 0.5f), glm::vec2(1.0f, 0.5f), glm::vec2(0.5f, 0.0f), glm::vec2(0.5f, 1.0f)})
+            if (!(see(cpu::cameraRay(frame_, i, j, offset, rim)).id == centre.id)) return true;
+        return false;
+    }
+
+    // The same primary ray at the shutter's open, middle and close: a different object, or a hit
+    // that moved by a pixel's footprint or more, is motion blur.
+    bool moves(bvh::Ray ray) const {
+        ray.time = shutter_.x;
+        const Seen open = see(ray);
+        for (const float t : {0.5f * (shutter_.x + shutter_.y), shutter_.y}) {
+            ray.time = t;
+            const Seen later = see(ray);
+            if (!(later.id == open.id)) return true;
+            if (open.id.hit) {
+                const float depth = std::max(glm::dot(open.point - ray.origin, -frame_.w), 0.0f);
+                if (glm::length(later.point - open.point) >= pixelFootprint(depth)) return true;
+            }
+        }
+        return false;
+    }
+
     // Light points of every light seen from one primary hit: how many of those in front of the
     // surface are unoccluded.
     void countVisibility(const glm::vec3& p, const glm::vec3& n, const glm::vec3& ng, std::vector<int>& visible,
@@ -121,6 +183,8 @@ private:
     cpu::CameraFrame frame_;
     std::vector<cpu::LightSource> lights_;
     ProbeOptions probe_;
+    glm::vec2 shutter_;
+    bool moving_;
 };
 
 }  // namespace
@@ -142,6 +206,8 @@ RegionMasks findRegions(const Scene& scene, const SceneAccel& accel, const Rende
     masks.edge.assign(pixels, 0);
     masks.penumbra.assign(pixels, 0);
     masks.gloss.assign(pixels, 0);
+    masks.defocus.assign(pixels, 0);
+    masks.motion.assign(pixels, 0);
 
     const PixelProber prober(scene, accel, options, probe);
     std::atomic<int> nextRow{0};
@@ -149,7 +215,7 @@ RegionMasks findRegions(const Scene& scene, const SceneAccel& accel, const Rende
         for (int j = nextRow++; j < options.height; j = nextRow++)
             for (int i = 0; i < options.width; ++i) {
                 const std::size_t k = static_cast<std::size_t>(j) * options.width + i;
-                prober.probe(i, j, masks.edge[k], masks.penumbra[k], masks.gloss[k]);
+                prober.probe(i, j, masks.edge[k], masks.penumbra[k], masks.gloss[k], masks.defocus[k], masks.motion[k]);
             }
     };
     const int threads = std::clamp(probe.threads > 0 ? probe.threads : static_cast<int>(std::thread::hardware_concurrency()),
@@ -166,8 +232,10 @@ std::size_t countPixels(const PixelMask& mask) {
 
 Image masksToImage(const RegionMasks& masks) {
     Image image(masks.width, masks.height);
-    for (std::size_t k = 0; k < image.pixels.size(); ++k)
-        image.pixels[k] = glm::vec3(masks.edge[k], masks.penumbra[k], masks.gloss[k]);
+    for (std::size_t k = 0; k < image.pixels.size(); ++k) {
+        const int bits = masks.edge[k] | masks.penumbra[k] << 1 | masks.gloss[k] << 2 | masks.defocus[k] << 3 | masks.motion[k] << 4;
+        image.pixels[k] = glm::vec3(static_cast<float>(bits) / 255.0f, 0.0f, 0.0f);
+    }
     return image;
 }
 
@@ -176,11 +244,27 @@ RegionMasks masksFromImage(const Image& image) {
     masks.width = image.width;
     masks.height = image.height;
     for (const glm::vec3& c : image.pixels) {
-        masks.edge.push_back(c.r > 0.5f ? 1 : 0);
-        masks.penumbra.push_back(c.g > 0.5f ? 1 : 0);
-        masks.gloss.push_back(c.b > 0.5f ? 1 : 0);
+        const int bits = static_cast<int>(std::lround(c.r * 255.0f));
+        masks.edge.push_back(bits & 1);
+        masks.penumbra.push_back((bits >> 1) & 1);
+        masks.gloss.push_back((bits >> 2) & 1);
+        masks.defocus.push_back((bits >> 3) & 1);
+        masks.motion.push_back((bits >> 4) & 1);
     }
     return masks;
+}
+
+Image regionsPicture(const RegionMasks& masks) {
+    Image image(2 * masks.width + 2, masks.height);  // a 2-pixel grey gap between the panels
+    for (int j = 0; j < masks.height; ++j) {
+        for (int i = 0; i < masks.width; ++i) {
+            const std::size_t k = static_cast<std::size_t>(j) * masks.width + i;
+            image.at(i, j) = glm::vec3(masks.edge[k], masks.penumbra[k], masks.gloss[k]);
+            image.at(masks.width + 2 + i, j) = glm::vec3(masks.defocus[k], masks.motion[k], 0.0f);
+        }
+        image.at(masks.width, j) = image.at(masks.width + 1, j) = glm::vec3(0.5f);
+    }
+    return image;
 }
 
 }  // namespace vkrt::study

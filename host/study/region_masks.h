@@ -1,5 +1,6 @@
 // The image regions a sampler study measures error in, found by probing the scene (not by looking
-// at a noisy image): geometric edges, shadow penumbrae and glossy reflections (docs/SAMPLING.md).
+// at a noisy image): geometric edges, shadow penumbrae, glossy reflections, defocus and motion
+// (docs/SAMPLING.md).
 #pragma once
 
 #include <cstddef>
@@ -21,6 +22,10 @@ struct RegionMasks {
     PixelMask edge;      // the pixel's primary hits differ in object, or in normal by > kEdgeNormalDegrees, or hit/miss
     PixelMask penumbra;  // some light is neither fully visible nor fully hidden from the pixel's primary hits
     PixelMask gloss;     // a primary hit reflects or refracts glossily (a reflecting shader or Dielectric with roughness > 0)
+    PixelMask defocus;   // the thin lens blurs the pixel: a primary hit's circle of confusion is >= 1 pixel, or rays
+                         // from the lens's rim see different objects
+    PixelMask motion;    // a moving instance crosses the pixel: the primary hits at shutter open, middle and close
+                         // differ in object, or in position by more than the pixel's footprint
 };
 
 struct ProbeOptions {
@@ -35,9 +40,13 @@ RegionMasks findRegions(const Scene& scene, const SceneAccel& accel, const Rende
 
 std::size_t countPixels(const PixelMask& mask);
 
-// The masks as an image (red = edge, green = penumbra, blue = gloss), and back: the form they are
-// cached and shown in.
+// The masks as an image, one bit per region in the red channel (value / 255: edge 1, penumbra 2,
+// gloss 4, defocus 8, motion 16), and back: the form they are cached in (exact through 8-bit PNG).
 Image masksToImage(const RegionMasks& masks);
 RegionMasks masksFromImage(const Image& image);
+
+// The masks as the sweep shows them (DIR/regions.png): two panels side by side, on the left red
+// edge, green penumbra, blue gloss; on the right red defocus, green motion.
+Image regionsPicture(const RegionMasks& masks);
 
 }  // namespace vkrt::study

@@ -97,6 +97,8 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
     spec.rpp = options.referenceRpp;
     spec.sampler = options.referenceSampler;
     spec.device = *referenceDevice;
+    const Camera& camera = scene.cameras.at(options.render.camera);
+    spec.lens = glm::vec2(camera.focusDistance, camera.aperture);
     const std::filesystem::path cacheDir = options.cacheDir.empty() ? defaultCacheDir() : options.cacheDir;
     result.reference = loadOrRenderReference(*renderer, prepared, sceneText, spec, cacheDir, log);
     const Reference& ref = result.reference;
@@ -147,7 +149,8 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
             << (ref.fromCache ? ", from the cache " : ", rendered in " + std::string(seconds) + " s and cached as ") << "`"
             << ref.imagePath.string() << "`.";
     report.referenceLine = refLine.str();
-    const PixelMask* masks[4] = {nullptr, &ref.masks.edge, &ref.masks.penumbra, &ref.masks.gloss};
+    const PixelMask* masks[kRegionCount] = {nullptr,         &ref.masks.edge,    &ref.masks.penumbra,
+                                            &ref.masks.gloss, &ref.masks.defocus, &ref.masks.motion};
     for (Region g : kRegions) {
         const int i = static_cast<int>(g);
         report.referenceMse[i] = meanOverRegion(ref.noise, masks[i]);
@@ -155,15 +158,16 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
     }
     report.points = result.points;
     report.targetRmse = options.targetRmse;
-    report.files = {"sweep.csv", "error_vs_time.png", "error_vs_rpp.png", "regions.png (red edge, green penumbra, blue gloss)",
+    report.files = {"sweep.csv", "error_vs_time.png", "error_vs_rpp.png",
+                    "regions.png (left: red edge, green penumbra, blue gloss; right: red defocus, green motion)",
                     "reference.png", "plots/ (gnuplot data and script)"};
     result.report = options.outDir / "report.md";
     writeSweepReport(report, result.report);
-    writeImage(masksToImage(ref.masks), (options.outDir / "regions.png").string());
+    writeImage(regionsPicture(ref.masks), (options.outDir / "regions.png").string());
     writeImage(ref.image, (options.outDir / "reference.png").string());
 
-    std::array<double, 4> referenceRmse{};
-    for (int i = 0; i < 4; ++i) referenceRmse[i] = std::sqrt(report.referenceMse[i]);
+    std::array<double, kRegionCount> referenceRmse{};
+    for (std::size_t i = 0; i < kRegionCount; ++i) referenceRmse[i] = std::sqrt(report.referenceMse[i]);
     if (auto validation = renderer->validationLog(); validation && validation->count() > 0)
         result.validationMessages = validation->joined();
     result.plots = plotSweep(result.points, referenceRmse, report.regionPixels,

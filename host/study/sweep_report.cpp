@@ -27,7 +27,7 @@ std::vector<std::pair<Device, SamplerKind>> seriesOf(const std::vector<SweepPoin
 
 }  // namespace
 
-std::vector<ConvergenceSlope> fitSlopes(const std::vector<SweepPoint>& points, const std::array<double, 4>& referenceMse) {
+std::vector<ConvergenceSlope> fitSlopes(const std::vector<SweepPoint>& points, const std::array<double, kRegionCount>& referenceMse) {
     std::vector<ConvergenceSlope> slopes;
     for (const auto& [device, sampler] : seriesOf(points))
         for (Region region : kRegions) {
@@ -63,10 +63,12 @@ void writeSweepReport(const SweepReportInput& in, const std::filesystem::path& p
         << in.settings << "\n\n"
         << "Reference: " << in.referenceLine << "\n\n"
         << "Region pixels (docs/SAMPLING.md §3): all " << in.regionPixels[0] << ", edge " << in.regionPixels[1]
-        << ", penumbra " << in.regionPixels[2] << ", gloss " << in.regionPixels[3] << ". "
+        << ", penumbra " << in.regionPixels[2] << ", gloss " << in.regionPixels[3] << ", defocus " << in.regionPixels[4]
+        << ", motion " << in.regionPixels[5] << ". "
         << "The reference's own estimated RMSE: all " << fixed(std::sqrt(in.referenceMse[0]), "%.2e") << ", edge "
         << fixed(std::sqrt(in.referenceMse[1]), "%.2e") << ", penumbra " << fixed(std::sqrt(in.referenceMse[2]), "%.2e")
-        << ", gloss " << fixed(std::sqrt(in.referenceMse[3]), "%.2e") << ".\n\n";
+        << ", gloss " << fixed(std::sqrt(in.referenceMse[3]), "%.2e") << ", defocus "
+        << fixed(std::sqrt(in.referenceMse[4]), "%.2e") << ", motion " << fixed(std::sqrt(in.referenceMse[5]), "%.2e") << ".\n\n";
 
     out << "## Convergence slopes\n\n"
         << "RMSE ~ rpp^slope: least squares in log-log over the rpp values of a device and sampler (RMSE pooled "
@@ -74,7 +76,7 @@ void writeSweepReport(const SweepReportInput& in, const std::filesystem::path& p
         << kReferenceFloorFactor << "x the reference's own (they would measure the reference). "
         << "(n) = points used. -0.5 is plain Monte Carlo; stratification does better on edges (about -0.75) "
            "and smooth regions.\n\n"
-        << "| device | sampler | all | edge | penumbra | gloss |\n|---|---|---|---|---|---|\n";
+        << "| device | sampler | all | edge | penumbra | gloss | defocus | motion |\n|---|---|---|---|---|---|---|---|\n";
     const std::vector<ConvergenceSlope> slopes = fitSlopes(in.points, in.referenceMse);
     for (const auto& [device, sampler] : seriesOf(in.points)) {
         out << "| " << deviceName(device) << " | " << samplerName(sampler) << " |";
@@ -101,13 +103,13 @@ void writeSweepReport(const SweepReportInput& in, const std::filesystem::path& p
             << fixed(best->seconds, "%.3f") << " | " << fixed(best->rmse[static_cast<int>(region)], "%.2e") << " |\n";
     }
 
-    out << "\n## Per setting\n\n| device | sampler | rpp | seeds | time (s) | RMSE | relMSE | edge | penumbra | gloss |\n"
-        << "|---|---|---|---|---|---|---|---|---|---|\n";
+    out << "\n## Per setting\n\n| device | sampler | rpp | seeds | time (s) | RMSE | relMSE | edge | penumbra | gloss | defocus | motion |\n"
+        << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const SweepPoint& p : in.points)
         out << "| " << deviceName(p.device) << " | " << samplerName(p.sampler) << " | " << p.rpp << " | " << p.seeds
             << " | " << fixed(p.seconds, "%.3f") << " | " << fixed(p.rmse[0], "%.2e") << " | " << fixed(p.relMse, "%.2e")
             << " | " << fixed(p.rmse[1], "%.2e") << " | " << fixed(p.rmse[2], "%.2e") << " | " << fixed(p.rmse[3], "%.2e")
-            << " |\n";
+            << " | " << fixed(p.rmse[4], "%.2e") << " | " << fixed(p.rmse[5], "%.2e") << " |\n";
 
     out << "\n## Files\n\n";
     for (const std::string& f : in.files) out << "- `" << f << "`\n";

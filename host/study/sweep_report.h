@@ -26,7 +26,7 @@ struct ConvergenceSlope {
 
 // Slopes of log RMSE against log rpp per (device, sampler, region), over the points whose MSE
 // exceeds kReferenceFloorFactor x referenceMse[region].
-std::vector<ConvergenceSlope> fitSlopes(const std::vector<SweepPoint>& points, const std::array<double, 4>& referenceMse);
+std::vector<ConvergenceSlope> fitSlopes(const std::vector<SweepPoint>& points, const std::array<double, kRegionCount>& referenceMse);
 
 // The cheapest (least mean time) point whose RMSE in `region` is <= target; nullopt if none.
 std::optional<SweepPoint> cheapestReaching(const std::vector<SweepPoint>& points, Region region, double target);
@@ -35,8 +35,8 @@ struct SweepReportInput {
     std::string scenePath;
     std::string settings;                  // one line: size, depth, light/gloss samples, seeds
     std::string referenceLine;             // how the reference was made and where it is cached
-    std::array<double, 4> referenceMse{};  // the reference's own estimated MSE per region
-    std::array<std::size_t, 4> regionPixels{};
+    std::array<double, kRegionCount> referenceMse{};  // the reference's own estimated MSE per region
+    std::array<std::size_t, kRegionCount> regionPixels{};
     std::vector<SweepPoint> points;
     double targetRmse = 0.01;
     std::vector<std::string> files;        // output files, relative to DIR

@@ -11,6 +11,8 @@ std::string regionName(Region region) {
     case Region::Edge: return "edge";
     case Region::Penumbra: return "penumbra";
     case Region::Gloss: return "gloss";
+    case Region::Defocus: return "defocus";
+    case Region::Motion: return "motion";
     }
     return "unknown";
 }
@@ -21,6 +23,8 @@ double rmseIn(const ErrorMetrics& e, Region region) {
     case Region::Edge: return e.rmseEdge;
     case Region::Penumbra: return e.rmsePenumbra;
     case Region::Gloss: return e.rmseGloss;
+    case Region::Defocus: return e.rmseDefocus;
+    case Region::Motion: return e.rmseMotion;
     }
     return e.rmse;
 }
@@ -43,7 +47,7 @@ std::vector<SweepPoint> summarize(const std::vector<SweepRow>& rows) {
             p.device = device;
             p.sampler = sampler;
             p.rpp = rpp;
-            std::array<double, 4> mse{};
+            std::array<double, kRegionCount> mse{};
             for (const SweepRow& r : rows) {
                 if (r.device != device || r.sampler != sampler || r.rpp != rpp) continue;
                 ++p.seeds;
@@ -53,7 +57,7 @@ std::vector<SweepPoint> summarize(const std::vector<SweepRow>& rows) {
             }
             p.seconds /= p.seeds;
             p.relMse /= p.seeds;
-            for (int g = 0; g < 4; ++g) p.rmse[g] = std::sqrt(mse[g] / p.seeds);
+            for (std::size_t g = 0; g < kRegionCount; ++g) p.rmse[g] = std::sqrt(mse[g] / p.seeds);
             points.push_back(p);
         }
     }

@@ -13,9 +13,11 @@
 namespace vkrt::study {
 
 // The regions errors are reported for (region_masks.h); All = every pixel.
-enum class Region { All = 0, Edge = 1, Penumbra = 2, Gloss = 3 };
-inline constexpr std::array<Region, 4> kRegions = {Region::All, Region::Edge, Region::Penumbra, Region::Gloss};
-std::string regionName(Region region);  // "all", "edge", "penumbra", "gloss"
+enum class Region { All = 0, Edge = 1, Penumbra = 2, Gloss = 3, Defocus = 4, Motion = 5 };
+inline constexpr std::size_t kRegionCount = 6;
+inline constexpr std::array<Region, kRegionCount> kRegions = {Region::All,  Region::Edge,    Region::Penumbra,
+                                                              Region::Gloss, Region::Defocus, Region::Motion};
+std::string regionName(Region region);  // "all", "edge", "penumbra", "gloss", "defocus", "motion"
 
 // One render of the sweep.
 struct SweepRow {
@@ -38,7 +40,7 @@ struct SweepPoint {
     int seeds = 0;
     double seconds = 0.0;
     double relMse = 0.0;
-    std::array<double, 4> rmse{};  // indexed by Region
+    std::array<double, kRegionCount> rmse{};  // indexed by Region
 };
 
 // Points in the order of first appearance of (device, sampler), rpp ascending.

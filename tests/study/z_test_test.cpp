@@ -97,11 +97,15 @@ TEST(ErrorMetrics, RmseRelMseAndMaskedRegions) {
     masks.edge = {1, 0, 0, 0};
     masks.penumbra = {0, 1, 1, 0};
     masks.gloss = {0, 0, 0, 0};
+    masks.defocus = {1, 1, 0, 0};
+    masks.motion = {0, 0, 0, 1};
     const study::ErrorMetrics e = study::measureError(image, reference, masks);
     EXPECT_NEAR(e.rmse, std::sqrt(0.09 / 12.0), 1e-7);
     EXPECT_NEAR(e.rmseEdge, std::sqrt(0.09 / 3.0), 1e-7);
     EXPECT_EQ(e.rmsePenumbra, 0.0);
     EXPECT_TRUE(std::isnan(e.rmseGloss));
+    EXPECT_NEAR(e.rmseDefocus, std::sqrt(0.09 / 6.0), 1e-7);
+    EXPECT_EQ(e.rmseMotion, 0.0);
     EXPECT_NEAR(e.relMse, 0.09 / (0.25 + study::kRelMseEpsilon) / 12.0, 1e-7);
 }
 
