@@ -2,6 +2,7 @@
 // computations: the Sobol generator by its direction-number recurrence, the (0, m, 2)-net property
 // by counting points per elementary interval, the scramble's nesting and randomness by flipping
 // bits, and the decorrelation of dimensions by sample correlations.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -165,6 +166,39 @@ TEST(SobolSampler, Sample2DUsesItForTheSobolKind) {
             const gpu::vec2 b = sampling::sobolSample2D(5, i, sampling::dimLight(0, 0), 3);
             EXPECT_EQ(a, b);
         }
+}
+
+// Issue 21: the shutter time is a 1D sample (sample1D) every sampler supplies. Jittered and regular
+// put exactly one of a pixel's n samples in each of n strata of [0, 1) (not one per grid column),
+// in an order shuffled per pixel; sobol's first n = 2^m samples do the same (van der Corput);
+// random is uniform (mean 1/2 over many samples); every value is in [0, 1).
+TEST(SobolSampler, TheOneDimensionalSampleIsStratifiedForEverySampler) {
+    for (const uint kind : {gpu::SAMPLER_JITTERED, gpu::SAMPLER_REGULAR, gpu::SAMPLER_SOBOL}) {
+        for (const uint count : {1u, 4u, 16u, 64u, 256u}) {
+            const gpu::uvec4 grid = sampling::makeSampleGrid(count);
+            for (const uint pixel : {0u, 7u, 12345u}) {
+                std::set<uint> strata;
+                std::vector<uint> order;
+                for (uint i = 0; i < count; ++i) {
+                    const float t = sampling::sample1D(kind, grid, pixel, i, sampling::DIM_TIME, 9);
+                    ASSERT_GE(t, 0.0f);
+                    ASSERT_LT(t, 1.0f);
+                    strata.insert(static_cast<uint>(t * static_cast<float>(count)));
+                    order.push_back(static_cast<uint>(t * static_cast<float>(count)));
+                }
+                EXPECT_EQ(strata.size(), count) << "sampler " << kind << ", " << count << " samples, pixel " << pixel;
+                if (count >= 16 && kind != gpu::SAMPLER_SOBOL) {
+                    // Shuffled: the strata are not visited in index order (the pixel strata's).
+                    std::vector<uint> sorted = order;
+                    std::sort(sorted.begin(), sorted.end());
+                    EXPECT_NE(order, sorted) << "sampler " << kind << ", pixel " << pixel;
+                }
+            }
+        }
+    }
+    double mean = 0.0;
+    for (uint i = 0; i < 65536; ++i) mean += sampling::sample1D(gpu::SAMPLER_RANDOM, sampling::makeSampleGrid(65536), 3, i, sampling::DIM_TIME, 1);
+    EXPECT_NEAR(mean / 65536.0, 0.5, 0.005);  // sd of the mean 1/sqrt(12 * 65536) = 0.0011
 }
 
 }  // namespace
