@@ -234,7 +234,9 @@ private:
         shape.type = type;
         shape.where = context_.locationOf(node);
         // Placed as it stands (no prototype, no transform): its points are world positions.
-        const bool world = role != ShapeRole::Prototype && !placed(node);
+        // An emitter's xformEnd is refused (a warning: shape lights do not move) and places nothing.
+        const bool world = role == ShapeRole::Loose ? !placed(node)
+                                                    : role == ShapeRole::Emitter && !member(node, "xform") && !member(node, "transform");
         parseGeometry(node, shape, world);
         const JsonNode reference = member(node, "shader");
         if (reference) {

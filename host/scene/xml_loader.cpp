@@ -271,6 +271,8 @@ private:
                 return;
             }
             emitter.shape = parseShape(shape, *type, /*world=*/!shape.child("transform"), /*shaderRequired=*/false);
+            if (const pugi::xml_node end = shape.child("transformEnd"))
+                context_.warn(end, "ignored: shape lights do not move (motion blur moves instances only)");
         }
         emitter.name = emitter.shape.name;
         // A plain shape without a transform stands in world space (identity); an instance, or a

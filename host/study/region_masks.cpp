@@ -124,7 +124,8 @@ private:
     // (docs/RENDERING.md §1): a pixel or more of it is blur; so is a silhouette that rays from
     // opposite points of the lens's rim see on different objects.
     bool defocused(int i, int j, glm::vec2 offset) const {
-        const bvh::Ray pinhole = cpu::cameraRay(frame_, i, j, offset);  // the lens centre
+        bvh::Ray pinhole = cpu::cameraRay(frame_, i, j, offset);  // the lens centre
+        pinhole.time = shutter_.x;  // the pose every other mask sees
         const Seen centre = see(pinhole);
         if (centre.id.hit) {
             const float depth = glm::dot(centre.point - pinhole.origin, -frame_.w);
@@ -133,8 +134,11 @@ private:
                 if (circle >= pixelFootprint(frame_.focusDistance)) return true;
             }
         }
-        for (const glm::vec2 rim : {glm::vec2(0.0f, 0.5f), glm::vec2(1.0f, 0.5f), glm::vec2(0.5f, 0.0f), glm::vec2(0.5f, 1.0f)})
-            if (!(see(cpu::cameraRay(frame_, i, j, offset, rim)).id == centre.id)) return true;
+        for (const glm::vec2 rim : {glm::vec2(0.0f, 0.5f), glm::vec2(1.0f, 0.5f), glm::vec2(0.5f, 0.0f), glm::vec2(0.5f, 1.0f)}) {
+            bvh::Ray ray = cpu::cameraRay(frame_, i, j, offset, rim);
+            ray.time = shutter_.x;
+            if (!(see(ray).id == centre.id)) return true;
+        }
         return false;
     }
 
@@ -173,6 +177,7 @@ private:
                 shadow.origin = cpu::offsetRayOrigin(p, cpu::sideOf(ng, toLight));
                 shadow.dir = q - shadow.origin;
                 shadow.tmax = kShadowRayEnd;
+                shadow.time = shutter_.x;  // the occluders where the primary probe saw the scene
                 if (!bvh::intersectAny(accel_.bvh, shadow)) ++visible[l];
             }
         }

@@ -1,6 +1,7 @@
 // A moving instance's pose at a time of the shutter, for the CPU reference and the GLSL kernels
 // alike (this file is valid C++ and valid GLSL): one definition, so both devices place a moving
-// instance with the same float operations (docs/RENDERING.md §9).
+// instance with the same float operations (docs/RENDERING.md §9). Not bit for bit: the GPU may
+// fuse multiply-adds and its sin() is less exact, so the poses agree to rounding.
 //
 // The pose at time u in [0, 1] is M(u) = T(u) * R(u) * S(u) with T and S interpolated linearly and
 // R by quaternion slerp between the two poses bvh_builder/instance_motion.h decomposed on the host.
@@ -28,10 +29,12 @@ using gpu::vec4;
 
 // Slerp between unit quaternions on the same side (dot >= 0); the host gives the angle between
 // them and 1 / sin(angle), or 0 where they are too close for slerp's division (normalised lerp
-// then differs from slerp by far less than float's rounding of the rotation).
+// then differs from slerp by far less than float's rounding of the rotation). The result is
+// normalised: Vulkan lets sin() err by 2^-11 absolute, which 1 / sin(angle) (up to 1000) would
+// turn into a quaternion off unit length, i.e. a rotation that also stretches.
 VKRT_FN vec4 slerpRotation(vec4 q0, vec4 q1, float angle, float invSinAngle, float u) {
     if (invSinAngle == 0.0f) return normalize(mix(q0, q1, u));
-    return (sin((1.0f - u) * angle) * q0 + sin(u * angle) * q1) * invSinAngle;
+    return normalize((sin((1.0f - u) * angle) * q0 + sin(u * angle) * q1) * invSinAngle);
 }
 
 // The instance record `still` (root, material, group in info) placed at time u of its motion:

@@ -359,6 +359,29 @@ TEST_F(JsonBadInput, XformEndMovesAShapeAndTheOtherHandednessIsAnError) {
     EXPECT_NE(issue.problem.find("mirrors the object"), std::string::npos) << issue.message();
 }
 
+// A shape light does not move: its xformEnd is warned and changes nothing, not even whether its
+// points are world positions (which decides how they are rebased to the local origin).
+TEST_F(JsonBadInput, AShapeLightsXformEndIsIgnoredWithAWarning) {
+    const auto lit = [this](const std::string& extra) {
+        // The eye away from the origin, so that rebasing moves world points.
+        write("light.json", R"({"scene": {"camera": [{"position": "10 0 0", "viewDir": "0 0 -1"}], )"
+                            R"("light": [{"_type": "shape", "intensity": "1 1 1", "shape": {"_type": "sphere", "center": "1 2 3", "radius": 0.5)" +
+                                extra + "}}]}}");
+        LoadOptions options;
+        options.localOrigin = true;
+        Diagnostics diagnostics;
+        Scene scene = loadScene((dir / "light.json").string(), options, diagnostics);
+        return std::pair(scene, diagnostics.warnings().size());
+    };
+    const auto [still, stillWarnings] = lit("");
+    const auto [moved, movedWarnings] = lit(R"(, "xformEnd": [{"type": "translate", "amount": "5 0 0"}])");
+    ASSERT_EQ(still.emitters.size(), 1u);
+    ASSERT_EQ(moved.emitters.size(), 1u);
+    EXPECT_EQ(moved.emitters[0].shape.center, still.emitters[0].shape.center);
+    EXPECT_EQ(moved.emitters[0].objectToWorld, still.emitters[0].objectToWorld);
+    EXPECT_EQ(movedWarnings, stillWarnings + 1);
+}
+
 TEST_F(JsonBadInput, NestingDeeperThan64LevelsIsRefusedWhereItGoesTooDeep) {
     // Each level's path repeats its parent's: 200000 levels would need ~100 GB of paths.
     const std::string json = jsonWith("\"deep\": " + std::string(200000, '[') + std::string(200000, ']'));
