@@ -1,12 +1,41 @@
 #include "kernel_cache.h"
 
 #include <chrono>
+#include <iostream>
 
 namespace vkrt {
 
+namespace {
+
+vk::PipelineCacheCreateInfo cacheInfo(const PipelineCacheFile& file) {
+    vk::PipelineCacheCreateInfo info;
+    info.initialDataSize = file.data.size();
+    info.pInitialData = file.data.empty() ? nullptr : file.data.data();
+    return info;
+}
+
+}  // namespace
+
 KernelCache::KernelCache(const Context& context, const KernelLayout& layout, const std::vector<std::uint32_t>& spirv)
     : context_(context), layout_(layout), module_(makeShaderModule(context, spirv)),
-      cache_(context.device(), vk::PipelineCacheCreateInfo()) {}
+      file_(openPipelineCacheFile(context.info())), cache_(context.device(), cacheInfo(file_)) {
+    for (const std::string& note : file_.notes) std::cerr << "vkrt: note: " << note << "\n";
+}
+
+KernelCache::~KernelCache() {
+    try {
+        save();
+    } catch (const std::exception& e) {  // a cache that cannot be written costs the next run a compile, nothing more
+        std::cerr << "vkrt: note: pipeline cache not written: " << e.what() << "\n";
+    }
+}
+
+void KernelCache::save() {
+    if (file_.path.empty()) return;
+    const std::size_t before = file_.notes.size();
+    savePipelineCacheFile(file_, cache_.getData());
+    for (std::size_t i = before; i < file_.notes.size(); ++i) std::cerr << "vkrt: note: " << file_.notes[i] << "\n";
+}
 
 const vk::raii::Pipeline& KernelCache::pipeline(const FeatureSet& features, std::uint32_t samplesPerDispatch,
                                                 double* creationSeconds) {

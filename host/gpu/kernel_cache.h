@@ -1,10 +1,12 @@
 // One kernel, specialised per feature set and samples per dispatch: pipelines are created on first use and kept
-// (lavapipe's LLVM compile takes ~0.05 s or more per variant), plus a VkPipelineCache so drivers
-// that cache compiled code can reuse it across variants.
+// (lavapipe's LLVM compile takes ~0.05 s or more per variant), plus a VkPipelineCache, kept on disk
+// between processes (pipeline_cache_file.h), so drivers that cache compiled code reuse it across
+// variants and runs.
 #pragma once
 
 #include <cstdint>
 #include <map>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -13,6 +15,7 @@
 #include "compute_pipeline.h"
 #include "context.h"
 #include "feature_set.h"
+#include "pipeline_cache_file.h"
 
 namespace vkrt {
 
@@ -25,11 +28,18 @@ public:
     const vk::raii::Pipeline& pipeline(const FeatureSet& features, std::uint32_t samplesPerDispatch,
                                        double* creationSeconds = nullptr);
     std::size_t size() const { return pipelines_.size(); }
+    // The cache file's notes (an ignored or unwritable file), for the caller to show.
+    const std::vector<std::string>& notes() const { return file_.notes; }
+
+    // Writes the pipeline cache's data to its file (also done on destruction).
+    void save();
+    ~KernelCache();
 
 private:
     const Context& context_;
     const KernelLayout& layout_;
     vk::raii::ShaderModule module_;
+    PipelineCacheFile file_;
     vk::raii::PipelineCache cache_;
     std::map<std::pair<FeatureSet, std::uint32_t>, vk::raii::Pipeline> pipelines_;
 };

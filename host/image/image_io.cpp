@@ -9,8 +9,8 @@
 
 #include <unistd.h>
 
-#include <OpenImageIO/imageio.h>
-
+#include "codec_module.h"
+#include "native_formats.h"
 #include "output_file.h"
 
 namespace vkrt {
@@ -21,25 +21,32 @@ bool isSupportedOutput(const std::string& ext) {
     return ext == ".exr" || ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".ppm";
 }
 
-// Writes the file at `target` (a temporary name) in the format of `path`'s extension.
+// Writes the file at `target` (a temporary name) in the format of `path`'s extension: PNG and PPM
+// natively, EXR and JPEG through the OpenImageIO module.
 void writeImageFile(const Image& image, const std::string& path, const std::string& target) {
-    const bool isFloat = lowerExtension(path) == ".exr";
-    auto out = OIIO::ImageOutput::create(path);  // the format comes from the final name
-    if (!out) throw std::runtime_error(path + ": cannot create image writer: " + OIIO::geterror());
-    OIIO::ImageSpec spec(image.width, image.height, 3, isFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-    if (!out->open(target, spec)) throw std::runtime_error(path + ": cannot open for writing: " + out->geterror());
-
-    bool ok = false;
+    const std::string ext = lowerExtension(path);
+    const bool isFloat = ext == ".exr";
+    oiio::Pixels pixels;
+    pixels.width = image.width;
+    pixels.height = image.height;
+    pixels.channels = 3;
     if (isFloat) {
-        ok = out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
-    } else {
-        std::vector<std::uint8_t> bytes(image.pixels.size() * 3);
+        pixels.floats.resize(image.pixels.size() * 3);
         for (std::size_t i = 0; i < image.pixels.size(); ++i)
-            for (int c = 0; c < 3; ++c) bytes[i * 3 + c] = quantize8(image.pixels[i][c]);
-        ok = out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
+            for (int c = 0; c < 3; ++c) pixels.floats[i * 3 + c] = image.pixels[i][c];
+    } else {
+        pixels.bytes.resize(image.pixels.size() * 3);
+        for (std::size_t i = 0; i < image.pixels.size(); ++i)
+            for (int c = 0; c < 3; ++c) pixels.bytes[i * 3 + c] = quantize8(image.pixels[i][c]);
     }
-    if (!ok) throw std::runtime_error(path + ": write failed: " + out->geterror());
-    if (!out->close()) throw std::runtime_error(path + ": close failed: " + out->geterror());
+    try {
+        if (ext == ".png") return writePng8(target, image.width, image.height, pixels.bytes);
+        if (ext == ".ppm") return writePpm8(target, image.width, image.height, pixels.bytes);
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error(path + ": " + e.what());
+    }
+    std::string detail;
+    if (!oiioCodec().write(path, target, pixels, isFloat, detail)) throw std::runtime_error(path + ": " + detail);
 }
 
 }  // namespace
@@ -50,6 +57,14 @@ void checkImageOutputPath(const std::string& path) {
     if (!isSupportedOutput(ext))
         throw std::runtime_error(path + ": unsupported output format '" + ext + "' (use .png, .exr, .jpg or .ppm)");
     checkOutputFolder(path, "an image file");
+    // .exr and .jpg are written by the OpenImageIO module: a render must not end in "cannot load".
+    if (ext != ".png" && ext != ".ppm") {
+        try {
+            oiioCodec();
+        } catch (const std::runtime_error& e) {
+            throw std::runtime_error(path + ": " + e.what());
+        }
+    }
 }
 
 void writeImage(const Image& image, const std::string& path) {
@@ -58,16 +73,18 @@ void writeImage(const Image& image, const std::string& path) {
 }
 
 Image readImage(const std::string& path) {
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) throw std::runtime_error(path + ": cannot read image: " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    const int channels = spec.nchannels;
-    std::vector<float> data(static_cast<std::size_t>(spec.width) * spec.height * channels);
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data()))
-        throw std::runtime_error(path + ": read failed: " + in->geterror());
-    Image image(spec.width, spec.height);
+    oiio::Pixels data;
+    std::string detail;
+    switch (oiioCodec().readFloats(path, data, detail)) {
+        case oiio::ReadResult::Ok: break;
+        case oiio::ReadResult::Empty: throw std::runtime_error(path + ": the image has no pixels");
+        case oiio::ReadResult::CannotDecode: throw std::runtime_error(path + ": read failed: " + detail);
+        default: throw std::runtime_error(path + ": cannot read image: " + detail);
+    }
+    const int channels = data.channels;
+    Image image(data.width, data.height);
     for (std::size_t i = 0; i < image.pixels.size(); ++i)
-        for (int c = 0; c < 3; ++c) image.pixels[i][c] = data[i * channels + std::min(c, channels - 1)];
+        for (int c = 0; c < 3; ++c) image.pixels[i][c] = data.floats[i * channels + std::min(c, channels - 1)];
     return image;
 }
 

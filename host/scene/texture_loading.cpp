@@ -4,8 +4,7 @@
 #include <filesystem>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
-
+#include "codec_module.h"
 #include "scene_rules.h"
 
 namespace vkrt {
@@ -16,38 +15,34 @@ std::optional<Texture> loadTextureImage(const std::string& path, std::string& er
         error = "texture file not found";
         return std::nullopt;
     }
-    // Texels as stored: OpenImageIO would otherwise premultiply colour by alpha on reading.
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    auto input = OIIO::ImageInput::open(path, &config);
-    if (!input) {
-        error = "cannot read texture image (" + OIIO::geterror() + ")";
-        return std::nullopt;
+    oiio::Pixels image;
+    std::string detail;
+    oiio::ReadResult result = oiio::ReadResult::CannotOpen;
+    try {
+        result = oiioCodec().readBytes(path, kMaxTextureTexels, image, detail);
+    } catch (const std::runtime_error& e) {  // the module itself is missing
+        detail = e.what();
     }
-    const OIIO::ImageSpec& spec = input->spec();
-    const int channels = spec.nchannels;
-    if (spec.width <= 0 || spec.height <= 0 || channels <= 0) {
-        error = "texture image is empty";
-        return std::nullopt;
+    switch (result) {
+        case oiio::ReadResult::Ok: break;
+        case oiio::ReadResult::CannotOpen: error = "cannot read texture image (" + detail + ")"; return std::nullopt;
+        case oiio::ReadResult::Empty: error = "texture image is empty"; return std::nullopt;
+        // Checked before anything is allocated: a 69-byte PNG may claim 40000 x 40000, which would
+        // zero-fill gigabytes before the decoder finds no data.
+        case oiio::ReadResult::TooLarge:
+            error = "texture image claims " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                    " texels, more than the " + std::to_string(kMaxTextureTexels) + " (128 MiB as RGBA8) vkrt loads";
+            return std::nullopt;
+        case oiio::ReadResult::CannotDecode: error = "cannot decode texture image (" + detail + ")"; return std::nullopt;
     }
-    const std::size_t texels = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
-    // Checked before anything is allocated: a 69-byte PNG may claim 40000 x 40000, which would
-    // zero-fill gigabytes before the decoder finds no data.
-    if (texels > kMaxTextureTexels) {
-        error = "texture image claims " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-                " texels, more than the " + std::to_string(kMaxTextureTexels) + " (128 MiB as RGBA8) vkrt loads";
-        return std::nullopt;
-    }
-    std::vector<std::uint8_t> pixels(texels * static_cast<std::size_t>(channels));
-    if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, pixels.data())) {
-        error = "cannot decode texture image (" + input->geterror() + ")";
-        return std::nullopt;
-    }
+    const int channels = image.channels;
+    const std::size_t texels = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
+    const std::vector<std::uint8_t>& pixels = image.bytes;
 
     Texture texture;
     texture.path = path;
-    texture.width = spec.width;
-    texture.height = spec.height;
+    texture.width = image.width;
+    texture.height = image.height;
     texture.rgba8.resize(texels);
     for (std::size_t i = 0; i < texels; ++i) {
         const std::uint8_t* p = &pixels[i * static_cast<std::size_t>(channels)];

@@ -1,4 +1,4 @@
-// Image files -> Texture::rgba8 through OpenImageIO.
+// Image files -> Texture::rgba8 through OpenImageIO (the module host/image/oiio_codec.h loads).
 #pragma once
 
 #include <cstddef>

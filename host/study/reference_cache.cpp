@@ -10,7 +10,7 @@
 #include <system_error>
 #include <unistd.h>
 
-#include <OpenImageIO/hash.h>
+#include <xxhash.h>
 
 namespace vkrt::study {
 
@@ -65,7 +65,7 @@ std::filesystem::path defaultCacheDir() {
 std::string referenceKey(const std::string& sceneText, const ReferenceSpec& spec) {
     const std::string text = describe(spec) + "scene\n" + sceneText;
     char buf[24];
-    std::snprintf(buf, sizeof buf, "%016llx", OIIO::xxhash::XXH64(text.data(), text.size(), 0));
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(XXH64(text.data(), text.size(), 0)));
     return buf;
 }
 

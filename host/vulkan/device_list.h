@@ -2,6 +2,7 @@
 // No Vulkan types here, so the command line can include it cheaply.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -21,6 +22,9 @@ struct DeviceInfo {
     std::uint64_t deviceLocalHeapBytes = 0;  // the largest device-local memory heap
     std::uint32_t maxWorkGroupCountX = 0;
     std::uint32_t subgroupSize = 0;
+    // What a VkPipelineCache's data belongs to (its header): pipeline_cache_file.h keys files by them.
+    std::uint32_t vendorId = 0, deviceId = 0, driverVersion = 0;
+    std::array<std::uint8_t, 16> pipelineCacheUuid{};
     bool usable = false;           // Vulkan 1.2 with a compute queue
     std::string unusableReason;    // why not, when !usable
 };

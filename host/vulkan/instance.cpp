@@ -145,6 +145,10 @@ DeviceInfo describePhysicalDevice(const vk::raii::PhysicalDevice& device, int in
     info.maxTexelBufferElements = props.limits.maxTexelBufferElements;
     info.maxUniformBufferRange = props.limits.maxUniformBufferRange;
     info.maxWorkGroupCountX = props.limits.maxComputeWorkGroupCount[0];
+    info.vendorId = props.vendorID;
+    info.deviceId = props.deviceID;
+    info.driverVersion = props.driverVersion;
+    for (std::size_t i = 0; i < info.pipelineCacheUuid.size(); ++i) info.pipelineCacheUuid[i] = props.pipelineCacheUUID[i];
 
     if (props.apiVersion < VK_API_VERSION_1_2) {
         info.driver = "driver version " + std::to_string(props.driverVersion);
