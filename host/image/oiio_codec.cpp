@@ -59,6 +59,8 @@ bool write(const std::string& formatPath, const std::string& target, const Pixel
         return false;
     }
     OIIO::ImageSpec spec(pixels.width, pixels.height, 3, isFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    // The same image gives the same bytes: OpenEXR's writer would stamp the current time (capDate).
+    spec.attribute("DateTime", "");
     if (!out->open(target, spec)) {
         detail = "cannot open for writing: " + out->geterror();
         return false;
