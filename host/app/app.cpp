@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "command_line.h"
+#include "image_parts.h"
 #include "cpu_renderer.h"
 #include "device_list.h"
 #include "gpu_renderer.h"
@@ -175,11 +176,25 @@ int runRender(CommandLine& cl) {
         std::cerr << "note: " << e.what() << "\nnote: rendering on the CPU reference instead\n";
         result = renderOnCpu(scene, cl.render);
     }
-    writeImage(result.image, cl.outputPath);
-    if (!cl.render.quiet)
-        std::fprintf(stderr, "%s: %dx%d, %d rpp on %s: render %.3fs, total %.3fs -> %s\n", cl.scenePath.c_str(),
-                     cl.render.width, cl.render.height, cl.render.samplesPerPixel, result.device.c_str(),
+    writeImage(result.image, cl.outputPath, cl.parts > 0 ? partAttributes(cl, result.device) : ImageAttributes{});
+    if (!cl.render.quiet) {
+        const std::string part = cl.parts > 0 ? ", part " + std::to_string(cl.part) + "/" + std::to_string(cl.parts) : "";
+        std::fprintf(stderr, "%s: %dx%d%s, %d rpp on %s: render %.3fs, total %.3fs -> %s\n", cl.scenePath.c_str(),
+                     cl.render.width, cl.render.height, part.c_str(), cl.render.samplesPerPixel, result.device.c_str(),
                      result.seconds, secondsSince(start), cl.outputPath.c_str());
+    }
+    return 0;
+}
+
+// vkrt merge: the parts of one render, as one image (image_parts.h).
+int runMerge(const CommandLine& cl) {
+    checkImageOutputPath(cl.outputPath);
+    for (const std::string& input : cl.mergeInputs) checkNotTheInput(cl.outputPath, input);
+    const Image image = mergeParts(cl.mergeInputs);
+    writeImage(image, cl.outputPath);
+    if (!cl.render.quiet)
+        std::fprintf(stderr, "merge: %zu part(s), %dx%d -> %s\n", cl.mergeInputs.size(), image.width, image.height,
+                     cl.outputPath.c_str());
     return 0;
 }
 
@@ -295,6 +310,7 @@ int runVkrt(int argc, const char* const* argv) {
         case Command::Compare: return runCompare(cl);
         case Command::Sweep: return runSweep(cl);
         case Command::Convert: return runConvert(cl);
+        case Command::Merge: return runMerge(cl);
         case Command::Render: return runRender(cl);
         }
     } catch (const RenderCancelled&) {

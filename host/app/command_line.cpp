@@ -1,6 +1,8 @@
 #include "command_line.h"
 
+#include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 
@@ -247,12 +249,35 @@ ParseResult parseConvert(std::vector<std::string> args) {
     return {cl, 0};
 }
 
+// vkrt merge PART.exr... -o OUT: the parts of one render (--part I/N), put together.
+ParseResult parseMerge(std::vector<std::string> args) {
+    CommandLine cl;
+    cl.command = Command::Merge;
+    CLI::App app{"vkrt merge: put the parts of one render (vkrt scene --part I/N -o part_I.exr, one process per part) "
+                 "together into the image a single process would have written, byte for byte",
+                 "vkrt merge"};
+    app.set_help_flag("-?,--help", "Print this help and exit");
+    app.add_option("parts", cl.mergeInputs, "The parts' EXR files, in any order (every part exactly once)")->required();
+    app.add_option("-o,--output", cl.outputPath, "Image to write: .png, .exr, .jpg or .ppm")->required();
+    app.add_flag("-q,--quiet", cl.render.quiet, "No summary line");
+    try {
+        std::vector<std::string> reversed(args.rbegin(), args.rend());
+        app.parse(reversed);
+        if (cl.outputPath.empty()) throw CLI::ValidationError("-o", "the output path is empty (give out.png)");
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return {std::nullopt, code == 0 ? 0 : 2};
+    }
+    return {cl, 0};
+}
+
 }  // namespace
 
 ParseResult parseCommandLine(int argc, const char* const* argv) {
     CommandLine cl;
     std::vector<std::string> args(argv + 1, argv + argc);
     if (!args.empty() && args[0] == "convert") return parseConvert({args.begin() + 1, args.end()});
+    if (!args.empty() && args[0] == "merge") return parseMerge({args.begin() + 1, args.end()});
     if (!args.empty() && (args[0] == "compare" || args[0] == "sweep")) {
         cl.command = args[0] == "compare" ? Command::Compare : Command::Sweep;
         args.erase(args.begin());
@@ -289,6 +314,18 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
                      ">= 99.75% of values pass; exit code 3 on failure)");
     } else if (!sweep) {
         app.add_option("-o,--output,--outputfile", cl.outputPath, "Output image: .png, .exr (linear float), .jpg or .ppm");
+        app.add_option_function<std::string>(
+            "--part",
+            [&cl](const std::string& text) {
+                int part = 0, parts = 0;
+                char extra = 0;
+                if (std::sscanf(text.c_str(), "%d/%d%c", &part, &parts, &extra) != 2 || parts < 1 || part < 1 || part > parts)
+                    throw CLI::ValidationError("--part", "'" + text + "': expected I/N with 1 <= I <= N (e.g. 2/4)");
+                cl.part = part;
+                cl.parts = parts;
+            },
+            "Render part I of N (I/N, 1-based) of the image's rows into an EXR (-o part_I.exr); `vkrt merge` "
+            "puts the N parts together into the image one process would have written, byte for byte");
         app.add_flag("--list-devices", listDevices, "List the Vulkan devices and exit");
     }
 
@@ -300,6 +337,18 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
             return {cl, 0};
         }
         applyCourseOptions(app, cl, course);
+        if (cl.parts > 0) {
+            if (cl.parts > cl.render.height)
+                throw CLI::ValidationError("--part", std::to_string(cl.parts) + " parts of a " + std::to_string(cl.render.height) +
+                                                         "-row image would leave some parts without a row");
+            std::string ext = std::filesystem::path(cl.outputPath).extension().string();
+            for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+            if (ext != ".exr")
+                throw CLI::ValidationError("--part", "a part is written as EXR (linear float, with its rows), not '" +
+                                                         (cl.outputPath.empty() ? std::string("the default .png") : cl.outputPath) +
+                                                         "': give -o part_" + std::to_string(cl.part) + ".exr");
+            cl.render.rows = partRows(cl.render.height, cl.part, cl.parts);
+        }
         if (!compare && !sweep && app.count("--output") > 0 && cl.outputPath.empty())
             throw CLI::ValidationError("-o", "the output path is empty (give a file name such as out.png, or leave -o out)");
         if (cl.scenePath.empty()) throw CLI::RequiredError("a scene file (vkrt scene.xml)");

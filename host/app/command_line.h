@@ -12,7 +12,7 @@
 
 namespace vkrt {
 
-enum class Command { Render, Compare, Sweep, Convert, ListDevices };
+enum class Command { Render, Compare, Sweep, Convert, Merge, ListDevices };
 enum class DeviceChoice { Auto, Cpu, Gpu };
 
 struct CommandLine {
@@ -34,6 +34,10 @@ struct CommandLine {
     // Depth of field (-d/--focus-distance, --aperture): override the rendered camera's values.
     std::optional<float> focusDistance, aperture;
     std::vector<std::string> notices;  // one line per course flag accepted but ignored, and why
+    // --part I/N (1-based): this process renders the rows of part I of N into an EXR that
+    // `vkrt merge` combines (image_parts.h); 0/0 when the whole image is rendered.
+    int part = 0, parts = 0;
+    std::vector<std::string> mergeInputs;  // vkrt merge: the parts' files
 };
 
 // The settings a run will use, one per line (what -v prints).

@@ -83,8 +83,10 @@ Image renderCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions
 
     Image image(options.width, options.height);
     if (sampleVariance) *sampleVariance = Image(options.width, options.height);
+    // Only the rows asked for (a --part); the others stay black.
+    const glm::ivec2 rows = rowsOf(options);
     const int tilesX = (options.width + kTileSize - 1) / kTileSize;
-    const int tilesY = (options.height + kTileSize - 1) / kTileSize;
+    const int tilesY = (rows.y - rows.x + kTileSize - 1) / kTileSize;
     const int tileCount = tilesX * tilesY;
     const int threads = threadCount(options.threads, tileCount);
 
@@ -112,8 +114,8 @@ Image renderCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions
                 }
                 const int tile = nextTile.fetch_add(1);
                 if (tile >= tileCount) break;
-                const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
-                const int x1 = std::min(x0 + kTileSize, options.width), y1 = std::min(y0 + kTileSize, options.height);
+                const int x0 = (tile % tilesX) * kTileSize, y0 = rows.x + (tile / tilesX) * kTileSize;
+                const int x1 = std::min(x0 + kTileSize, options.width), y1 = std::min(y0 + kTileSize, rows.y);
                 for (int j = y0; j < y1; ++j)
                     for (int i = x0; i < x1; ++i)
                         image.at(i, j) = renderPixel(ctx, integrator, i, j, nonFinite,

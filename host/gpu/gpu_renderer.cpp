@@ -79,7 +79,10 @@ Image GpuRenderer::render(const GpuSceneData& data, const RenderOptions& options
     TilingPolicy tiling = settings.tiling;
     tiling.maxWorkgroups = std::min(tiling.maxWorkgroups, impl_->context.info().maxWorkGroupCountX);
     const auto width = static_cast<std::uint32_t>(options.width);
-    TilePlanner planner(width, static_cast<std::uint32_t>(options.height), batching.passes(), tiling);
+    // Only the rows asked for (a --part): tiles are planned over them and moved down to them; the
+    // accumulation buffer's other rows stay zero (black).
+    const glm::ivec2 rows = rowsOf(options);
+    TilePlanner planner(width, static_cast<std::uint32_t>(rows.y - rows.x), batching.passes(), tiling);
     Progress progress("GPU render", options.quiet);
     start = Clock::now();
     while (!planner.done()) {
@@ -87,7 +90,8 @@ Image GpuRenderer::render(const GpuSceneData& data, const RenderOptions& options
             impl_->context.device().waitIdle();
             throw RenderCancelled{};
         }
-        const Submission submission = planner.next();
+        Submission submission = planner.next();
+        submission.tile.y += static_cast<std::uint32_t>(rows.x);
         const double seconds = impl_->runner.run([&](const vk::raii::CommandBuffer& commands) {
             recordSubmission(commands, *pipeline, impl_->layout.pipelineLayout(), gpuScene.descriptorSet(), submission, batching);
         });

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -30,7 +31,9 @@ inline std::uint8_t quantize8(float c) {
 // Writes by extension: .png/.jpg/.jpeg/.ppm as 8-bit (quantize8), .exr as linear float.
 // The file is written beside its final name and renamed into place, so a reader (or a kill
 // during the write) never sees a truncated image. Throws std::runtime_error naming the file.
-void writeImage(const Image& image, const std::string& path);
+// `attributes` ("vkrt:..." names) are kept by EXR files only (a --part's rows, for vkrt merge).
+using ImageAttributes = std::map<std::string, std::string>;
+void writeImage(const Image& image, const std::string& path, const ImageAttributes& attributes = {});
 
 // Throws std::runtime_error naming the file when writeImage(path) is bound to fail: an unknown
 // extension, a folder that does not exist or cannot be written. Called before a render starts,
@@ -38,7 +41,7 @@ void writeImage(const Image& image, const std::string& path);
 void checkImageOutputPath(const std::string& path);
 
 // Reads any format OpenImageIO knows; 8-bit files come back as value/255.
-Image readImage(const std::string& path);
+Image readImage(const std::string& path, ImageAttributes* attributes = nullptr);
 
 // The number of pixels with a NaN or infinite channel.
 std::size_t countNonFinite(const Image& image);

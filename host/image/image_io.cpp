@@ -23,13 +23,14 @@ bool isSupportedOutput(const std::string& ext) {
 
 // Writes the file at `target` (a temporary name) in the format of `path`'s extension: PNG and PPM
 // natively, EXR and JPEG through the OpenImageIO module.
-void writeImageFile(const Image& image, const std::string& path, const std::string& target) {
+void writeImageFile(const Image& image, const std::string& path, const std::string& target, const ImageAttributes& attributes) {
     const std::string ext = lowerExtension(path);
     const bool isFloat = ext == ".exr";
     oiio::Pixels pixels;
     pixels.width = image.width;
     pixels.height = image.height;
     pixels.channels = 3;
+    pixels.attributes.assign(attributes.begin(), attributes.end());
     if (isFloat) {
         pixels.floats.resize(image.pixels.size() * 3);
         for (std::size_t i = 0; i < image.pixels.size(); ++i)
@@ -67,12 +68,12 @@ void checkImageOutputPath(const std::string& path) {
     }
 }
 
-void writeImage(const Image& image, const std::string& path) {
+void writeImage(const Image& image, const std::string& path, const ImageAttributes& attributes) {
     checkImageOutputPath(path);
-    writeAtomically(path, [&](const std::string& temporary) { writeImageFile(image, path, temporary); });
+    writeAtomically(path, [&](const std::string& temporary) { writeImageFile(image, path, temporary, attributes); });
 }
 
-Image readImage(const std::string& path) {
+Image readImage(const std::string& path, ImageAttributes* attributes) {
     oiio::Pixels data;
     std::string detail;
     switch (oiioCodec().readFloats(path, data, detail)) {
@@ -81,6 +82,7 @@ Image readImage(const std::string& path) {
         case oiio::ReadResult::CannotDecode: throw std::runtime_error(path + ": read failed: " + detail);
         default: throw std::runtime_error(path + ": cannot read image: " + detail);
     }
+    if (attributes) attributes->insert(data.attributes.begin(), data.attributes.end());
     const int channels = data.channels;
     Image image(data.width, data.height);
     for (std::size_t i = 0; i < image.pixels.size(); ++i)

@@ -44,6 +44,9 @@ ReadResult readFloats(const std::string& path, Pixels& out, std::string& detail)
     out.width = spec.width;
     out.height = spec.height;
     out.channels = spec.nchannels;
+    for (const OIIO::ParamValue& p : spec.extra_attribs)
+        if (p.name().string().rfind("vkrt:", 0) == 0 && p.type() == OIIO::TypeDesc::STRING)
+            out.attributes.emplace_back(p.name().string(), p.get_string());
     out.floats.resize(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
     if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, out.floats.data())) {
         detail = input->geterror();
@@ -61,6 +64,7 @@ bool write(const std::string& formatPath, const std::string& target, const Pixel
     OIIO::ImageSpec spec(pixels.width, pixels.height, 3, isFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
     // The same image gives the same bytes: OpenEXR's writer would stamp the current time (capDate).
     spec.attribute("DateTime", "");
+    for (const auto& [name, value] : pixels.attributes) spec.attribute(name, value);
     if (!out->open(target, spec)) {
         detail = "cannot open for writing: " + out->geterror();
         return false;

@@ -10,17 +10,21 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vkrt::oiio {
 
 // Bump when the table changes: the loader refuses a module of another version.
-inline constexpr int kCodecVersion = 1;
+inline constexpr int kCodecVersion = 2;
 
 struct Pixels {
     int width = 0, height = 0, channels = 0;
     std::vector<float> floats;         // readFloats, and write when isFloat
     std::vector<std::uint8_t> bytes;   // readBytes, and write otherwise
+    // String metadata named "vkrt:..." (a --part's rows): written into formats that keep it (EXR),
+    // and read back from them by readFloats.
+    std::vector<std::pair<std::string, std::string>> attributes;
 };
 
 enum class ReadResult { Ok, CannotOpen, Empty, TooLarge, CannotDecode };

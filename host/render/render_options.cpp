@@ -31,4 +31,17 @@ glm::vec2 shutterOf(const RenderOptions& options) {
     return shutter;
 }
 
+glm::ivec2 rowsOf(const RenderOptions& options) {
+    const glm::ivec2 rows = options.rows.value_or(glm::ivec2(0, options.height));
+    if (rows.x < 0 || rows.y > options.height || rows.x >= rows.y)
+        throw std::invalid_argument("rows " + std::to_string(rows.x) + ".." + std::to_string(rows.y) + " are not a part of the " +
+                                    std::to_string(options.height) + "-row image");
+    return rows;
+}
+
+glm::ivec2 partRows(int height, int part, int parts) {
+    const auto edge = [&](int k) { return static_cast<int>(static_cast<long long>(height) * k / parts); };
+    return {edge(part - 1), edge(part)};
+}
+
 }  // namespace vkrt

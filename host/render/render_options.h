@@ -32,6 +32,9 @@ struct RenderOptions {
     // Motion blur: the shutter's open and close in the instances' motion time (0: <transform>,
     // 1: <transformEnd>); absent, the whole motion [0, 1]. A scene without motion ignores it.
     std::optional<glm::vec2> shutter;
+    // Render only rows [x, y) (0 = the top row); the others stay black. `--part I/N` sets it, and
+    // `vkrt merge` puts the parts back together: every pixel is computed as in the whole image.
+    std::optional<glm::ivec2> rows;
     int threads = 0;             // CPU threads, 0 = all hardware threads
     bool quiet = false;          // no progress bar
     // Set asynchronously (Ctrl-C); renderers stop at the next tile or pass and throw RenderCancelled.
@@ -43,5 +46,13 @@ struct RenderCancelled {};
 // The shutter a render uses (RenderOptions::shutter, or [0, 1]); throws std::invalid_argument
 // naming both values when one is not finite or the shutter closes before it opens.
 glm::vec2 shutterOf(const RenderOptions& options);
+
+// The rows a render computes: RenderOptions::rows, or the whole image; throws std::invalid_argument
+// naming them when they are not inside the image or empty.
+glm::ivec2 rowsOf(const RenderOptions& options);
+
+// Part `part` (1-based) of `parts` of an image `height` rows high: rows [height*(part-1)/parts,
+// height*part/parts), so the parts tile the image exactly.
+glm::ivec2 partRows(int height, int part, int parts);
 
 }  // namespace vkrt

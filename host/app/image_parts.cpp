@@ -1,0 +1,100 @@
+#include "image_parts.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace vkrt {
+
+namespace {
+
+struct Part {
+    int index = 0, count = 0;
+    glm::ivec2 rows{0};
+};
+
+Part parsePart(const std::string& path, const ImageAttributes& a) {
+    const auto get = [&](const char* name) {
+        const auto found = a.find(name);
+        if (found == a.end())
+            throw std::runtime_error(path + ": not a part of a render (no " + name + "; write parts with vkrt --part I/N -o part.exr)");
+        return found->second;
+    };
+    Part p;
+    char extra = 0;
+    if (std::sscanf(get("vkrt:part").c_str(), "%d/%d%c", &p.index, &p.count, &extra) != 2 || p.count < 1 || p.index < 1 ||
+        p.index > p.count)
+        throw std::runtime_error(path + ": vkrt:part '" + get("vkrt:part") + "' is not I/N");
+    if (std::sscanf(get("vkrt:rows").c_str(), "%d %d%c", &p.rows.x, &p.rows.y, &extra) != 2)
+        throw std::runtime_error(path + ": vkrt:rows '" + get("vkrt:rows") + "' is not two row numbers");
+    return p;
+}
+
+}  // namespace
+
+ImageAttributes partAttributes(const CommandLine& cl, const std::string& device) {
+    const RenderOptions& r = cl.render;
+    std::error_code ec;
+    const std::filesystem::path scene = std::filesystem::weakly_canonical(cl.scenePath, ec);
+    std::ostringstream render;
+    render << "scene " << (ec ? cl.scenePath : scene.string()) << "; " << r.width << "x" << r.height << "; rpp "
+           << r.samplesPerPixel << "; sampler " << samplerName(r.sampler) << "; seed " << r.seed << "; light-samples "
+           << r.lightSamples << "; gloss-samples " << r.glossSamples << "; max-depth " << r.maxDepth << "; camera "
+           << (cl.camera ? std::to_string(*cl.camera) : std::string("default"));
+    if (r.background) render << "; bg " << r.background->r << "," << r.background->g << "," << r.background->b;
+    if (cl.focusDistance) render << "; focus " << *cl.focusDistance;
+    if (cl.aperture) render << "; aperture " << *cl.aperture;
+    if (r.shutter) render << "; shutter " << r.shutter->x << "," << r.shutter->y;
+    if (cl.general) render << "; general kernel";
+    // The CPU reference and a GPU agree to rounding, not bit for bit: parts must share a device kind.
+    render << "; device " << (device.rfind("cpu", 0) == 0 ? std::string("cpu") : "gpu " + device.substr(0, device.find(" [")));
+    const glm::ivec2 rows = rowsOf(r);
+    return {{"vkrt:part", std::to_string(cl.part) + "/" + std::to_string(cl.parts)},
+            {"vkrt:rows", std::to_string(rows.x) + " " + std::to_string(rows.y)},
+            {"vkrt:render", render.str()}};
+}
+
+Image mergeParts(const std::vector<std::string>& paths) {
+    if (paths.empty()) throw std::runtime_error("merge: no parts given");
+    Image merged;
+    std::string render, first;
+    std::map<int, std::string> seen;  // part index -> its file
+    int count = 0;
+    for (const std::string& path : paths) {
+        ImageAttributes attributes;
+        const Image image = readImage(path, &attributes);
+        const Part part = parsePart(path, attributes);
+        const std::string thisRender = attributes.at("vkrt:render");
+        if (first.empty()) {
+            first = path;
+            render = thisRender;
+            count = part.count;
+            merged = Image(image.width, image.height);
+        } else if (thisRender != render || part.count != count) {
+            throw std::runtime_error(path + ": a part of another render than " + first + " (" + std::to_string(part.index) + "/" +
+                                     std::to_string(part.count) + ": " + thisRender + "; " + first + ": " + render + ")");
+        }
+        if (image.width != merged.width || image.height != merged.height)
+            throw std::runtime_error(path + ": " + std::to_string(image.width) + "x" + std::to_string(image.height) + ", not " +
+                                     std::to_string(merged.width) + "x" + std::to_string(merged.height) + " as " + first);
+        if (part.rows != partRows(image.height, part.index, part.count))
+            throw std::runtime_error(path + ": rows " + std::to_string(part.rows.x) + ".." + std::to_string(part.rows.y) +
+                                     " are not those of part " + std::to_string(part.index) + "/" + std::to_string(part.count));
+        if (const auto [it, added] = seen.emplace(part.index, path); !added)
+            throw std::runtime_error(path + ": part " + std::to_string(part.index) + "/" + std::to_string(count) +
+                                     " is given twice (also " + it->second + ")");
+        for (int j = part.rows.x; j < part.rows.y; ++j)
+            for (int i = 0; i < image.width; ++i) merged.at(i, j) = image.at(i, j);
+    }
+    std::string missing;
+    for (int k = 1; k <= count; ++k)
+        if (!seen.count(k)) missing += (missing.empty() ? "" : ", ") + std::to_string(k);
+    if (!missing.empty())
+        throw std::runtime_error("merge: part(s) " + missing + " of " + std::to_string(count) + " missing (" +
+                                 std::to_string(seen.size()) + " given)");
+    return merged;
+}
+
+}  // namespace vkrt
