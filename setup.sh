@@ -10,6 +10,7 @@ packages=(
   glslang-tools glslang-dev spirv-tools
   libglm-dev libtinyobjloader-dev libopenimageio-dev openimageio-tools libpugixml-dev nlohmann-json3-dev libcli11-dev
   libpng-dev libxxhash-dev
+  libopenmpi-dev openmpi-bin
   libgtest-dev libgmock-dev
   gnuplot-nox
   clang libclang-rt-14-dev

@@ -20,6 +20,7 @@
 #include "gpu_renderer.h"
 #include "image_compare.h"
 #include "interrupt.h"
+#include "mpi_ranks.h"
 #include "output_file.h"
 #include "scene_convert.h"
 #include "scene_loader.h"
@@ -160,10 +161,8 @@ void checkOutputBeforeRendering(const std::string& output, const std::string& sc
     checkNotTheInput(output, scenePath);
 }
 
-int runRender(CommandLine& cl) {
-    const auto start = std::chrono::steady_clock::now();
-    checkOutputBeforeRendering(cl.outputPath, cl.scenePath);
-    checkImageFitsInMemory(cl.render.width, cl.render.height);
+// The render itself: load, pick the device, render (what one process or one MPI rank does).
+DeviceRender renderScene(CommandLine& cl) {
     const Scene scene = loadWithWarnings(cl);
     std::unique_ptr<GpuRenderer> gpu = openGpu(cl);
     DeviceRender result;
@@ -176,6 +175,66 @@ int runRender(CommandLine& cl) {
         std::cerr << "note: " << e.what() << "\nnote: rendering on the CPU reference instead\n";
         result = renderOnCpu(scene, cl.render);
     }
+    return result;
+}
+
+// One rank of `mpirun -np N vkrt ...`: rank r renders part r+1 of N on the GPU its local rank picks
+// (when several exist and --gpu is not given), rank 0 gathers the rows in rank order, which is the
+// image's row order, and writes the image a single process would have written. An error on any
+// rank is printed with the rank and ends every rank (MPI_Abort), so the job never hangs.
+int runRenderAsMpiRank(CommandLine& cl) {
+    const auto start = std::chrono::steady_clock::now();
+    const mpi::Api& api = mpiApi();
+    int rank = 0, size = 1, localRank = 0;
+    std::string error;
+    if (!api.init(&rank, &size, &localRank, error)) throw std::runtime_error(error);
+    try {
+        if (cl.parts > 0) throw std::runtime_error("--part and mpirun both split the image: use one of them");
+        cl.part = rank + 1;
+        cl.parts = size;
+        if (size > cl.render.height)
+            throw std::runtime_error(std::to_string(size) + " ranks for a " + std::to_string(cl.render.height) +
+                                     "-row image would leave some ranks without a row");
+        cl.render.rows = partRows(cl.render.height, cl.part, cl.parts);
+        if (rank != 0) cl.render.quiet = true;
+        if (cl.gpuIndex < 0 && cl.device != DeviceChoice::Cpu) {
+            std::vector<int> usable;
+            for (const DeviceInfo& d : listDevices())
+                if (d.usable) usable.push_back(d.index);
+            if (usable.size() > 1) cl.gpuIndex = usable[static_cast<std::size_t>(localRank) % usable.size()];
+        }
+        checkOutputBeforeRendering(cl.outputPath, cl.scenePath);
+        checkImageFitsInMemory(cl.render.width, cl.render.height);
+        DeviceRender result = renderScene(cl);
+        const glm::ivec2 rows = rowsOf(cl.render);
+        const long long mine = static_cast<long long>(rows.y - rows.x) * cl.render.width * 3;
+        std::vector<long long> counts(static_cast<std::size_t>(size));
+        if (!api.allCounts(mine, counts.data(), error)) throw std::runtime_error(error);
+        Image image(cl.render.width, cl.render.height);
+        const float* myRows = &result.image.at(0, rows.x).x;
+        if (!api.gather(myRows, mine, &image.pixels[0].x, counts.data(), error)) throw std::runtime_error(error);
+        if (rank == 0) {
+            writeImage(image, cl.outputPath);
+            if (!cl.render.quiet)
+                std::fprintf(stderr, "%s: %dx%d, %d rpp over %d MPI ranks (rank 0 on %s): render %.3fs, total %.3fs -> %s\n",
+                             cl.scenePath.c_str(), cl.render.width, cl.render.height, cl.render.samplesPerPixel, size,
+                             result.device.c_str(), result.seconds, secondsSince(start), cl.outputPath.c_str());
+        }
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "vkrt: error (MPI rank %d of %d): %s\n", rank, size, e.what());
+        std::fflush(stderr);
+        api.abortAll(1);
+    }
+    api.finalize();
+    return 0;
+}
+
+int runRender(CommandLine& cl) {
+    if (launchedAsMpiRank()) return runRenderAsMpiRank(cl);
+    const auto start = std::chrono::steady_clock::now();
+    checkOutputBeforeRendering(cl.outputPath, cl.scenePath);
+    checkImageFitsInMemory(cl.render.width, cl.render.height);
+    DeviceRender result = renderScene(cl);
     writeImage(result.image, cl.outputPath, cl.parts > 0 ? partAttributes(cl, result.device) : ImageAttributes{});
     if (!cl.render.quiet) {
         const std::string part = cl.parts > 0 ? ", part " + std::to_string(cl.part) + "/" + std::to_string(cl.parts) : "";

@@ -1,5 +1,6 @@
 #include "codec_module.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <mutex>
@@ -26,7 +27,10 @@ const oiio::Codec* load() {
 #endif
     }
     std::string tried;
-    for (const std::string& path : candidates) {
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+        const std::string& path = candidates[k];
+        if (std::find(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(k), path) != candidates.begin() + static_cast<std::ptrdiff_t>(k))
+            continue;  // the build tree is also the executable's folder
         if (!std::filesystem::exists(path, ec)) {
             tried += "\n  " + path + ": no such file";
             continue;
