@@ -1,13 +1,13 @@
 #include "mpi_ranks.h"
 
-#include <algorithm>
 #include <cstdlib>
-#include <filesystem>
 #include <mutex>
 #include <stdexcept>
-#include <vector>
+#include <string>
 
 #include <dlfcn.h>
+
+#include "module_loader.h"
 
 namespace vkrt {
 
@@ -17,53 +17,25 @@ bool launchedAsMpiRank() {
     return false;
 }
 
-namespace {
-
-const mpi::Api* load() {
-    std::vector<std::string> candidates;
-    std::error_code ec;
-    if (const char* env = std::getenv("VKRT_MPI_MODULE"); env && *env) {
-        candidates.push_back(env);
-    } else {
-        const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-        if (!ec) candidates.push_back((exe.parent_path() / "libvkrt_mpi.so").string());
-#ifdef VKRT_MPI_MODULE_PATH
-        candidates.push_back(VKRT_MPI_MODULE_PATH);
-#endif
-    }
-    std::string tried;
-    for (std::size_t k = 0; k < candidates.size(); ++k) {
-        const std::string& path = candidates[k];
-        if (std::find(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(k), path) != candidates.begin() + static_cast<std::ptrdiff_t>(k))
-            continue;  // the build tree is also the executable's folder
-        if (!std::filesystem::exists(path, ec)) {
-            tried += "\n  " + path + ": no such file";
-            continue;
-        }
-        void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_GLOBAL);
-        if (!handle) {
-            tried += "\n  " + path + ": " + dlerror();
-            continue;
-        }
-        using Entry = const mpi::Api* (*)();
-        const auto entry = reinterpret_cast<Entry>(dlsym(handle, "vkrt_mpi_api"));
-        const mpi::Api* api = entry ? entry() : nullptr;
-        if (api && api->version == mpi::kApiVersion) return api;
-        tried += "\n  " + path + ": not vkrt's MPI module of version " + std::to_string(mpi::kApiVersion);
-        dlclose(handle);
-    }
-    throw std::runtime_error("started by mpirun, but cannot load libvkrt_mpi.so; tried:" + tried);
-}
-
-}  // namespace
-
 const mpi::Api& mpiApi() {
     static std::once_flag once;
     static const mpi::Api* api = nullptr;
     static std::string failure;
     std::call_once(once, [] {
         try {
-            api = load();
+            // RTLD_GLOBAL: OpenMPI's own plugins resolve libmpi's symbols from the global scope.
+            ModuleSearch search{"libvkrt_mpi.so", "VKRT_MPI_MODULE", VKRT_MPI_MODULE_PATH, "vkrt_mpi_api", RTLD_GLOBAL};
+            api = static_cast<const mpi::Api*>(loadModule(
+                search,
+                [](void* entry, const void*& table) {
+                    const mpi::Api* found = reinterpret_cast<decltype(&vkrt_mpi_api)>(entry)();
+                    if (!found) return std::string("no API table");
+                    if (found->version != mpi::kApiVersion)
+                        return "API version " + std::to_string(found->version) + ", expected " + std::to_string(mpi::kApiVersion);
+                    table = found;
+                    return std::string();
+                },
+                "started by mpirun: the MPI ranks' module"));
         } catch (const std::exception& e) {
             failure = e.what();
         }

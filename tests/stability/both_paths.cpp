@@ -98,4 +98,17 @@ void recordRow(const std::string& caseName, const Distance& gpuVsCpu) {
     writeRow(caseName + "\t-\t-\t" + cell(gpuVsCpu));
 }
 
+void expectGeneralKernelRendersItBitForBit(const Scene& scene, const RenderOptions& options, const std::string& feature) {
+    GpuRenderSettings general;
+    general.variant = KernelVariant::General;
+    GpuRenderStats specialisedStats, generalStats;
+    const GpuSceneData data = GpuRenderer::prepare(scene);
+    const Image specialised = sharedGpu().render(data, options, &specialisedStats);
+    const Image withFeature = sharedGpu().render(data, options, &generalStats, general);
+    EXPECT_EQ(specialisedStats.features.find(feature), std::string::npos) << specialisedStats.features;
+    EXPECT_NE(generalStats.features.find(feature), std::string::npos) << generalStats.features;
+    ASSERT_EQ(specialised.pixels.size(), withFeature.pixels.size());
+    for (std::size_t i = 0; i < specialised.pixels.size(); ++i) ASSERT_EQ(specialised.pixels[i], withFeature.pixels[i]) << "pixel " << i;
+}
+
 }  // namespace vkrt::stability

@@ -23,6 +23,11 @@ struct BothImages {
 // Inf, and that the validation layers stayed silent.
 BothImages renderBoth(const Scene& scene, const RenderOptions& options);
 
+// A feature's code costs a scene that does not use it nothing but time: the general kernel (every
+// feature compiled in, `feature` named in its summary) renders `scene` bit for bit as the
+// specialised kernel (without `feature`) does. Fatal on the first differing pixel.
+void expectGeneralKernelRendersItBitForBit(const Scene& scene, const RenderOptions& options, const std::string& feature);
+
 // Small images, few samples: what every test here uses unless it studies the options themselves.
 RenderOptions smallOptions(int width, int height, int samplesPerPixel);
 

@@ -128,18 +128,7 @@ TEST(DepthOfField, APointOffTheFocusPlaneBlursIntoTheCircleOfConfusion) {
 }
 
 TEST(DepthOfField, TheGeneralKernelRendersAPinholeBitForBit) {
-    const Scene scene = tiledWall(3.0f, 0.0f);
-    const RenderOptions options = smallOptions(32, 32, 4);
-    GpuRenderSettings general;
-    general.variant = KernelVariant::General;
-    GpuRenderStats specialisedStats, generalStats;
-    const GpuSceneData data = GpuRenderer::prepare(scene);
-    const Image specialised = sharedGpu().render(data, options, &specialisedStats);
-    const Image withLensCode = sharedGpu().render(data, options, &generalStats, general);
-    EXPECT_EQ(specialisedStats.features.find("thin-lens"), std::string::npos) << specialisedStats.features;
-    EXPECT_NE(generalStats.features.find("thin-lens"), std::string::npos) << generalStats.features;
-    ASSERT_EQ(specialised.pixels.size(), withLensCode.pixels.size());
-    for (std::size_t i = 0; i < specialised.pixels.size(); ++i) ASSERT_EQ(specialised.pixels[i], withLensCode.pixels[i]) << i;
+    expectGeneralKernelRendersItBitForBit(tiledWall(3.0f, 0.0f), smallOptions(32, 32, 4), "thin-lens");
 }
 
 TEST(DepthOfField, BothDevicesAgreeOnADefocusedScene) {

@@ -66,17 +66,7 @@ int edgeWidth(const Image& image) {
 }
 
 TEST(Translucency, RoughnessZeroIsTheDielectricBitForBit) {
-    const Scene scene = slabBeforeEdge(0.0f);
-    const RenderOptions options = smallOptions(32, 8, 4);
-    GpuRenderSettings general;
-    general.variant = KernelVariant::General;
-    GpuRenderStats specialisedStats, generalStats;
-    const GpuSceneData data = GpuRenderer::prepare(scene);
-    const Image specialised = sharedGpu().render(data, options, &specialisedStats);
-    const Image withTranslucency = sharedGpu().render(data, options, &generalStats, general);
-    EXPECT_EQ(specialisedStats.features.find("translucency"), std::string::npos) << specialisedStats.features;
-    EXPECT_NE(generalStats.features.find("translucency"), std::string::npos) << generalStats.features;
-    for (std::size_t i = 0; i < specialised.pixels.size(); ++i) ASSERT_EQ(specialised.pixels[i], withTranslucency.pixels[i]) << i;
+    expectGeneralKernelRendersItBitForBit(slabBeforeEdge(0.0f), smallOptions(32, 8, 4), "translucency");
 }
 
 TEST(Translucency, ARoughSlabBlursTheEdgeBehindItMoreWithMoreRoughness) {

@@ -1,0 +1,27 @@
+// vkrt's optional parts that pull in many libraries (OpenImageIO's image I/O, OpenMPI) are shared
+// modules loaded at run time, so a run that does not need them never maps them (docs/STARTUP.md).
+// This finds and opens one.
+#pragma once
+
+#include <functional>
+#include <string>
+
+namespace vkrt {
+
+struct ModuleSearch {
+    std::string file;          // "libvkrt_oiio.so"
+    std::string envVariable;   // names the module's path; when set, only that path is tried
+    std::string builtPath;     // where the build put it (tests run from their own folders); may be empty
+    std::string entry;         // the extern "C" function returning the module's table
+    int dlopenFlags = 0;       // RTLD_LOCAL or RTLD_GLOBAL, or-ed with RTLD_NOW
+};
+
+// The first loadable candidate's table: $envVariable when set, else beside the running
+// executable, then builtPath. `open` gets the entry point's address, calls it as the module's own
+// function type (a call through another type is undefined: UBSan's -fsanitize=function says so)
+// and returns "" with `table` set, or why it refuses the module. Throws std::runtime_error with
+// `what` and every candidate tried, each with its reason.
+const void* loadModule(const ModuleSearch& search, const std::function<std::string(void* entry, const void*& table)>& open,
+                       const std::string& what);
+
+}  // namespace vkrt
