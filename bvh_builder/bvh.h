@@ -102,8 +102,9 @@ struct Ray {
 };
 
 // Instance i as a ray at `time` sees it: the record itself, or a moving instance's pose then
-// (shaders/shared/motion.h, the kernels' arithmetic).
-gpu::Instance instanceAtTime(const SceneBvh& bvh, std::uint32_t i, float time);
+// (shaders/shared/motion.h, the kernels' arithmetic) written into `posed`. Only a moving instance
+// is copied: the traversal and the hit description call this for every instance they meet.
+const gpu::Instance& instanceAtTime(const SceneBvh& bvh, std::uint32_t i, float time, gpu::Instance& posed);
 
 struct Hit {
     float t = 0.0f;

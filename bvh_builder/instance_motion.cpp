@@ -146,12 +146,13 @@ Aabb motionBounds(const Aabb& objectBox, const gpu::InstanceMotion& motion) {
     return out;
 }
 
-gpu::Instance instanceAtTime(const SceneBvh& bvh, std::uint32_t i, float time) {
+const gpu::Instance& instanceAtTime(const SceneBvh& bvh, std::uint32_t i, float time, gpu::Instance& posed) {
     const gpu::Instance& record = bvh.instances[i];
     const std::uint32_t texel = gpu::instanceMotionTexel(record.info);
     if (texel == gpu::MOTION_NONE) return record;
     const std::size_t k = (texel - bvh.instances.size() * gpu::INSTANCE_TEXELS) / gpu::MOTION_TEXELS;
-    return motion::instanceAtTime(record, bvh.motions[k], time);
+    posed = motion::instanceAtTime(record, bvh.motions[k], time);
+    return posed;
 }
 
 }  // namespace vkrt::bvh

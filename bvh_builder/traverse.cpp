@@ -168,15 +168,8 @@ bool trace(const SceneBvh& bvh, const Ray& ray, Hit* out) {
     const NodeRay worldRay(ray.origin, ray.dir);
     walk(bvh.cpu.nodes, bvh.cpu.topRoot, worldRay, tmax, [&](std::uint32_t instanceIndex, std::uint32_t count) {
         for (std::uint32_t i = instanceIndex; i < instanceIndex + count; ++i) {
-            // A moving instance is posed for the ray's time (a copy only for those: this is the
-            // hot loop of every instanced scene).
             gpu::Instance posed;
-            const gpu::Instance* record = &bvh.instances[i];
-            if (gpu::instanceMotionTexel(record->info) != gpu::MOTION_NONE) {
-                posed = instanceAtTime(bvh, i, ray.time);
-                record = &posed;
-            }
-            const gpu::Instance& inst = *record;
+            const gpu::Instance& inst = instanceAtTime(bvh, i, ray.time, posed);
             const bool identity = bvh.cpu.identity[i] != 0;
             const glm::vec3 o = identity ? ray.origin : transformPoint(inst.worldToObject, ray.origin);
             const glm::vec3 d = identity ? ray.dir : transformVector(inst.worldToObject, ray.dir);

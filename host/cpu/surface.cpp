@@ -84,7 +84,8 @@ BoxFace boxFaceHit(const glm::vec3& o, const glm::vec3& d, const glm::vec3& lo, 
 
 SurfacePoint describeHit(const SceneAccel& accel, const Scene& scene, const bvh::Ray& ray, const bvh::Hit& hit) {
     // A moving instance where it was at the ray's time (the traversal found the hit there).
-    const gpu::Instance inst = bvh::instanceAtTime(accel.bvh, hit.instance, ray.time);
+    gpu::Instance posed;
+    const gpu::Instance& inst = bvh::instanceAtTime(accel.bvh, hit.instance, ray.time, posed);
     const PrimOrigin& origin = accel.origin(hit.instance, hit.prim);
     const Shape& shape = *origin.shape;
 

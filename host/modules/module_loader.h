@@ -4,6 +4,8 @@
 #pragma once
 
 #include <functional>
+#include <mutex>
+#include <stdexcept>
 #include <string>
 
 namespace vkrt {
@@ -23,5 +25,34 @@ struct ModuleSearch {
 // `what` and every candidate tried, each with its reason.
 const void* loadModule(const ModuleSearch& search, const std::function<std::string(void* entry, const void*& table)>& open,
                        const std::string& what);
+
+// The module's table, loaded on the first call and kept for the process: its entry has the type
+// `const Table* (*)()` and the table's `version` must be `version`. Every call after a failure
+// throws the same std::runtime_error.
+template <class Table>
+const Table& moduleTable(const ModuleSearch& search, int version, const std::string& what) {
+    static std::once_flag once;
+    static const Table* table = nullptr;
+    static std::string failure;
+    std::call_once(once, [&] {
+        try {
+            table = static_cast<const Table*>(loadModule(
+                search,
+                [version](void* entry, const void*& out) {
+                    const Table* found = reinterpret_cast<const Table* (*)()>(entry)();
+                    if (!found) return std::string("its entry returned no table");
+                    if (found->version != version)
+                        return "version " + std::to_string(found->version) + ", expected " + std::to_string(version);
+                    out = found;
+                    return std::string();
+                },
+                what));
+        } catch (const std::exception& e) {
+            failure = e.what();
+        }
+    });
+    if (!table) throw std::runtime_error(failure);
+    return *table;
+}
 
 }  // namespace vkrt
