@@ -22,11 +22,14 @@
 #include "interrupt.h"
 #include "mpi_ranks.h"
 #include "output_file.h"
+#include "progressive_output.h"
+#include "render_steps.h"
 #include "scene_convert.h"
 #include "scene_loader.h"
 #include "statistical_compare.h"
 #include "sweep.h"
 #include "vulkan_errors.h"
+#include "watch_mode.h"
 
 namespace vkrt {
 
@@ -36,147 +39,11 @@ constexpr int kExitFailure = 1;
 constexpr int kExitStatisticallyDifferent = 3;  // compare --stat: the z-test failed
 constexpr int kExitInterrupted = 130;
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// Loads the scene, prints its warnings, and settles which camera renders.
-Scene loadWithWarnings(CommandLine& cl) {
-    Diagnostics diagnostics(cl.strict);
-    Scene scene = [&] {
-        const ExitAtOnceOnInterrupt scope;  // a large mesh or texture takes seconds to read
-        return loadScene(cl.scenePath, LoadOptions{cl.strict, /*localOrigin=*/true}, diagnostics);
-    }();
-    for (const std::string& line : diagnostics.messages()) std::cerr << "warning: " << line << "\n";
-    cl.render.camera = cl.camera.value_or(scene.defaultCamera);
-    if (cl.render.camera >= static_cast<int>(scene.cameras.size()))
-        throw std::invalid_argument("--camera " + std::to_string(cl.render.camera) + ": " + cl.scenePath + " has " +
-                                    std::to_string(scene.cameras.size()) + " camera(s)");
-    // The command line's lens overrides the scene's, as the course's -d does.
-    Camera& camera = scene.cameras[cl.render.camera];
-    if (cl.focusDistance) camera.focusDistance = *cl.focusDistance;
-    if (cl.aperture) camera.aperture = *cl.aperture;
-    // Half a lens asked for on the command line is said; `--aperture 0` (the pinhole on purpose) is not.
-    const bool askedForLens = cl.focusDistance.value_or(0.0f) > 0.0f || cl.aperture.value_or(0.0f) > 0.0f;
-    if (askedForLens && (camera.focusDistance > 0.0f) != (camera.aperture > 0.0f))
-        std::cerr << "warning: focus distance " << camera.focusDistance << ", aperture " << camera.aperture
-                  << ": depth of field needs both above 0 (-d/--focus-distance and --aperture, or the camera's "
-                     "focusDistance and aperture); rendering with a pinhole\n";
-    return scene;
-}
-
-GpuRendererOptions gpuOptions(const CommandLine& cl) {
-    GpuRendererOptions options;
-    options.gpu = cl.gpuIndex;
-    options.validation = cl.validate;
-    if (!cl.shaderDir.empty()) options.shaderDir = cl.shaderDir;
-    return options;
-}
-
-struct DeviceRender {
-    Image image;
-    std::string device;
-    double prepareSeconds = 0.0;  // the renderer's own tree and tables
-    double seconds = 0.0;         // the render itself
-};
-
-// Each renderer prepares the scene its own way (its own tree) and renders it.
-DeviceRender renderOnCpu(const Scene& scene, const RenderOptions& options) {
-    const auto start = std::chrono::steady_clock::now();
-    const SceneAccel accel = [&] {
-        const ExitAtOnceOnInterrupt scope;  // the tree of a large mesh takes seconds
-        return prepareCpuScene(scene);
-    }();
-    const double prepareSeconds = secondsSince(start);
-    RenderStats stats;
-    Image image = renderCpu(scene, accel, options, &stats);
-    if (stats.nonFiniteSamples > 0)
-        std::cerr << "warning: " << stats.nonFiniteSamples << " samples were NaN/Inf and were replaced by black\n";
-    return {std::move(image), "cpu (" + std::to_string(stats.threads) + (stats.threads == 1 ? " thread)" : " threads)"), prepareSeconds, stats.seconds};
-}
-
-DeviceRender renderOnGpu(GpuRenderer& gpu, const Scene& scene, const RenderOptions& options, bool general) {
-    const auto start = std::chrono::steady_clock::now();
-    const GpuSceneData data = [&] {
-        const ExitAtOnceOnInterrupt scope;
-        return GpuRenderer::prepare(scene);
-    }();
-    const double prepareSeconds = secondsSince(start);
-    GpuRenderStats stats;
-    GpuRenderSettings settings;
-    settings.variant = general ? KernelVariant::General : KernelVariant::Specialised;
-    Image image = gpu.render(data, options, &stats, settings);
-    if (stats.nonFiniteSamples > 0)
-        std::cerr << "warning: " << stats.nonFiniteSamples << " samples were NaN/Inf and were replaced by black\n";
-    if (auto log = gpu.validationLog(); log && log->count() > 0)
-        std::cerr << "warning: " << log->count() << " Vulkan validation message(s):\n" << log->joined();
-    // The kernel variant that ran: what the scene needed (feature_set.h), and the samples each
-    // invocation computed (sample_batching.h), for shader developers.
-    const std::string kernel = (stats.generalKernel ? "general kernel, " + stats.features : "kernel: " + stats.features) +
-                               "; samples/dispatch=" + std::to_string(stats.samplesPerDispatch);
-    return {std::move(image), stats.device + " [" + kernel + "]", prepareSeconds, stats.renderSeconds + stats.readbackSeconds};
-}
-
 // compare writes its heat map only where -o asks, so that it never litters the working folder.
 void writeHeatMap(const Image& map, const std::string& path) {
     if (!path.empty()) writeImage(map, path);
 }
 std::string heatMapLine(const std::string& path) { return path.empty() ? "not written (-o FILE.png writes it)" : path; }
-
-// --device auto: the GPU when a Vulkan device exists, else the CPU reference with a message.
-std::unique_ptr<GpuRenderer> openGpu(const CommandLine& cl) {
-    if (cl.device == DeviceChoice::Cpu) return nullptr;
-    try {
-        return std::make_unique<GpuRenderer>(gpuOptions(cl));
-    } catch (const VulkanUnavailable& e) {
-        if (cl.device == DeviceChoice::Gpu) throw;
-        std::cerr << "note: no usable Vulkan device (" << e.what() << "); rendering on the CPU reference\n";
-        return nullptr;
-    }
-}
-
-// The float RGB image every renderer returns: a lower bound on what a render needs.
-long long imageMiB(int width, int height) {
-    return static_cast<long long>(width) * height * static_cast<long long>(sizeof(glm::vec3)) >> 20;
-}
-
-// Refuses, before the scene is loaded, an image whose pixels alone exceed this machine's memory
-// (or the process's address-space limit, ulimit -v, when that is lower).
-void checkImageFitsInMemory(int width, int height) {
-    const long long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
-    if (pages <= 0 || pageSize <= 0) return;  // unknown: the allocation itself will say
-    long long physicalMiB = (pages * pageSize) >> 20;
-    rlimit limit{};
-    if (::getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
-        physicalMiB = std::min(physicalMiB, static_cast<long long>(limit.rlim_cur >> 20));
-    if (imageMiB(width, height) > physicalMiB)
-        throw std::runtime_error("a " + std::to_string(width) + "x" + std::to_string(height) + " image needs " +
-                                 std::to_string(imageMiB(width, height)) + " MiB for its float pixels alone; this " +
-                                 "machine has " + std::to_string(physicalMiB) + " MiB (use a smaller -w/-h)");
-}
-
-// Before the render, so that a long render is not thrown away for a bad -o.
-void checkOutputBeforeRendering(const std::string& output, const std::string& scenePath) {
-    checkImageOutputPath(output);
-    checkNotTheInput(output, scenePath);
-}
-
-// The render itself: load, pick the device, render (what one process or one MPI rank does).
-DeviceRender renderScene(CommandLine& cl) {
-    const Scene scene = loadWithWarnings(cl);
-    std::unique_ptr<GpuRenderer> gpu = openGpu(cl);
-    DeviceRender result;
-    try {
-        result = gpu ? renderOnGpu(*gpu, scene, cl.render, cl.general) : renderOnCpu(scene, cl.render);
-    } catch (const GpuKernelError& e) {
-        // The kernel refused this scene (e.g. lavapipe's loop limiter): with --device auto the
-        // CPU reference computes the same image; with --device gpu the error stands.
-        if (cl.device != DeviceChoice::Auto) throw;
-        std::cerr << "note: " << e.what() << "\nnote: rendering on the CPU reference instead\n";
-        result = renderOnCpu(scene, cl.render);
-    }
-    return result;
-}
 
 // One rank of `mpirun -np N vkrt ...`: rank r renders part r+1 of N on the GPU its local rank picks
 // (when several exist and --gpu is not given), rank 0 gathers the rows in rank order, which is the
@@ -230,10 +97,18 @@ int runRenderAsMpiRank(CommandLine& cl) {
 }
 
 int runRender(CommandLine& cl) {
-    if (launchedAsMpiRank()) return runRenderAsMpiRank(cl);
+    if (launchedAsMpiRank()) {
+        if (cl.watch || cl.render.checkpoints > 1)
+            throw std::runtime_error(std::string(cl.watch ? "--watch" : "--progressive") +
+                                     " writes the image from one process, not from MPI ranks (run it without mpirun)");
+        return runRenderAsMpiRank(cl);
+    }
+    if (cl.watch) return runWatch(cl);
     const auto start = std::chrono::steady_clock::now();
     checkOutputBeforeRendering(cl.outputPath, cl.scenePath);
     checkImageFitsInMemory(cl.render.width, cl.render.height);
+    ProgressiveOutput passes(cl.outputPath, cl.render.samplesPerPixel, cl.render.quiet, "pass: ");
+    if (cl.render.checkpoints > 1) cl.render.onCheckpoint = &passes;
     DeviceRender result = renderScene(cl);
     writeImage(result.image, cl.outputPath, cl.parts > 0 ? partAttributes(cl, result.device) : ImageAttributes{});
     if (!cl.render.quiet) {

@@ -327,6 +327,13 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
             "Render part I of N (I/N, 1-based) of the image's rows into an EXR (-o part_I.exr); `vkrt merge` "
             "puts the N parts together into the image one process would have written, byte for byte");
         app.add_flag("--list-devices", listDevices, "List the Vulkan devices and exit");
+        app.add_flag("--watch", cl.watch,
+                     "Keep running: render again whenever the scene, a mesh or texture it reads, or (with --shader-dir, "
+                     "on the GPU) a GLSL file changes; print each render's times or error; Ctrl-C stops");
+        app.add_option("--progressive", cl.render.checkpoints,
+                       "Write the image N times as the samples come in (after 1/N, 2/N, ... of the rpp), so a long "
+                       "render shows early; the last is the same image as without it")
+            ->check(CLI::Range(1, 1 << 16));
     }
 
     try {
@@ -349,6 +356,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
                                                          "': give -o part_" + std::to_string(cl.part) + ".exr");
             cl.render.rows = partRows(cl.render.height, cl.part, cl.parts);
         }
+        if (cl.parts > 0 && (cl.watch || cl.render.checkpoints > 1))
+            throw CLI::ValidationError(cl.watch ? "--watch" : "--progressive",
+                                       "writes the whole image from one process; a --part is one process's share of it");
         if (!compare && !sweep && app.count("--output") > 0 && cl.outputPath.empty())
             throw CLI::ValidationError("-o", "the output path is empty (give a file name such as out.png, or leave -o out)");
         if (cl.scenePath.empty()) throw CLI::RequiredError("a scene file (vkrt scene.xml)");

@@ -38,6 +38,7 @@ struct CommandLine {
     // `vkrt merge` combines (image_parts.h); 0/0 when the whole image is rendered.
     int part = 0, parts = 0;
     std::vector<std::string> mergeInputs;  // vkrt merge: the parts' files
+    bool watch = false;           // --watch: render again whenever an input changes (watch_mode.h)
 };
 
 // The settings a run will use, one per line (what -v prints).

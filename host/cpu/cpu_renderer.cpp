@@ -28,16 +28,16 @@ constexpr int kTileSize = 16;
 
 bool isFinite(const glm::vec3& c) { return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z); }
 
-// One pixel: the mean of its rpp samples, summed in sample order in float (RENDERING.md §2).
-// With `variance`, also the unbiased variance of the samples, from sums kept in double so that
+// Adds samples [first, last) of pixel (i, j) to `sum`, in sample order in float (RENDERING.md §2):
+// a pixel rendered in several passes sums exactly as one rendered in one. With `variance` (one pass
+// over all the samples), also the unbiased variance of the samples, from sums kept in double so that
 // E[x^2] - E[x]^2 does not cancel away.
-glm::vec3 renderPixel(const RenderContext& ctx, Integrator& integrator, int i, int j, std::uint64_t& nonFinite,
-                      glm::vec3* variance = nullptr) {
+void addPixelSamples(const RenderContext& ctx, Integrator& integrator, int i, int j, std::uint32_t first,
+                     std::uint32_t last, glm::vec3& sum, std::uint64_t& nonFinite, glm::vec3* variance = nullptr) {
     const auto pixel = static_cast<std::uint32_t>(j) * static_cast<std::uint32_t>(ctx.camera.nx) +
                        static_cast<std::uint32_t>(i);
-    glm::vec3 sum(0.0f);
     glm::dvec3 sumD(0.0), sumSqD(0.0);
-    for (std::uint32_t s = 0; s < ctx.samplesPerPixel; ++s) {
+    for (std::uint32_t s = first; s < last; ++s) {
         const glm::vec2 offset = sampling::sample2D(ctx.sampler, ctx.pixelGrid, pixel, s, sampling::DIM_CAMERA, ctx.seed);
         // The lens sample is drawn only for a thin lens: a pinhole render is the same computation
         // as before depth of field existed.
@@ -61,10 +61,18 @@ glm::vec3 renderPixel(const RenderContext& ctx, Integrator& integrator, int i, i
         }
     }
     if (variance) {
-        const double n = ctx.samplesPerPixel;
+        const double n = last - first;
         *variance = n > 1.0 ? glm::vec3(glm::max((sumSqD - sumD * sumD / n) / (n - 1.0), glm::dvec3(0.0))) : glm::vec3(0.0f);
     }
-    return sum / static_cast<float>(ctx.samplesPerPixel);
+}
+
+// The rows' pixels: sums / samples (the other rows stay black).
+Image meanOf(const Image& sums, glm::ivec2 rows, int samples) {
+    Image image(sums.width, sums.height);
+    const auto n = static_cast<float>(samples);
+    for (int j = rows.x; j < rows.y; ++j)
+        for (int i = 0; i < sums.width; ++i) image.at(i, j) = sums.at(i, j) / n;
+    return image;
 }
 
 int threadCount(int requested, int tiles) {
@@ -81,7 +89,7 @@ Image renderCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions
     const auto start = std::chrono::steady_clock::now();
     const RenderContext ctx = cpu::makeRenderContext(scene, accel, options);
 
-    Image image(options.width, options.height);
+    Image sums(options.width, options.height);  // zero
     if (sampleVariance) *sampleVariance = Image(options.width, options.height);
     // Only the rows asked for (a --part); the others stay black.
     const glm::ivec2 rows = rowsOf(options);
@@ -89,6 +97,11 @@ Image renderCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions
     const int tilesY = (rows.y - rows.x + kTileSize - 1) / kTileSize;
     const int tileCount = tilesX * tilesY;
     const int threads = threadCount(options.threads, tileCount);
+
+    // The passes' sample ranges: one pass unless the render is progressive (the variance needs all
+    // of a pixel's samples in one pass).
+    const std::vector<int> ends = checkpointEnds(static_cast<int>(ctx.samplesPerPixel), sampleVariance ? 1 : options.checkpoints);
+    std::uint32_t first = 0, last = 0;
 
     std::atomic<int> nextTile{0};
     std::atomic<int> tilesDone{0};
@@ -118,9 +131,10 @@ Image renderCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions
                 const int x1 = std::min(x0 + kTileSize, options.width), y1 = std::min(y0 + kTileSize, rows.y);
                 for (int j = y0; j < y1; ++j)
                     for (int i = x0; i < x1; ++i)
-                        image.at(i, j) = renderPixel(ctx, integrator, i, j, nonFinite,
-                                                     sampleVariance ? &sampleVariance->at(i, j) : nullptr);
-                progress.update(static_cast<double>(tilesDone.fetch_add(1) + 1) / tileCount);
+                        addPixelSamples(ctx, integrator, i, j, first, last, sums.at(i, j), nonFinite,
+                                        sampleVariance ? &sampleVariance->at(i, j) : nullptr);
+                progress.update((static_cast<double>(tilesDone.fetch_add(1) + 1) / tileCount * (last - first) + first) /
+                                ctx.samplesPerPixel);
             }
         } catch (...) {
             std::lock_guard lock(mutex);
@@ -132,13 +146,20 @@ Image renderCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions
         totalNonFinite += nonFinite;
     };
 
-    std::vector<std::jthread> pool;
-    for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-    worker();
-    pool.clear();  // joins
-
-    if (failure) std::rethrow_exception(failure);
-    if (cancelled) throw RenderCancelled{};
+    for (const int end : ends) {
+        first = last;
+        last = static_cast<std::uint32_t>(end);
+        nextTile = 0;
+        tilesDone = 0;
+        std::vector<std::jthread> pool;
+        for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+        worker();
+        pool.clear();  // joins
+        if (failure) std::rethrow_exception(failure);
+        if (cancelled) throw RenderCancelled{};
+        if (last < ctx.samplesPerPixel && options.onCheckpoint)
+            options.onCheckpoint->checkpoint(meanOf(sums, rows, static_cast<int>(last)), static_cast<int>(last));
+    }
     if (stats) {
         stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         stats->threads = threads;
@@ -148,7 +169,7 @@ Image renderCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions
         stats->refractionRays = totalRays.refraction;
         stats->nonFiniteSamples = totalNonFinite;
     }
-    return image;
+    return meanOf(sums, rows, ctx.samplesPerPixel);
 }
 
 }  // namespace vkrt

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 
 #include "buffer.h"
 #include "commands.h"
@@ -34,18 +35,38 @@ Image resolve(const std::vector<glm::vec4>& sums, int width, int height, int sam
     return image;
 }
 
+// A progressive render's image so far: tiles before `current` have all their samples, `current`
+// has `currentSamples`, later tiles none yet (black). Tiles are in rows-relative coordinates.
+Image resolveSoFar(const std::vector<glm::vec4>& sums, int width, int height, const std::vector<TileRect>& tiles,
+                   std::size_t current, int currentSamples, int samples, int firstRow) {
+    Image image(width, height);
+    for (std::size_t t = 0; t <= current && t < tiles.size(); ++t) {
+        const auto n = static_cast<float>(t < current ? samples : currentSamples);
+        const TileRect& r = tiles[t];
+        for (std::uint32_t y = r.y; y < r.y + r.height; ++y)
+            for (std::uint32_t x = r.x; x < r.x + r.width; ++x) {
+                const std::size_t i = static_cast<std::size_t>(y + firstRow) * width + x;
+                image.pixels[i] = glm::vec3(sums[i]) / n;
+            }
+    }
+    return image;
+}
+
 }  // namespace
 
 struct GpuRenderer::Impl {
     Impl(const GpuRendererOptions& options, const GpuTestHooks& hooks)
-        : context(contextOptions(options, hooks)), runner(context), transfers(context, runner), layout(renderLayout(context)),
-          kernels(context, layout, loadKernel(kernelSource("render", options, hooks))) {}
+        : source(kernelSource("render", options, hooks)), context(contextOptions(options, hooks)), runner(context),
+          transfers(context, runner), layout(renderLayout(context)) {
+        kernels.emplace(context, layout, loadKernel(source));
+    }
 
+    KernelSource source;
     Context context;
     CommandRunner runner;
     Transfers transfers;
     KernelLayout layout;
-    KernelCache kernels;
+    std::optional<KernelCache> kernels;  // replaced by reloadKernel()
 };
 
 GpuRenderer::GpuRenderer(const GpuRendererOptions& options, const GpuTestHooks& hooks)
@@ -54,7 +75,16 @@ GpuRenderer::~GpuRenderer() = default;
 
 std::string GpuRenderer::deviceName() const { return impl_->context.info().name; }
 std::shared_ptr<const ValidationLog> GpuRenderer::validationLog() const { return impl_->context.validationLog(); }
-std::size_t GpuRenderer::pipelineCount() const { return impl_->kernels.size(); }
+std::size_t GpuRenderer::pipelineCount() const { return impl_->kernels->size(); }
+
+double GpuRenderer::reloadKernel() {
+    const auto start = Clock::now();
+    std::vector<std::uint32_t> spirv = loadKernel(impl_->source);  // throws before anything is replaced
+    impl_->context.device().waitIdle();
+    impl_->kernels.reset();  // saves the pipeline cache file; the new cache reads it back
+    impl_->kernels.emplace(impl_->context, impl_->layout, spirv);
+    return secondsSince(start);
+}
 
 Image GpuRenderer::render(const GpuSceneData& data, const RenderOptions& options, GpuRenderStats* statsOut,
                           const GpuRenderSettings& settings) {
@@ -65,7 +95,7 @@ Image GpuRenderer::render(const GpuSceneData& data, const RenderOptions& options
     stats.features = in.features.describe();
     stats.generalKernel = settings.variant == KernelVariant::General;
     stats.samplesPerDispatch = batching.perDispatch;
-    const vk::raii::Pipeline& pipeline = impl_->kernels.pipeline(in.features, batching.perDispatch, &stats.pipelineSeconds);
+    const vk::raii::Pipeline& pipeline = impl_->kernels->pipeline(in.features, batching.perDispatch, &stats.pipelineSeconds);
 
     auto start = Clock::now();
     const SceneUpload gpuScene(impl_->context, impl_->transfers, impl_->layout, data, in.frame);
@@ -83,6 +113,9 @@ Image GpuRenderer::render(const GpuSceneData& data, const RenderOptions& options
     // accumulation buffer's other rows stay zero (black).
     const glm::ivec2 rows = rowsOf(options);
     TilePlanner planner(width, static_cast<std::uint32_t>(rows.y - rows.x), batching.passes(), tiling);
+    const std::vector<int> checkpoints = checkpointEnds(static_cast<int>(batching.passes()), options.checkpoints);
+    if (options.onCheckpoint) planner.stopAtPasses(checkpoints);
+    std::vector<glm::vec4> sums(static_cast<std::size_t>(options.width) * options.height);
     Progress progress("GPU render", options.quiet);
     start = Clock::now();
     while (!planner.done()) {
@@ -101,12 +134,22 @@ Image GpuRenderer::render(const GpuSceneData& data, const RenderOptions& options
         stats.maxSubmissionSeconds = std::max(stats.maxSubmissionSeconds, seconds);
         throwIfKernelFailed(gpuScene.status(), width);
         progress.update(planner.fractionDone());
+        if (options.onCheckpoint && submission.endsPasses) {
+            const auto passesDone = static_cast<int>(submission.firstSample + submission.sampleCount);
+            const bool last = planner.done();
+            if (!last && std::find(checkpoints.begin(), checkpoints.end(), passesDone) != checkpoints.end()) {
+                impl_->transfers.download(gpuScene.accum(), std::as_writable_bytes(std::span(sums)));
+                const int samplesDone = static_cast<int>(std::min(batching.samplesPerPixel, batching.first(passesDone)));
+                options.onCheckpoint->checkpoint(resolveSoFar(sums, options.width, options.height, planner.tiles(), submission.tileIndex,
+                                                  samplesDone, options.samplesPerPixel, rows.x),
+                                     samplesDone);
+            }
+        }
     }
     stats.renderSeconds = secondsSince(start);
     stats.nonFiniteSamples = gpu::statusNonFiniteSamples(gpuScene.status());
 
     start = Clock::now();
-    std::vector<glm::vec4> sums(static_cast<std::size_t>(options.width) * options.height);
     impl_->transfers.download(gpuScene.accum(), std::as_writable_bytes(std::span(sums)));
     Image image = resolve(sums, options.width, options.height, options.samplesPerPixel);
     stats.readbackSeconds = secondsSince(start);

@@ -66,6 +66,11 @@ public:
     Image render(const GpuSceneData& data, const RenderOptions& options, GpuRenderStats* stats = nullptr,
                  const GpuRenderSettings& settings = {});
 
+    // Loads the kernel again (with --shader-dir, compiles the GLSL as it is now) and drops the
+    // pipelines made from the old one; returns the seconds it took. On an error (ShaderCompileError)
+    // the old kernel stays.
+    double reloadKernel();
+
     std::string deviceName() const;
     // nullptr unless validation is on; stays readable after the renderer is destroyed.
     std::shared_ptr<const ValidationLog> validationLog() const;

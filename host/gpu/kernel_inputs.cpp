@@ -1,5 +1,6 @@
 #include "kernel_inputs.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "frame_params.h"
@@ -53,6 +54,10 @@ KernelInputs makeKernelInputs(const GpuSceneData& data, const RenderOptions& opt
     const auto samples = static_cast<std::uint32_t>(options.samplesPerPixel);
     in.batching = {samples, samplesPerDispatch(sampleLoopBound(scene, bvh, in.features, options), samples,
                                                forcedSamplesPerDispatch)};
+    // A progressive render needs a pass boundary at each of its checkpoints: at most rpp / N
+    // samples per dispatch (the image does not depend on k: sample_batching.h).
+    if (options.checkpoints > 1 && forcedSamplesPerDispatch == 0)
+        in.batching.perDispatch = std::clamp(samples / static_cast<std::uint32_t>(options.checkpoints), 1u, in.batching.perDispatch);
     return in;
 }
 

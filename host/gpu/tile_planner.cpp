@@ -58,7 +58,7 @@ Submission TilePlanner::next() {
     const std::uint32_t workgroups = tile.workgroups();
     const std::uint64_t budgetUnits = std::max<std::uint64_t>(budgetPixelSamples() / kBlockPixels, 1);
 
-    Submission s{tile, workgroup_, 0, sample_, 1};
+    Submission s{tile, workgroup_, 0, sample_, 1, tile_, false};
     const std::uint32_t left = workgroups - workgroup_;
     if (policy_.fixedWorkgroups) {
         s.workgroupCount = std::min(policy_.fixedWorkgroups, left);
@@ -71,11 +71,17 @@ Submission TilePlanner::next() {
         const std::uint32_t passesLeft = samples_ - sample_;
         s.sampleCount = policy_.fixedSamples ? std::min(policy_.fixedSamples, passesLeft)
                                              : static_cast<std::uint32_t>(std::clamp<std::uint64_t>(budgetUnits / workgroups, 1, passesLeft));
+        for (const int stop : stops_)
+            if (static_cast<std::uint32_t>(stop) > sample_) {
+                s.sampleCount = std::min(s.sampleCount, static_cast<std::uint32_t>(stop) - sample_);
+                break;
+            }
     }
 
     lastUnits_ = static_cast<std::uint64_t>(s.workgroupCount) * s.sampleCount;
     workgroup_ += s.workgroupCount;
     if (workgroup_ == workgroups) {
+        s.endsPasses = true;
         workgroup_ = 0;
         sample_ += s.sampleCount;
         if (sample_ == samples_) {

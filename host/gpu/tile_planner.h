@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "device_host.h"
@@ -36,6 +37,9 @@ struct Submission {
     std::uint32_t firstSample = 0;     // sample passes [first, first + count), one dispatch each (a pass
                                        // computes k samples per pixel: sample_batching.h)
     std::uint32_t sampleCount = 0;
+    std::size_t tileIndex = 0;         // into TilePlanner::tiles()
+    bool endsPasses = false;           // the run reaches the tile's last workgroup: passes
+                                       // [0, firstSample + sampleCount) of the tile are complete
 };
 
 struct TilingPolicy {
@@ -58,6 +62,9 @@ public:
     bool done() const { return tile_ >= tiles_.size(); }
     // The next piece of work; only valid when !done().
     Submission next();
+    // Progressive renders: no submission runs past one of these pass counts (increasing), so that
+    // every tile's passes end exactly on each of them (RenderOptions::checkpoints).
+    void stopAtPasses(std::vector<int> ends) { stops_ = std::move(ends); }
     // How long the submission returned by the last next() took; adapts the following sizes.
     void reportSeconds(double seconds);
     double fractionDone() const { return static_cast<double>(doneUnits_) / static_cast<double>(totalUnits_); }
@@ -68,6 +75,7 @@ private:
 
     std::uint32_t samples_;
     TilingPolicy policy_;
+    std::vector<int> stops_;
     std::vector<TileRect> tiles_;
     // Position: tile, sample pass, first workgroup of the pass not yet submitted.
     std::size_t tile_ = 0;

@@ -1,5 +1,6 @@
 #include "render_options.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <stdexcept>
@@ -37,6 +38,16 @@ glm::ivec2 rowsOf(const RenderOptions& options) {
         throw std::invalid_argument("rows " + std::to_string(rows.x) + ".." + std::to_string(rows.y) + " are not a part of the " +
                                     std::to_string(options.height) + "-row image");
     return rows;
+}
+
+std::vector<int> checkpointEnds(int units, int checkpoints) {
+    std::vector<int> ends;
+    const int n = std::max(checkpoints, 1);
+    for (int p = 1; p <= n; ++p) {
+        const auto end = static_cast<int>(static_cast<long long>(units) * p / n);
+        if (end > 0 && (ends.empty() || end > ends.back())) ends.push_back(end);
+    }
+    return ends;
 }
 
 glm::ivec2 partRows(int height, int part, int parts) {

@@ -6,10 +6,20 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
 namespace vkrt {
+
+struct Image;  // image.h
+
+// Receives a progressive render's image after each pass but the last (RenderOptions::checkpoints).
+class CheckpointSink {
+public:
+    virtual ~CheckpointSink() = default;
+    virtual void checkpoint(const Image& soFar, int samplesDone) = 0;
+};
 
 // Values match gpu::SAMPLER_* in shaders/shared/device_host.h.
 enum class SamplerKind : std::uint32_t { Jittered = 0, Regular = 1, Random = 2, Sobol = 3 };
@@ -35,6 +45,13 @@ struct RenderOptions {
     // Render only rows [x, y) (0 = the top row); the others stay black. `--part I/N` sets it, and
     // `vkrt merge` puts the parts back together: every pixel is computed as in the whole image.
     std::optional<glm::ivec2> rows;
+    // Progressive rendering (--progressive N): the samples are computed in `checkpoints` passes
+    // (pass p ends after rpp * p / N samples of every pixel; the GPU rounds down to its dispatch
+    // passes), and after each pass but the last `onCheckpoint` gets the image so far, the mean of
+    // the samples computed, with how many. Every pixel still sums its samples in sample order, so
+    // the returned image is bit-identical to a render without checkpoints. 0 or 1: no checkpoints.
+    int checkpoints = 0;
+    CheckpointSink* onCheckpoint = nullptr;  // not owned; null: no images before the end
     int threads = 0;             // CPU threads, 0 = all hardware threads
     bool quiet = false;          // no progress bar
     // Set asynchronously (Ctrl-C); renderers stop at the next tile or pass and throw RenderCancelled.
@@ -42,6 +59,11 @@ struct RenderOptions {
 };
 
 struct RenderCancelled {};
+
+// Where the passes of a progressive render end, in `units` (samples on the CPU, dispatch passes on
+// the GPU): units * p / checkpoints for p = 1..checkpoints, without repeats (more checkpoints than
+// units give one pass per unit), the last one `units`. checkpoints <= 1: just {units}.
+std::vector<int> checkpointEnds(int units, int checkpoints);
 
 // The shutter a render uses (RenderOptions::shutter, or [0, 1]); throws std::invalid_argument
 // naming both values when one is not finite or the shutter closes before it opens.

@@ -25,8 +25,11 @@ XmlSource::XmlSource(std::string path, const std::string& text)
     const pugi::xml_parse_result result =
         document_->load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_utf8);
     if (!result) {
+        const std::string snippet = snippetAt(text, result.offset);
+        // A file cut short (an editor's save caught half-way, a missing close tag) has no text to show.
         throw SceneError({path_, lineOfOffset(result.offset), "xml",
-                          std::string("malformed XML (") + result.description() + ") at", snippetAt(text, result.offset)});
+                          std::string("malformed XML (") + result.description() + ") at" + (snippet.empty() ? " the end of the file" : ""),
+                          snippet});
     }
     if (!root()) throw SceneError({path_, 1, "xml", "the file has no root element", ""});
 }

@@ -167,6 +167,21 @@ TEST(CommandLineOptions, ShutterTakesOpenAndClose) {
     EXPECT_THROW(shutterOf(backwards), std::invalid_argument);
 }
 
+TEST(CommandLineOptions, WatchAndProgressiveAreRenderOptionsOfOneProcess) {
+    const CommandLine cl = parseOk({"s.xml", "--watch", "--progressive", "4"});
+    EXPECT_TRUE(cl.watch);
+    EXPECT_EQ(cl.render.checkpoints, 4);
+    EXPECT_FALSE(parseOk({"s.xml"}).watch);
+    EXPECT_EQ(parseOk({"s.xml"}).render.checkpoints, 0);
+    EXPECT_NE(parseRefused({"s.xml", "--progressive", "0"}), "");
+    EXPECT_NE(parseRefused({"s.xml", "--watch", "--part", "1/2", "-o", "p.exr"}).find("a --part is one process's share"),
+              std::string::npos);
+    EXPECT_NE(parseRefused({"s.xml", "--progressive", "2", "--part", "1/2", "-o", "p.exr"}).find("--progressive"),
+              std::string::npos);
+    EXPECT_NE(parseRefused({"compare", "s.xml", "--watch"}), "");  // compare and sweep do not watch
+    EXPECT_NE(parseRefused({"sweep", "s.xml", "--out", "d", "--progressive", "2"}), "");
+}
+
 TEST(CourseCommandLine, SplitMethodIsAcceptedWithANotice) {
     const CommandLine cl = parseOk({"s.xml", "-s", "objectMedian"});
     ASSERT_EQ(cl.notices.size(), 1u);

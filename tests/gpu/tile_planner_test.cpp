@@ -100,6 +100,36 @@ TEST(TilePlanner, FixedPolicyGivesTheAskedSubmissions) {
     EXPECT_EQ(all[15].tile.height, 2u);
 }
 
+// A progressive render's stops (RenderOptions::checkpoints): however many passes the budget would
+// take at once, no submission runs past a stop, every stop of every tile ends a submission that
+// says it completes the tile's passes (endsPasses), and the tiles are named in order.
+TEST(TilePlanner, SubmissionsEndOnEveryStopOfEveryTile) {
+    for (const bool tiled : {false, true}) {
+        TilingPolicy policy;
+        if (tiled) {
+            policy.fixedTileWidth = 24;
+            policy.fixedTileHeight = 16;
+        }
+        TilePlanner planner(48, 32, 10, policy);
+        planner.stopAtPasses({3, 6, 10});
+        std::vector<std::vector<std::uint32_t>> ended(planner.tiles().size());
+        std::size_t lastTile = 0;
+        while (!planner.done()) {
+            const Submission s = planner.next();
+            EXPECT_GE(s.tileIndex, lastTile);
+            lastTile = s.tileIndex;
+            for (const std::uint32_t stop : {3u, 6u})
+                EXPECT_FALSE(s.firstSample < stop && s.firstSample + s.sampleCount > stop) << "crosses stop " << stop;
+            if (s.endsPasses) ended[s.tileIndex].push_back(s.firstSample + s.sampleCount);
+            planner.reportSeconds(1e-9);  // so cheap that the budget would take every pass at once
+        }
+        for (const std::vector<std::uint32_t>& ends : ended) {
+            for (const std::uint32_t stop : {3u, 6u, 10u})
+                EXPECT_NE(std::find(ends.begin(), ends.end(), stop), ends.end()) << "no submission ends at " << stop;
+        }
+    }
+}
+
 // With a uniform cost the planner learns it from the first probe: no later submission may
 // exceed the target, and once grown they should use at least half of it.
 TEST(TilePlanner, SubmissionsStayNearTheTarget) {

@@ -1,0 +1,62 @@
+// Waits for files to change, through Linux inotify. It watches the folders that hold the files, not
+// the files: an editor that saves by writing a new file and renaming it over the old one replaces
+// the file's inode, and a watch on the old inode would never fire again.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace vkrt {
+
+struct FileChanges {
+    std::set<std::filesystem::path> files;  // the watched files that changed
+    std::set<std::filesystem::path> trees;  // the files in watched trees that changed
+    std::set<std::filesystem::path> others; // other files in the watched files' folders
+};
+
+// An absolute, normalised spelling (no symlinks resolved: the names the user gave are watched).
+std::filesystem::path watchedPath(const std::filesystem::path& path);
+
+class FileWatcher {
+public:
+    FileWatcher();  // throws std::runtime_error when inotify is unavailable
+    ~FileWatcher();
+    FileWatcher(const FileWatcher&) = delete;
+    FileWatcher& operator=(const FileWatcher&) = delete;
+
+    // Adds these files to what is watched (a change is a write closed, a file renamed or moved onto
+    // the name, or deleted) and every file under these folders whose extension is in
+    // `treeExtensions`. Nothing already queued is lost: a change made while the caller was
+    // reading the files is still reported by the next wait().
+    void watch(const std::vector<std::filesystem::path>& files, const std::vector<std::filesystem::path>& trees = {},
+               const std::set<std::string>& treeExtensions = {});
+    // Changes to this file and to the temporaries written beside it (output_file.h) are ignored.
+    void ignore(const std::filesystem::path& file) { ignored_.push_back(watchedPath(file)); }
+
+    // Blocks until something watched changes (or, with `othersCount`, any file in a watched
+    // file's folder), then goes on collecting until nothing has changed for `quiet` (a save is
+    // often several events: write, rename, attributes), and returns what changed. Returns nullopt
+    // as soon as *stop becomes true (checked every 100 ms).
+    std::optional<FileChanges> wait(const std::atomic<bool>* stop, std::chrono::milliseconds quiet, bool othersCount);
+
+    std::size_t folderCount() const { return folders_.size(); }
+
+private:
+    // Reads what inotify has queued into `changes`; true when something counted.
+    bool drain(FileChanges& changes, bool othersCount);
+
+    int fd_ = -1;
+    std::map<int, std::filesystem::path> folders_;  // watch descriptor -> folder
+    std::set<std::filesystem::path> files_;
+    std::vector<std::filesystem::path> trees_;
+    std::set<std::string> treeExtensions_;
+    std::vector<std::filesystem::path> ignored_;
+};
+
+}  // namespace vkrt

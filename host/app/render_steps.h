@@ -1,0 +1,60 @@
+// The steps of a render that the commands share (a plain render, an MPI rank, watch mode, compare):
+// load the scene with its warnings printed, open the device, prepare and render on it.
+#pragma once
+
+#include <chrono>
+#include <memory>
+#include <string>
+
+#include "command_line.h"
+#include "gpu_renderer.h"
+#include "image.h"
+#include "render_options.h"
+#include "scene.h"
+#include "scene_accel.h"
+
+namespace vkrt {
+
+double secondsSince(std::chrono::steady_clock::time_point start);
+
+// Loads the scene, prints its warnings, settles which camera renders and applies the command
+// line's lens (-d, --aperture) to it.
+Scene loadWithWarnings(CommandLine& cl);
+
+GpuRendererOptions gpuOptions(const CommandLine& cl);
+
+struct DeviceRender {
+    Image image;
+    std::string device;           // the device, and on the GPU the kernel variant that ran
+    double prepareSeconds = 0.0;  // the renderer's own tree and tables
+    double seconds = 0.0;         // the render itself
+    double pipelineSeconds = 0.0; // GPU: creating and first dispatching the kernel variant (the
+                                  // driver's compile; 0 when it was made before)
+};
+
+// Each renderer prepares the scene its own way (its own tree) and renders it; the Prepared forms
+// take what an earlier prepare made (watch mode keeps it while only shaders change).
+DeviceRender renderOnCpu(const Scene& scene, const RenderOptions& options);
+DeviceRender renderOnGpu(GpuRenderer& gpu, const Scene& scene, const RenderOptions& options, bool general);
+DeviceRender renderPreparedOnCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions& options);
+DeviceRender renderPreparedOnGpu(GpuRenderer& gpu, const GpuSceneData& data, const RenderOptions& options, bool general);
+
+// --device auto: the GPU when a Vulkan device exists, else nullptr (the CPU reference) with a
+// message; --device cpu: nullptr.
+std::unique_ptr<GpuRenderer> openGpu(const CommandLine& cl);
+
+// The float RGB image every renderer returns: a lower bound on what a render needs.
+long long imageMiB(int width, int height);
+
+// Refuses, before the scene is loaded, an image whose pixels alone exceed this machine's memory
+// (or the process's address-space limit, ulimit -v, when that is lower).
+void checkImageFitsInMemory(int width, int height);
+
+// Before the render, so that a long render is not thrown away for a bad -o.
+void checkOutputBeforeRendering(const std::string& output, const std::string& scenePath);
+
+// Load, pick the device, render: what one process or one MPI rank does. A GPU kernel that refuses
+// the scene falls back to the CPU reference under --device auto.
+DeviceRender renderScene(CommandLine& cl);
+
+}  // namespace vkrt

@@ -1,0 +1,181 @@
+#include "watch_mode.h"
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <exception>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "cpu_renderer.h"
+#include "file_watcher.h"
+#include "gpu_renderer.h"
+#include "interrupt.h"
+#include "progressive_output.h"
+#include "render_steps.h"
+
+namespace vkrt {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// A save is a burst of events (write, rename, attributes) within a few milliseconds; 50 ms of quiet
+// ends it without a delay anyone notices.
+constexpr std::chrono::milliseconds kQuiet{50};
+
+// The GLSL a --shader-dir kernel is compiled from: render.comp and what it includes.
+const std::set<std::string> kShaderExtensions{".comp", ".glsl", ".h"};
+
+// Every file the scene was read from: the scene, its meshes and textures, its environment map.
+std::vector<std::filesystem::path> inputFiles(const Scene& scene) {
+    std::vector<std::filesystem::path> files{scene.path};
+    for (const Mesh& mesh : scene.meshes) files.emplace_back(mesh.path);
+    for (const Texture& texture : scene.textures) files.emplace_back(texture.path);
+    for (const char* face : {"posX", "negX", "posY", "negY", "posZ", "negZ"})
+        if (!scene.envMapPrefix.empty()) files.emplace_back(scene.envMapPrefix + face + ".png");
+    if (!scene.envMapVertCross.empty()) files.emplace_back(scene.envMapVertCross);
+    return files;
+}
+
+std::string clockTime() {
+    const std::time_t now = std::time(nullptr);
+    char text[16];
+    std::strftime(text, sizeof text, "%H:%M:%S", std::localtime(&now));
+    return text;
+}
+
+// What changed, for the log line: the first file's name and how many more.
+std::string describe(const std::set<std::filesystem::path>& files) {
+    if (files.empty()) return "";
+    std::string text = files.begin()->filename().string();
+    if (files.size() > 1) text += " and " + std::to_string(files.size() - 1) + " more";
+    return text;
+}
+
+// The scene as loaded and prepared for the device that renders it; what a shader edit keeps.
+struct LoadedScene {
+    Scene scene;
+    std::optional<GpuSceneData> gpu;  // refers to `scene`: destroyed first
+    std::optional<SceneAccel> cpu;
+};
+
+class Watcher {
+public:
+    explicit Watcher(CommandLine& cl) : cl_(cl) {
+        watcher_.ignore(cl.outputPath);
+        watcher_.watch({cl.scenePath});
+        gpu_ = openGpu(cl);
+        if (!cl.shaderDir.empty()) {
+            if (gpu_)
+                watcher_.watch({}, {cl.shaderDir}, kShaderExtensions);
+            else
+                std::cerr << "note: --shader-dir: the CPU reference runs no GLSL; its files are not watched\n";
+        }
+    }
+
+    int run() {
+        bool reloadScene = true, reloadKernel = false;
+        for (int round = 1;; ++round) {
+            renderOnce(round, reloadScene, reloadKernel);
+            if (round == 1 && !cl_.render.quiet)
+                std::fprintf(stderr, "vkrt: watching %zu folder(s) for changes (Ctrl-C stops)\n", watcher_.folderCount());
+            // After a scene that did not load, a file appearing beside it may be what it was
+            // missing (a mesh not yet copied): any change in the watched folders renders again.
+            const std::optional<FileChanges> changes = watcher_.wait(cl_.render.cancel, kQuiet, !loaded_);
+            if (!changes) {
+                std::cerr << "vkrt: watch stopped\n";
+                return 0;
+            }
+            reloadScene = reloadScene || !changes->files.empty() || !loaded_;
+            reloadKernel = reloadKernel || !changes->trees.empty();
+            if (!cl_.render.quiet)
+                std::fprintf(stderr, "[%s] changed: %s\n", clockTime().c_str(),
+                             describe(changes->files.empty() ? (changes->trees.empty() ? changes->others : changes->trees)
+                                                             : changes->files)
+                                 .c_str());
+        }
+    }
+
+private:
+    // One render: reload what changed, render, write. Prints the times, or the error; true when the
+    // image was written. The flags are cleared when their work succeeded.
+    bool renderOnce(int round, bool& reloadScene, bool& reloadKernel) {
+        const auto start = Clock::now();
+        std::string steps;
+        char text[64];
+        try {
+            if (reloadKernel && gpu_) {
+                std::snprintf(text, sizeof text, "kernel %.3fs, ", gpu_->reloadKernel());
+                steps += text;
+            }
+            reloadKernel = false;
+            if (reloadScene) {
+                loaded_.reset();
+                const auto loadStart = Clock::now();
+                auto loaded = std::make_unique<LoadedScene>(LoadedScene{loadWithWarnings(cl_), {}, {}});
+                watcher_.watch(inputFiles(loaded->scene));  // also the files of a scene that fails later
+                {
+                    const ExitAtOnceOnInterrupt scope;  // the trees of a large mesh take seconds
+                    if (gpu_)
+                        loaded->gpu.emplace(GpuRenderer::prepare(loaded->scene));
+                    else
+                        loaded->cpu.emplace(prepareCpuScene(loaded->scene));
+                }
+                std::snprintf(text, sizeof text, "load %.3fs, ", secondsSince(loadStart));
+                steps += text;
+                loaded_ = std::move(loaded);
+                reloadScene = false;
+            }
+            ProgressiveOutput passes(cl_.outputPath, cl_.render.samplesPerPixel, cl_.render.quiet, "  ");
+            RenderOptions options = cl_.render;
+            if (options.checkpoints > 1) options.onCheckpoint = &passes;
+            const DeviceRender result = render(options);
+            writeImage(result.image, cl_.outputPath);
+            if (!cl_.render.quiet)
+                std::fprintf(stderr, "[%s] render %d: %dx%d, %d rpp on %s: %spipeline %.3fs, render %.3fs, total %.3fs -> %s\n",
+                             clockTime().c_str(), round, cl_.render.width, cl_.render.height, cl_.render.samplesPerPixel,
+                             result.device.c_str(), steps.c_str(), result.pipelineSeconds, result.seconds,
+                             secondsSince(start), cl_.outputPath.c_str());
+            return true;
+        } catch (const RenderCancelled&) {
+            throw;
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "[%s] render %d: error: %s\n", clockTime().c_str(), round, e.what());
+            return false;
+        }
+    }
+
+    DeviceRender render(const RenderOptions& options) {
+        if (loaded_->gpu) {
+            try {
+                return renderPreparedOnGpu(*gpu_, *loaded_->gpu, options, cl_.general);
+            } catch (const GpuKernelError& e) {
+                if (cl_.device != DeviceChoice::Auto) throw;
+                std::cerr << "note: " << e.what() << "\nnote: rendering on the CPU reference instead\n";
+                if (!loaded_->cpu) loaded_->cpu.emplace(prepareCpuScene(loaded_->scene));
+            }
+        }
+        return renderPreparedOnCpu(loaded_->scene, *loaded_->cpu, options);
+    }
+
+    CommandLine& cl_;
+    FileWatcher watcher_;
+    std::unique_ptr<GpuRenderer> gpu_;
+    std::unique_ptr<LoadedScene> loaded_;
+};
+
+}  // namespace
+
+int runWatch(CommandLine& cl) {
+    checkOutputBeforeRendering(cl.outputPath, cl.scenePath);
+    checkImageFitsInMemory(cl.render.width, cl.render.height);
+    Watcher watcher(cl);
+    return watcher.run();
+}
+
+}  // namespace vkrt
