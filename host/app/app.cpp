@@ -21,6 +21,7 @@
 #include "image_compare.h"
 #include "interrupt.h"
 #include "mpi_ranks.h"
+#include "mpi_work_sharing.h"
 #include "output_file.h"
 #include "progressive_output.h"
 #include "render_steps.h"
@@ -45,17 +46,40 @@ void writeHeatMap(const Image& map, const std::string& path) {
 }
 std::string heatMapLine(const std::string& path) { return path.empty() ? "not written (-o FILE.png writes it)" : path; }
 
-// One rank of `mpirun -np N vkrt ...`: rank r renders part r+1 of N on the GPU its local rank picks
-// (when several exist and --gpu is not given), rank 0 gathers the rows in rank order, which is the
-// image's row order, and writes the image a single process would have written. An error on any
-// rank is printed with the rank and ends every rank (MPI_Abort), so the job never hangs.
-int runRenderAsMpiRank(CommandLine& cl) {
-    const auto start = std::chrono::steady_clock::now();
+// One rank of `mpirun -np N vkrt ...`: `body` runs with the job's rank, size and local rank. An
+// error on any rank is printed with the rank and ends every rank (MPI_Abort), so the job never hangs.
+template <class Body>
+int asMpiRank(Body body) {
     const mpi::Api& api = mpiApi();
     int rank = 0, size = 1, localRank = 0;
     std::string error;
     if (!api.init(&rank, &size, &localRank, error)) throw std::runtime_error(error);
     try {
+        body(api, rank, size, localRank);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "vkrt: error (MPI rank %d of %d): %s\n", rank, size, e.what());
+        std::fflush(stderr);
+        api.abortAll(1);
+    }
+    api.finalize();
+    return 0;
+}
+
+// Each rank on its own GPU, by local rank, when several exist and --gpu is not given.
+void pickGpuByLocalRank(CommandLine& cl, int localRank) {
+    if (cl.gpuIndex >= 0 || cl.device == DeviceChoice::Cpu) return;
+    std::vector<int> usable;
+    for (const DeviceInfo& d : listDevices())
+        if (d.usable) usable.push_back(d.index);
+    if (usable.size() > 1) cl.gpuIndex = usable[static_cast<std::size_t>(localRank) % usable.size()];
+}
+
+// Rank r renders part r + 1 of N; rank 0 gathers the rows in rank order, which is the image's row
+// order, and writes the image a single process would have written.
+int runRenderAsMpiRank(CommandLine& cl) {
+    const auto start = std::chrono::steady_clock::now();
+    return asMpiRank([&](const mpi::Api& api, int rank, int size, int localRank) {
+        std::string error;
         if (cl.parts > 0) throw std::runtime_error("--part and mpirun both split the image: use one of them");
         cl.part = rank + 1;
         cl.parts = size;
@@ -64,12 +88,7 @@ int runRenderAsMpiRank(CommandLine& cl) {
                                      "-row image would leave some ranks without a row");
         cl.render.rows = partRows(cl.render.height, cl.part, cl.parts);
         if (rank != 0) cl.render.quiet = true;
-        if (cl.gpuIndex < 0 && cl.device != DeviceChoice::Cpu) {
-            std::vector<int> usable;
-            for (const DeviceInfo& d : listDevices())
-                if (d.usable) usable.push_back(d.index);
-            if (usable.size() > 1) cl.gpuIndex = usable[static_cast<std::size_t>(localRank) % usable.size()];
-        }
+        pickGpuByLocalRank(cl, localRank);
         checkOutputBeforeRendering(cl.outputPath, cl.scenePath);
         checkImageFitsInMemory(cl.render.width, cl.render.height);
         DeviceRender result = renderScene(cl);
@@ -87,13 +106,7 @@ int runRenderAsMpiRank(CommandLine& cl) {
                              cl.scenePath.c_str(), cl.render.width, cl.render.height, cl.render.samplesPerPixel, size,
                              result.device.c_str(), result.seconds, secondsSince(start), cl.outputPath.c_str());
         }
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "vkrt: error (MPI rank %d of %d): %s\n", rank, size, e.what());
-        std::fflush(stderr);
-        api.abortAll(1);
-    }
-    api.finalize();
-    return 0;
+    });
 }
 
 int runRender(CommandLine& cl) {
@@ -157,12 +170,13 @@ int runStatisticalCompare(CommandLine& cl) {
     return z.pass ? 0 : kExitStatisticallyDifferent;
 }
 
-int runSweep(CommandLine& cl) {
+int runSweep(CommandLine& cl, study::WorkSharing* sharing = nullptr) {
     const Scene scene = loadWithWarnings(cl);
     study::SweepOptions options = cl.sweep;
     options.render = cl.render;
     options.gpu = gpuOptions(cl);
-    const study::SweepResult result = study::runSweep(options, scene, std::cerr);
+    const study::SweepResult result = study::runSweep(options, scene, std::cerr, sharing);
+    if (!result.leader) return 0;
     if (!result.validationMessages.empty()) std::cerr << "warning: Vulkan validation messages:\n" << result.validationMessages;
     if (!cl.render.quiet)
         std::fprintf(stderr, "sweep: %zu renders -> %s, %s, %s, %s\n", result.rows.size(), result.csv.c_str(),
@@ -242,7 +256,15 @@ int runVkrt(int argc, const char* const* argv) {
         switch (cl.command) {
         case Command::ListDevices: return runListDevices();
         case Command::Compare: return runCompare(cl);
-        case Command::Sweep: return runSweep(cl);
+        case Command::Sweep:
+            if (!launchedAsMpiRank()) return runSweep(cl);
+            // The renders spread over the ranks, rank 0 writing the files (shared_renders.h).
+            return asMpiRank([&](const mpi::Api& api, int rank, int size, int localRank) {
+                if (rank != 0) cl.render.quiet = true;
+                pickGpuByLocalRank(cl, localRank);
+                MpiWorkSharing sharing(api, rank, size);
+                runSweep(cl, &sharing);
+            });
         case Command::Convert: return runConvert(cl);
         case Command::Merge: return runMerge(cl);
         case Command::Render: return runRender(cl);

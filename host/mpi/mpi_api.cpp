@@ -35,26 +35,43 @@ bool init(int* rank, int* size, int* localRank, std::string& error) {
     return true;
 }
 
-// Counts travel as MPI_LONG_LONG; the floats in chunks below 2^31 (MPI's int counts) are not needed
-// at these image sizes, so one Gatherv with int counts, checked.
-bool gather(const float* mine, long long count, float* all, const long long* counts, std::string& error) {
-    int rank = 0, size = 0;
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+// Counts travel as MPI_LONG_LONG; chunks below 2^31 (MPI's int counts) are not needed at these
+// image sizes, so one Gatherv with int counts, checked.
+bool gatherOf(MPI_Datatype type, const void* mine, long long count, void* all, const long long* counts, std::string& error) {
+    int size = 0;
     MPI_Comm_size(MPI_COMM_WORLD, &size);
     std::vector<int> sizes(static_cast<std::size_t>(size)), offsets(static_cast<std::size_t>(size));
     long long offset = 0;
     for (int r = 0; r < size; ++r) {
         if (counts[r] > 0x7fffffffLL || offset > 0x7fffffffLL) {
-            error = "an image part of more than 2^31 floats (MPI's int counts)";
+            error = "a gather of more than 2^31 values (MPI's int counts)";
             return false;
         }
         sizes[static_cast<std::size_t>(r)] = static_cast<int>(counts[r]);
         offsets[static_cast<std::size_t>(r)] = static_cast<int>(offset);
         offset += counts[r];
     }
-    const int code = MPI_Gatherv(mine, static_cast<int>(count), MPI_FLOAT, all, sizes.data(), offsets.data(), MPI_FLOAT, 0,
+    const int code = MPI_Gatherv(mine, static_cast<int>(count), type, all, sizes.data(), offsets.data(), type, 0,
                                  MPI_COMM_WORLD);
     if (code != MPI_SUCCESS) error = "MPI_Gatherv: " + errorText(code);
+    return code == MPI_SUCCESS;
+}
+
+bool gather(const float* mine, long long count, float* all, const long long* counts, std::string& error) {
+    return gatherOf(MPI_FLOAT, mine, count, all, counts, error);
+}
+
+bool gatherBytes(const void* mine, long long bytes, void* all, const long long* counts, std::string& error) {
+    return gatherOf(MPI_BYTE, mine, bytes, all, counts, error);
+}
+
+bool broadcast(void* data, long long bytes, std::string& error) {
+    if (bytes > 0x7fffffffLL) {
+        error = "a broadcast of more than 2^31 bytes (MPI's int counts)";
+        return false;
+    }
+    const int code = MPI_Bcast(data, static_cast<int>(bytes), MPI_BYTE, 0, MPI_COMM_WORLD);
+    if (code != MPI_SUCCESS) error = "MPI_Bcast: " + errorText(code);
     return code == MPI_SUCCESS;
 }
 
@@ -72,7 +89,7 @@ void finalize() {
     if (!finalised) MPI_Finalize();
 }
 
-constexpr Api kApi{kApiVersion, init, gather, allCounts, abortAll, finalize};
+constexpr Api kApi{kApiVersion, init, gather, allCounts, broadcast, gatherBytes, abortAll, finalize};
 
 }  // namespace
 }  // namespace vkrt::mpi

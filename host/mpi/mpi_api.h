@@ -9,7 +9,7 @@
 
 namespace vkrt::mpi {
 
-inline constexpr int kApiVersion = 1;
+inline constexpr int kApiVersion = 2;
 
 struct Api {
     int version;
@@ -20,6 +20,10 @@ struct Api {
     bool (*gather)(const float* mine, long long count, float* all, const long long* counts, std::string& error);
     // Every rank's count of floats, on every rank (MPI_Allgather).
     bool (*allCounts)(long long mine, long long* counts, std::string& error);
+    // Rank 0's `bytes` bytes at `data` to every rank (MPI_Bcast).
+    bool (*broadcast)(void* data, long long bytes, std::string& error);
+    // Rank 0 receives every rank's bytes in rank order (MPI_Gatherv); `all` is read on rank 0 only.
+    bool (*gatherBytes)(const void* mine, long long bytes, void* all, const long long* counts, std::string& error);
     // Ends every rank of the job with this exit code (MPI_Abort): one rank's error never leaves
     // the others waiting.
     void (*abortAll)(int code);

@@ -71,7 +71,7 @@ std::string referenceKey(const std::string& sceneText, const ReferenceSpec& spec
 
 Reference loadOrRenderReference(StudyRenderer& renderer, const PreparedScene& scene,
                                 const std::string& sceneText, const ReferenceSpec& spec,
-                                const std::filesystem::path& cacheDir, std::ostream& log) {
+                                const std::filesystem::path& cacheDir, std::ostream& log, const HalfRenderer& renderHalf) {
     if (spec.rpp < 2) throw std::invalid_argument("reference rpp must be at least 2 (two halves), not " + std::to_string(spec.rpp));
     Reference ref;
     ref.key = referenceKey(sceneText, spec);
@@ -120,10 +120,11 @@ Reference loadOrRenderReference(StudyRenderer& renderer, const PreparedScene& sc
     RenderOptions half = spec.options;
     half.sampler = spec.sampler;
     half.samplesPerPixel = spec.rpp / 2;
+    const HalfRenderer render = renderHalf ? renderHalf : [&](const RenderOptions& o) { return renderer.render(spec.device, scene, o); };
     half.seed = kReferenceSeedA;
-    const TimedRender a = renderer.render(spec.device, scene, half);
+    const TimedRender a = render(half);
     half.seed = kReferenceSeedB;
-    const TimedRender b = renderer.render(spec.device, scene, half);
+    const TimedRender b = render(half);
     ref.seconds = a.seconds + b.seconds;
 
     ref.image = Image(a.image.width, a.image.height);

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <iosfwd>
 #include <string>
 
@@ -51,9 +52,14 @@ std::filesystem::path defaultCacheDir();
 // The cache key: XXH64 of the scene text and a canonical description of spec.
 std::string referenceKey(const std::string& sceneText, const ReferenceSpec& spec);
 
+// Renders one of the reference's two halves (the options say its seed and rpp); by default
+// renderer.render on spec.device, and under MPI shared among the ranks (sweep.cpp).
+using HalfRenderer = std::function<TimedRender(const RenderOptions& half)>;
+
 // Loads the cached reference, or renders (and caches) it; progress lines go to `log`.
 Reference loadOrRenderReference(StudyRenderer& renderer, const PreparedScene& scene,
                                 const std::string& sceneText, const ReferenceSpec& spec,
-                                const std::filesystem::path& cacheDir, std::ostream& log);
+                                const std::filesystem::path& cacheDir, std::ostream& log,
+                                const HalfRenderer& renderHalf = {});
 
 }  // namespace vkrt::study

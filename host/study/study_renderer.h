@@ -5,7 +5,9 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
+#include <tuple>
 
 #include "gpu_renderer.h"
 #include "image.h"
@@ -27,7 +29,7 @@ struct PreparedScene {
     const Scene* scene = nullptr;
     SceneAccel cpu;                  // prepareCpuScene: also what region masks probe
     std::optional<GpuSceneData> gpu; // GpuRenderer::prepare, when a GPU renderer is open
-    std::uint64_t id = 0;            // unique per prepare: the GPU warm-up is once per prepared scene
+    std::uint64_t id = 0;            // unique per prepare: GPU warm-ups are per prepared scene
 };
 
 struct TimedRender {
@@ -49,14 +51,15 @@ public:
     PreparedScene prepare(const Scene& scene) const;
 
     // One render. `sampleVariance` (CPU only, else std::invalid_argument): the per-pixel sample
-    // variance (cpu_renderer.h). GPU renders are timed after the kernel variant for the scene has
-    // been created once (an untimed 1-rpp warm-up), so pipeline compilation is not counted.
+    // variance (cpu_renderer.h). GPU renders are timed after the kernel variant for the scene, sampler
+    // and rpp has been created (an untimed one-row warm-up), so pipeline compilation is not counted.
     TimedRender render(Device device, const PreparedScene& scene, const RenderOptions& options,
                        Image* sampleVariance = nullptr);
 
 private:
     std::unique_ptr<GpuRenderer> gpu_;
-    std::uint64_t warmedScene_ = 0;  // PreparedScene::id of the last warm-up
+    // (PreparedScene::id, sampler, rpp) of the GPU renders warmed up so far.
+    std::set<std::tuple<std::uint64_t, std::uint32_t, int>> warmed_;
 };
 
 }  // namespace vkrt::study

@@ -9,6 +9,7 @@
 #include <string>
 #include <system_error>
 
+#include "shared_renders.h"
 #include "sweep_csv.h"
 #include "sweep_report.h"
 #include "vulkan_errors.h"
@@ -44,6 +45,19 @@ std::unique_ptr<StudyRenderer> openRenderer(const SweepOptions& options, std::ve
     }
 }
 
+// Every rank must sweep what rank 0 sweeps: a rank without the GPU rank 0 has would render other settings.
+void checkSameDevices(WorkSharing& ranks, const std::vector<Device>& devices, Device referenceDevice) {
+    if (ranks.size() == 1) return;
+    std::vector<std::byte> mine;
+    for (Device d : devices) mine.push_back(static_cast<std::byte>(d));
+    mine.push_back(static_cast<std::byte>(referenceDevice));
+    std::vector<std::byte> leader = mine;
+    ranks.broadcast(leader);
+    if (leader != mine)
+        throw std::runtime_error("sweep: this rank's devices differ from rank 0's (a GPU missing on this machine?); "
+                                 "every rank must sweep the same devices");
+}
+
 std::string joined(const std::vector<int>& values) {
     std::string s;
     for (int v : values) {
@@ -77,20 +91,18 @@ void validateSweepOptions(const SweepOptions& o) {
     }
 }
 
-SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostream& log) {
+SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostream& log, WorkSharing* sharing) {
     validateSweepOptions(options);
+    NoSharing alone;
+    WorkSharing& ranks = sharing ? *sharing : alone;
     SweepResult result;
     result.devices = options.devices;
     std::optional<Device> referenceDevice = options.referenceDevice;
     if (!referenceDevice) referenceDevice = uses(options.devices, Device::Gpu) ? Device::Gpu : Device::Cpu;
     std::unique_ptr<StudyRenderer> renderer = openRenderer(options, result.devices, referenceDevice, log);
+    checkSameDevices(ranks, result.devices, *referenceDevice);
 
-    const std::string sceneText = readText(options.scenePath);
     const PreparedScene prepared = renderer->prepare(scene);  // once: every render below reuses it
-    std::error_code ec;
-    std::filesystem::create_directories(options.outDir, ec);
-    if (ec) throw std::runtime_error("sweep: cannot create the output directory " + options.outDir.string() + ": " + ec.message());
-
     ReferenceSpec spec;
     spec.options = options.render;
     spec.options.quiet = true;
@@ -99,32 +111,65 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
     spec.device = *referenceDevice;
     const Camera& camera = scene.cameras.at(options.render.camera);
     spec.lens = glm::vec2(camera.focusDistance, camera.aperture);
-    const std::filesystem::path cacheDir = options.cacheDir.empty() ? defaultCacheDir() : options.cacheDir;
-    result.reference = loadOrRenderReference(*renderer, prepared, sceneText, spec, cacheDir, log);
-    const Reference& ref = result.reference;
 
-    // Interleaved (seed, rpp, sampler, device) order: the machine's speed drifts, and interleaving
-    // spreads the drift over every setting instead of biasing whichever ran last.
+    // The (seed, rpp, sampler, device) settings in interleaved order: the machine's speed drifts,
+    // and interleaving spreads the drift over every setting instead of biasing whichever ran last.
+    struct Setting {
+        int seedIndex, rpp;
+        SamplerKind sampler;
+        Device device;
+    };
+    std::vector<Setting> settings;
     for (int s = 0; s < options.seeds; ++s)
         for (int rpp : options.rpps)
             for (SamplerKind sampler : options.samplers)
-                for (Device device : result.devices) {
-                    RenderOptions o = options.render;
-                    o.quiet = true;
-                    o.samplesPerPixel = rpp;
-                    o.sampler = sampler;
-                    o.seed = options.render.seed + static_cast<std::uint32_t>(s);
-                    const TimedRender r = renderer->render(device, prepared, o);
-                    SweepRow row{device, sampler, rpp, o.seed, r.seconds, measureError(r.image, ref.image, ref.masks)};
-                    result.rows.push_back(row);
-                    if (!options.render.quiet) {
-                        char line[160];
-                        std::snprintf(line, sizeof line, "%s %-8s %5d rpp seed %u: %8.3f s  rmse %.3e\n",
-                                      deviceName(device).c_str(), samplerName(sampler).c_str(), rpp, o.seed, r.seconds,
-                                      row.error.rmse);
-                        log << line << std::flush;
-                    }
-                }
+                for (Device device : result.devices) settings.push_back({s, rpp, sampler, device});
+    const auto settingOptions = [&](const Setting& setting) {
+        RenderOptions o = options.render;
+        o.quiet = true;
+        o.samplesPerPixel = setting.rpp;
+        o.sampler = setting.sampler;
+        o.seed = options.render.seed + static_cast<std::uint32_t>(setting.seedIndex);
+        return o;
+    };
+    const auto renderSetting = [&](std::size_t i) { return renderer->render(settings[i].device, prepared, settingOptions(settings[i])); };
+
+    if (ranks.rank() != 0) {  // a helper: bands of the reference, then its share of the settings
+        RenderOptions half = spec.options;
+        half.sampler = spec.sampler;
+        serveHalves(ranks, *renderer, prepared, spec.device, half);
+        renderShared(ranks, settings.size(), renderSetting, {});
+        result.leader = false;
+        return result;
+    }
+
+    const std::string sceneText = readText(options.scenePath);
+    std::error_code ec;
+    std::filesystem::create_directories(options.outDir, ec);
+    if (ec) throw std::runtime_error("sweep: cannot create the output directory " + options.outDir.string() + ": " + ec.message());
+
+    const std::filesystem::path cacheDir = options.cacheDir.empty() ? defaultCacheDir() : options.cacheDir;
+    {
+        // The helpers render bands of the halves while rank 0 makes the reference; they are told
+        // when it is done even when it failed here (the error then ends the job).
+        const HalfRenderer shared = ranks.size() > 1 ? sharedHalfRenderer(ranks, *renderer, prepared, spec.device) : HalfRenderer{};
+        result.reference = loadOrRenderReference(*renderer, prepared, sceneText, spec, cacheDir, log, shared);
+        if (ranks.size() > 1) endHalves(ranks);
+    }
+    const Reference& ref = result.reference;
+
+    renderShared(ranks, settings.size(), renderSetting, [&](std::size_t i, const TimedRender& r) {
+        const Setting& setting = settings[i];
+        const RenderOptions o = settingOptions(setting);
+        SweepRow row{setting.device, setting.sampler, setting.rpp, o.seed, r.seconds, measureError(r.image, ref.image, ref.masks)};
+        result.rows.push_back(row);
+        if (!options.render.quiet) {
+            char line[160];
+            std::snprintf(line, sizeof line, "%s %-8s %5d rpp seed %u: %8.3f s  rmse %.3e\n", deviceName(setting.device).c_str(),
+                          samplerName(setting.sampler).c_str(), setting.rpp, o.seed, r.seconds, row.error.rmse);
+            log << line << std::flush;
+        }
+    });
 
     result.csv = options.outDir / "sweep.csv";
     writeSweepCsv(result.rows, result.csv);
@@ -133,15 +178,15 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
     SweepReportInput report;
     report.scenePath = options.scenePath.string();
     const RenderOptions& r = options.render;
-    std::ostringstream settings;
-    settings << r.width << "x" << r.height << ", max depth " << r.maxDepth << ", " << r.lightSamples
+    std::ostringstream settingsLine;
+    settingsLine << r.width << "x" << r.height << ", max depth " << r.maxDepth << ", " << r.lightSamples
              << " light sample(s) and " << r.glossSamples << " gloss sample(s) per pixel sample; rpp "
              << joined(options.rpps) << "; " << options.seeds << " seed(s) from " << r.seed << "; devices:";
     for (Device d : result.devices)
-        settings << " " << (d == Device::Gpu ? "gpu (" + renderer->gpuDeviceName() + ")" : std::string("cpu"));
-    settings << ". Time = wall time of one render call (scene loaded and BVH built beforehand; GPU kernel "
+        settingsLine << " " << (d == Device::Gpu ? "gpu (" + renderer->gpuDeviceName() + ")" : std::string("cpu"));
+    settingsLine << ". Time = wall time of one render call (scene loaded and BVH built beforehand; GPU kernel "
                 "compiled beforehand).";
-    report.settings = settings.str();
+    report.settings = settingsLine.str();
     std::ostringstream refLine;
     char seconds[32];
     std::snprintf(seconds, sizeof seconds, "%.1f", ref.seconds);

@@ -15,6 +15,7 @@
 #include "render_options.h"
 #include "scene.h"
 #include "sweep_types.h"
+#include "work_sharing.h"
 
 namespace vkrt::study {
 
@@ -44,6 +45,7 @@ struct SweepResult {
     std::filesystem::path csv, report;
     PlotFiles plots;
     std::string validationMessages;  // Vulkan validation messages (with gpu.validation), empty when none
+    bool leader = true;              // false on MPI ranks other than 0, which write nothing
 };
 
 // Throws std::invalid_argument for bad options (naming the option and value).
@@ -53,6 +55,10 @@ void validateSweepOptions(const SweepOptions& options);
 // Progress goes to `log`. Without a Vulkan device, a sweep that asked for both devices continues
 // on the CPU (with a note); one that asked for the GPU only throws VulkanUnavailable.
 // Throws std::runtime_error when gnuplot fails (sweep.csv and report.md are written by then).
-SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostream& log);
+//
+// With `sharing` (an MPI job, work_sharing.h) the renders are spread over the ranks (shared_renders.h)
+// and rank 0 writes everything; the other ranks return a result with no rows and leader false. Every
+// rank must open the same devices (else std::runtime_error on the rank that differs).
+SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostream& log, WorkSharing* sharing = nullptr);
 
 }  // namespace vkrt::study
