@@ -1,10 +1,12 @@
 #include "file_watcher.h"
 
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <stdexcept>
 
 #include <poll.h>
+#include <sys/eventfd.h>
 #include <sys/inotify.h>
 #include <unistd.h>
 
@@ -31,11 +33,25 @@ std::filesystem::path watchedPath(const std::filesystem::path& path) {
     return std::filesystem::absolute(path).lexically_normal();
 }
 
-FileWatcher::FileWatcher() : fd_(::inotify_init1(IN_NONBLOCK | IN_CLOEXEC)) {
-    if (fd_ < 0) throw std::runtime_error(std::string("cannot watch files (inotify_init1: ") + std::strerror(errno) + ")");
+FileWatcher::FileWatcher()
+    : fd_(::inotify_init1(IN_NONBLOCK | IN_CLOEXEC)), wakeFd_(::eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC)) {
+    if (fd_ < 0 || wakeFd_ < 0) {
+        const std::string why = std::strerror(errno);
+        if (fd_ >= 0) ::close(fd_);
+        if (wakeFd_ >= 0) ::close(wakeFd_);
+        throw std::runtime_error("cannot watch files (inotify: " + why + ")");
+    }
 }
 
-FileWatcher::~FileWatcher() { ::close(fd_); }
+FileWatcher::~FileWatcher() {
+    ::close(fd_);
+    ::close(wakeFd_);
+}
+
+void FileWatcher::wake() {
+    const std::uint64_t one = 1;
+    [[maybe_unused]] const ssize_t n = ::write(wakeFd_, &one, sizeof one);  // the counter cannot overflow here
+}
 
 void FileWatcher::watch(const std::vector<std::filesystem::path>& files, const std::vector<std::filesystem::path>& trees,
                         const std::set<std::string>& treeExtensions) {
@@ -100,16 +116,21 @@ bool FileWatcher::drain(FileChanges& changes, bool othersCount) {
     return counted;
 }
 
-std::optional<FileChanges> FileWatcher::wait(const std::atomic<bool>* stop, std::chrono::milliseconds quiet, bool othersCount) {
+std::optional<FileChanges> FileWatcher::wait(const std::function<bool()>& stop, std::chrono::milliseconds quiet, bool othersCount) {
     FileChanges changes;
     bool seen = false;
     for (;;) {
-        if (stop && stop->load()) return std::nullopt;
-        pollfd p{fd_, POLLIN, 0};
+        // Stopped half-way through a save's events: what was seen is returned (the rest stays queued).
+        if (stop && stop()) return seen ? std::optional<FileChanges>(changes) : std::nullopt;
+        pollfd p[2] = {{fd_, POLLIN, 0}, {wakeFd_, POLLIN, 0}};
         const int timeout = seen ? static_cast<int>(quiet.count()) : 100;
-        const int ready = ::poll(&p, 1, timeout);
+        const int ready = ::poll(p, 2, timeout);
         if (ready < 0 && errno != EINTR) throw std::runtime_error(std::string("cannot watch files (poll: ") + std::strerror(errno) + ")");
-        if (ready > 0) {
+        if (ready > 0 && (p[1].revents & POLLIN)) {
+            std::uint64_t count = 0;
+            [[maybe_unused]] const ssize_t n = ::read(wakeFd_, &count, sizeof count);
+        }
+        if (ready > 0 && (p[0].revents & POLLIN)) {
             if (drain(changes, othersCount)) seen = true;
         } else if (ready == 0 && seen) {
             return changes;  // quiet for `quiet`: the save is complete

@@ -3,9 +3,9 @@
 // the file's inode, and a watch on the old inode would never fire again.
 #pragma once
 
-#include <atomic>
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <optional>
 #include <set>
@@ -41,9 +41,12 @@ public:
 
     // Blocks until something watched changes (or, with `othersCount`, any file in a watched
     // file's folder), then goes on collecting until nothing has changed for `quiet` (a save is
-    // often several events: write, rename, attributes), and returns what changed. Returns nullopt
-    // as soon as *stop becomes true (checked every 100 ms).
-    std::optional<FileChanges> wait(const std::atomic<bool>* stop, std::chrono::milliseconds quiet, bool othersCount);
+    // often several events: write, rename, attributes), and returns what changed. As soon as stop()
+    // is true (asked every 100 ms, and at once after wake()) returns what it has seen so far, or
+    // nullopt when nothing; later events stay queued for the next wait().
+    std::optional<FileChanges> wait(const std::function<bool()>& stop, std::chrono::milliseconds quiet, bool othersCount);
+    // From another thread: makes a wait() ask stop() now.
+    void wake();
 
     std::size_t folderCount() const { return folders_.size(); }
 
@@ -52,6 +55,7 @@ private:
     bool drain(FileChanges& changes, bool othersCount);
 
     int fd_ = -1;
+    int wakeFd_ = -1;  // an eventfd: wake() writes it
     std::map<int, std::filesystem::path> folders_;  // watch descriptor -> folder
     std::set<std::filesystem::path> files_;
     std::vector<std::filesystem::path> trees_;

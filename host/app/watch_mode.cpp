@@ -1,5 +1,6 @@
 #include "watch_mode.h"
 
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -8,6 +9,7 @@
 #include <iostream>
 #include <optional>
 #include <set>
+#include <thread>
 #include <string>
 #include <vector>
 
@@ -80,13 +82,15 @@ public:
 
     int run() {
         bool reloadScene = true, reloadKernel = false;
+        const auto interrupted = [this] { return cl_.render.cancel && cl_.render.cancel->load(); };
         for (int round = 1;; ++round) {
-            renderOnce(round, reloadScene, reloadKernel);
+            // Changes seen while rendering (which stopped the render) start the next round at once.
+            std::optional<FileChanges> changes = renderOnce(round, reloadScene, reloadKernel);
             if (round == 1 && !cl_.render.quiet)
                 std::fprintf(stderr, "vkrt: watching %zu folder(s) for changes (Ctrl-C stops)\n", watcher_.folderCount());
             // After a scene that did not load, a file appearing beside it may be what it was
             // missing (a mesh not yet copied): any change in the watched folders renders again.
-            const std::optional<FileChanges> changes = watcher_.wait(cl_.render.cancel, kQuiet, !loaded_);
+            if (!changes) changes = watcher_.wait(interrupted, kQuiet, !loaded_);
             if (!changes) {
                 std::cerr << "vkrt: watch stopped\n";
                 return 0;
@@ -102,9 +106,10 @@ public:
     }
 
 private:
-    // One render: reload what changed, render, write. Prints the times, or the error; true when the
-    // image was written. The flags are cleared when their work succeeded.
-    bool renderOnce(int round, bool& reloadScene, bool& reloadKernel) {
+    // One render: reload what changed, render, write. Prints the times, or the error. The flags are
+    // cleared when their work succeeded. A change while it renders stops the render (its image would
+    // be stale) and is returned; Ctrl-C throws RenderCancelled.
+    std::optional<FileChanges> renderOnce(int round, bool& reloadScene, bool& reloadKernel) {
         const auto start = Clock::now();
         std::string steps;
         char text[64];
@@ -134,19 +139,58 @@ private:
             ProgressiveOutput passes(cl_.outputPath, cl_.render.samplesPerPixel, cl_.render.quiet, "  ");
             RenderOptions options = cl_.render;
             if (options.checkpoints > 1) options.onCheckpoint = &passes;
-            const DeviceRender result = render(options);
-            writeImage(result.image, cl_.outputPath);
+            std::optional<FileChanges> during;
+            std::optional<DeviceRender> result = renderUnlessChanged(options, during);
+            if (!result) {
+                std::fprintf(stderr, "[%s] render %d: stopped after %.3fs: an input changed\n", clockTime().c_str(), round,
+                             secondsSince(start));
+                return during;
+            }
+            writeImage(result->image, cl_.outputPath);
             if (!cl_.render.quiet)
                 std::fprintf(stderr, "[%s] render %d: %dx%d, %d rpp on %s: %spipeline %.3fs, render %.3fs, total %.3fs -> %s\n",
                              clockTime().c_str(), round, cl_.render.width, cl_.render.height, cl_.render.samplesPerPixel,
-                             result.device.c_str(), steps.c_str(), result.pipelineSeconds, result.seconds,
+                             result->device.c_str(), steps.c_str(), result->pipelineSeconds, result->seconds,
                              secondsSince(start), cl_.outputPath.c_str());
-            return true;
+            return during;
         } catch (const RenderCancelled&) {
             throw;
         } catch (const std::exception& e) {
             std::fprintf(stderr, "[%s] render %d: error: %s\n", clockTime().c_str(), round, e.what());
-            return false;
+            return std::nullopt;
+        }
+    }
+
+    // Renders while a second thread waits for changes: one stops the render (nullopt, the changes
+    // in `during`). Ctrl-C stops it too and throws RenderCancelled. A change that comes as the
+    // render ends is returned in `during` with the image.
+    std::optional<DeviceRender> renderUnlessChanged(RenderOptions options, std::optional<FileChanges>& during) {
+        std::atomic<bool> stopRender{false}, rendered{false};
+        const std::atomic<bool>* interrupt = cl_.render.cancel;
+        options.cancel = &stopRender;
+        std::thread sentinel([&] {
+            try {
+                during = watcher_.wait([&] { return rendered.load() || (interrupt && interrupt->load()); }, kQuiet, false);
+            } catch (...) {  // the watcher failed: the render goes on, and the next wait() reports it
+            }
+            stopRender = true;
+        });
+        const auto finish = [&] {
+            rendered = true;
+            watcher_.wake();
+            sentinel.join();
+        };
+        try {
+            DeviceRender result = render(options);
+            finish();
+            return result;
+        } catch (const RenderCancelled&) {
+            finish();
+            if (interrupt && interrupt->load()) throw;
+            return std::nullopt;
+        } catch (...) {
+            finish();
+            throw;
         }
     }
 

@@ -118,21 +118,28 @@ Image renderCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions
         std::uint64_t nonFinite = 0;
         try {
             for (;;) {
-                if (stop.load()) break;
+                // The cancel flag first: a worker that stopped mid-tile for it comes back here.
                 if (options.cancel && options.cancel->load()) {
                     std::lock_guard lock(mutex);
                     cancelled = true;
                     stop = true;
                     break;
                 }
+                if (stop.load()) break;
                 const int tile = nextTile.fetch_add(1);
                 if (tile >= tileCount) break;
                 const int x0 = (tile % tilesX) * kTileSize, y0 = rows.x + (tile / tilesX) * kTileSize;
                 const int x1 = std::min(x0 + kTileSize, options.width), y1 = std::min(y0 + kTileSize, rows.y);
-                for (int j = y0; j < y1; ++j)
-                    for (int i = x0; i < x1; ++i)
+                // Cancelling is also asked per pixel: a tile of a high-rpp render takes seconds.
+                for (int j = y0; j < y1 && !stop.load(std::memory_order_relaxed); ++j)
+                    for (int i = x0; i < x1; ++i) {
+                        if (options.cancel && options.cancel->load(std::memory_order_relaxed)) {
+                            stop = true;
+                            break;
+                        }
                         addPixelSamples(ctx, integrator, i, j, first, last, sums.at(i, j), nonFinite,
                                         sampleVariance ? &sampleVariance->at(i, j) : nullptr);
+                    }
                 progress.update((static_cast<double>(tilesDone.fetch_add(1) + 1) / tileCount * (last - first) + first) /
                                 ctx.samplesPerPixel);
             }

@@ -9,7 +9,9 @@
    the next good edit renders again;
 4. a reader polling the output all along never sees a partial file (every read is a whole PPM), and
    --progressive 2 writes a half-sampled pass before each image;
-5. Ctrl-C while waiting stops it with exit 0.
+5. Ctrl-C while waiting stops it with exit 0;
+6. an edit during a long render (CPU, 65,536 rpp, ~1.5 s) stops that render at once and renders the
+   edited scene, whose image is the one-shot bytes; Ctrl-C during a render exits 130.
 
     watch_mode.py VKRT SHADERS WORKDIR
 """
@@ -173,7 +175,53 @@ def main():
     if partial[0] or reads[0] < 100 or len(contents) < 5:
         fail("reader: %d reads, %d partial, %d distinct images" % (reads[0], partial[0], len(contents)), log)
     print("reader: %d reads of the output, %d distinct whole images, none partial" % (reads[0], len(contents)))
+    restart_on_change(vkrt, work)
     print("watch mode ok")
+
+
+LONG = """<scene bgColor="0.1 0.1 0.1"><camera><position>0 0 3</position><viewDir>0 0 -1</viewDir></camera>
+<light type="point"><position>2 3 4</position><intensity>1 1 1</intensity></light>
+<shader name="g" type="Lambertian"><diffuse>COLOUR</diffuse></shader>
+<shape name="b" type="sphere"><shader ref="g"/><center>0 0 0</center><radius>0.5</radius></shape></scene>
+"""
+
+
+def restart_on_change(vkrt, work):
+    scene, out = os.path.join(work, "long.xml"), os.path.join(work, "long.ppm")
+    # One 16x16 tile: one CPU thread, ~1.5 s here; the edit comes 0.4 s in.
+    size = ["-w", "16", "-h", "12", "-r", "65536", "--device", "cpu"]
+    write(scene, LONG.replace("COLOUR", "0.5 0.5 0.5"))
+    log = []
+    proc = subprocess.Popen([vkrt, "--watch", scene, *size, "-o", out], stderr=subprocess.PIPE, text=True)
+    threading.Thread(target=lambda: [log.append(line) for line in proc.stderr], daemon=True).start()
+
+    def wait_for(text):
+        deadline = time.time() + 60
+        while time.time() < deadline and not any(text in line for line in log):
+            if proc.poll() is not None:
+                fail("vkrt --watch exited (%d) waiting for '%s'" % (proc.returncode, text), log)
+            time.sleep(0.02)
+        if not any(text in line for line in log):
+            fail("no '%s' within 60 s" % text, log)
+
+    time.sleep(0.4)
+    edited = time.time()
+    write_by_rename(scene, LONG.replace("COLOUR", "0.9 0.2 0.1"))
+    wait_for("] render 1: stopped after")
+    stopped = time.time() - edited
+    expected = os.path.join(work, "long_expected.ppm")
+    subprocess.run([vkrt, scene, *size, "-q", "-o", expected], check=True)
+    wait_for("] render 2: 16x12")
+    if open(out, "rb").read() != open(expected, "rb").read():
+        fail("the render after the restart differs from a one-shot render of the edited scene", log)
+    print("an edit during a render stopped it %.2f s after the edit; the next render is the one-shot bytes" % stopped)
+    write_by_rename(scene, LONG.replace("COLOUR", "0.2 0.9 0.1"))
+    time.sleep(0.4)
+    proc.send_signal(signal.SIGINT)
+    code = proc.wait(timeout=30)
+    if code != 130 or not any("vkrt: interrupted" in line for line in log):
+        fail("Ctrl-C during a render: exit %d, expected 130 with 'vkrt: interrupted'" % code, log)
+    print("Ctrl-C during a render: exit 130")
 
 
 if __name__ == "__main__":
