@@ -11,8 +11,10 @@ packages=(
   libglm-dev libtinyobjloader-dev libopenimageio-dev openimageio-tools libpugixml-dev nlohmann-json3-dev libcli11-dev
   libpng-dev libxxhash-dev
   libopenmpi-dev openmpi-bin
+  libcpp-httplib-dev
   libgtest-dev libgmock-dev
   gnuplot-nox
+  chromium-headless-shell
   clang libclang-rt-14-dev
   python3
 )

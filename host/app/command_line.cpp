@@ -330,6 +330,11 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
         app.add_flag("--watch", cl.watch,
                      "Keep running: render again whenever the scene, a mesh or texture it reads, or (with --shader-dir, "
                      "on the GPU) a GLSL file changes; print each render's times or error; Ctrl-C stops");
+        app.add_option("--preview", cl.previewPort,
+                       "With --watch: serve a page on http://127.0.0.1:PORT/ showing the latest image and the last "
+                       "error, refreshed as renders finish (0: any free port, printed)")
+            ->check(CLI::Range(0, 65535))
+            ->default_str("none");
         app.add_option("--progressive", cl.render.checkpoints,
                        "Write the image N times as the samples come in (after 1/N, 2/N, ... of the rpp), so a long "
                        "render shows early; the last is the same image as without it")
@@ -356,6 +361,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
                                                          "': give -o part_" + std::to_string(cl.part) + ".exr");
             cl.render.rows = partRows(cl.render.height, cl.part, cl.parts);
         }
+        if (cl.previewPort >= 0 && !cl.watch)
+            throw CLI::ValidationError("--preview", "shows the renders of --watch: add --watch (vkrt --watch scene.xml --preview 8080)");
         if (cl.parts > 0 && (cl.watch || cl.render.checkpoints > 1))
             throw CLI::ValidationError(cl.watch ? "--watch" : "--progressive",
                                        "writes the whole image from one process; a --part is one process's share of it");

@@ -19,6 +19,7 @@
 #include "interrupt.h"
 #include "progressive_output.h"
 #include "render_steps.h"
+#include "watch_preview.h"
 
 namespace vkrt {
 
@@ -66,9 +67,27 @@ struct LoadedScene {
     std::optional<SceneAccel> cpu;
 };
 
+// A progressive pass: written to the output (ProgressiveOutput) and shown on the preview page.
+class WatchedPasses : public CheckpointSink {
+public:
+    WatchedPasses(ProgressiveOutput& file, WatchPreview& preview, int round, int rpp)
+        : file_(file), preview_(preview), round_(round), rpp_(rpp) {}
+    void checkpoint(const Image& soFar, int samplesDone) override {
+        file_.checkpoint(soFar, samplesDone);
+        preview_.image(soFar, "render " + std::to_string(round_) + ": " + std::to_string(samplesDone) + "/" +
+                                  std::to_string(rpp_) + " rpp so far (" + clockTime() + ")");
+    }
+
+private:
+    ProgressiveOutput& file_;
+    WatchPreview& preview_;
+    int round_, rpp_;
+};
+
 class Watcher {
 public:
-    explicit Watcher(CommandLine& cl) : cl_(cl) {
+    explicit Watcher(CommandLine& cl) : cl_(cl), preview_(cl.previewPort, cl.scenePath) {
+        if (preview_.enabled()) std::fprintf(stderr, "vkrt: preview on http://127.0.0.1:%d/\n", preview_.port());
         watcher_.ignore(cl.outputPath);
         watcher_.watch({cl.scenePath});
         gpu_ = openGpu(cl);
@@ -136,9 +155,11 @@ private:
                 loaded_ = std::move(loaded);
                 reloadScene = false;
             }
-            ProgressiveOutput passes(cl_.outputPath, cl_.render.samplesPerPixel, cl_.render.quiet, "  ");
+            ProgressiveOutput file(cl_.outputPath, cl_.render.samplesPerPixel, cl_.render.quiet, "  ");
+            WatchedPasses passes(file, preview_, round, cl_.render.samplesPerPixel);
             RenderOptions options = cl_.render;
             if (options.checkpoints > 1) options.onCheckpoint = &passes;
+            preview_.rendering("render " + std::to_string(round) + ": rendering (" + clockTime() + ")");
             std::optional<FileChanges> during;
             std::optional<DeviceRender> result = renderUnlessChanged(options, during);
             if (!result) {
@@ -147,16 +168,18 @@ private:
                 return during;
             }
             writeImage(result->image, cl_.outputPath);
-            if (!cl_.render.quiet)
-                std::fprintf(stderr, "[%s] render %d: %dx%d, %d rpp on %s: %spipeline %.3fs, render %.3fs, total %.3fs -> %s\n",
-                             clockTime().c_str(), round, cl_.render.width, cl_.render.height, cl_.render.samplesPerPixel,
-                             result->device.c_str(), steps.c_str(), result->pipelineSeconds, result->seconds,
-                             secondsSince(start), cl_.outputPath.c_str());
+            char line[512];
+            std::snprintf(line, sizeof line, "render %d: %dx%d, %d rpp on %s: %spipeline %.3fs, render %.3fs, total %.3fs -> %s",
+                          round, cl_.render.width, cl_.render.height, cl_.render.samplesPerPixel, result->device.c_str(),
+                          steps.c_str(), result->pipelineSeconds, result->seconds, secondsSince(start), cl_.outputPath.c_str());
+            if (!cl_.render.quiet) std::fprintf(stderr, "[%s] %s\n", clockTime().c_str(), line);
+            preview_.image(result->image, std::string(line) + " (" + clockTime() + ")");
             return during;
         } catch (const RenderCancelled&) {
             throw;
         } catch (const std::exception& e) {
             std::fprintf(stderr, "[%s] render %d: error: %s\n", clockTime().c_str(), round, e.what());
+            preview_.error("render " + std::to_string(round) + " (" + clockTime() + "): " + e.what());
             return std::nullopt;
         }
     }
@@ -208,6 +231,7 @@ private:
     }
 
     CommandLine& cl_;
+    WatchPreview preview_;
     FileWatcher watcher_;
     std::unique_ptr<GpuRenderer> gpu_;
     std::unique_ptr<LoadedScene> loaded_;

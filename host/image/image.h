@@ -35,6 +35,10 @@ inline std::uint8_t quantize8(float c) {
 using ImageAttributes = std::map<std::string, std::string>;
 void writeImage(const Image& image, const std::string& path, const ImageAttributes& attributes = {});
 
+// The image as the bytes of an 8-bit PNG file (quantize8), for the preview page; throws
+// std::runtime_error with libpng's reason.
+std::vector<std::uint8_t> encodePng(const Image& image);
+
 // Throws std::runtime_error naming the file when writeImage(path) is bound to fail: an unknown
 // extension, a folder that does not exist or cannot be written. Called before a render starts,
 // so a long render is not thrown away for a typo in -o.

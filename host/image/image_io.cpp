@@ -52,6 +52,13 @@ void writeImageFile(const Image& image, const std::string& path, const std::stri
 
 }  // namespace
 
+std::vector<std::uint8_t> encodePng(const Image& image) {
+    std::vector<std::uint8_t> rgb(image.pixels.size() * 3);
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = quantize8(image.pixels[i][c]);
+    return encodePng8(image.width, image.height, rgb);
+}
+
 void checkImageOutputPath(const std::string& path) {
     if (path.empty()) throw std::runtime_error("the output path is empty (-o FILE.png)");
     const std::string ext = lowerExtension(path);

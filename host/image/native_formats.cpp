@@ -21,6 +21,25 @@ void writePng8(const std::string& target, int width, int height, const std::vect
     }
 }
 
+std::vector<std::uint8_t> encodePng8(int width, int height, const std::vector<std::uint8_t>& rgb) {
+    png_image image{};
+    image.version = PNG_IMAGE_VERSION;
+    image.width = static_cast<png_uint_32>(width);
+    image.height = static_cast<png_uint_32>(height);
+    image.format = PNG_FORMAT_RGB;
+    png_alloc_size_t size = 0;  // first the size, then the bytes
+    if (png_image_write_to_memory(&image, nullptr, &size, 0, rgb.data(), 0, nullptr)) {
+        std::vector<std::uint8_t> bytes(size);
+        if (png_image_write_to_memory(&image, bytes.data(), &size, 0, rgb.data(), 0, nullptr)) {
+            bytes.resize(size);
+            return bytes;
+        }
+    }
+    const std::string reason = image.message;
+    png_image_free(&image);
+    throw std::runtime_error("PNG encoding failed: " + reason);
+}
+
 void writePpm8(const std::string& target, int width, int height, const std::vector<std::uint8_t>& rgb) {
     const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(target.c_str(), "wb"), std::fclose);
     if (!file) throw std::runtime_error("cannot open for writing");

@@ -12,6 +12,7 @@ namespace vkrt {
 // `rgb`: width * height * 3 bytes, row 0 at the top. Throw std::runtime_error with the library's
 // reason (the caller names the file).
 void writePng8(const std::string& target, int width, int height, const std::vector<std::uint8_t>& rgb);
+std::vector<std::uint8_t> encodePng8(int width, int height, const std::vector<std::uint8_t>& rgb);
 void writePpm8(const std::string& target, int width, int height, const std::vector<std::uint8_t>& rgb);
 
 }  // namespace vkrt

@@ -1,0 +1,35 @@
+#include "watch_preview.h"
+
+#include <nlohmann/json.hpp>
+
+namespace vkrt {
+
+WatchPreview::WatchPreview(int port, std::string scene) : scene_(std::move(scene)) {
+    if (port >= 0) server_ = std::make_unique<PreviewServer>(port);
+}
+
+void WatchPreview::rendering(const std::string& status) {
+    status_ = status;
+    publish(nullptr);
+}
+
+void WatchPreview::image(const Image& image, const std::string& status) {
+    status_ = status;
+    error_.clear();
+    ++images_;
+    publish(&image);
+}
+
+void WatchPreview::error(const std::string& message) {
+    status_ = "the last render failed; the image is the one before it";
+    error_ = message;
+    publish(nullptr);
+}
+
+void WatchPreview::publish(const Image* image) {
+    if (!server_) return;
+    const nlohmann::json status = {{"image", images_}, {"status", status_}, {"error", error_}, {"scene", scene_}};
+    server_->publish(image ? encodePng(*image) : std::vector<unsigned char>{}, status.dump());
+}
+
+}  // namespace vkrt
