@@ -25,6 +25,10 @@ layout(constant_id = SPEC_SAMPLES_PER_DISPATCH) const uint SAMPLES_PER_DISPATCH 
 layout(constant_id = SPEC_HAS_THIN_LENS) const bool HAS_THIN_LENS = true;  // camera.glsl
 layout(constant_id = SPEC_HAS_TRANSLUCENCY) const bool HAS_TRANSLUCENCY = true;  // integrator.glsl
 layout(constant_id = SPEC_HAS_MOTION) const bool HAS_MOTION = true;  // motion blur: render.comp, traverse.glsl, surface.glsl
+layout(constant_id = SPEC_HAS_DIFFUSE) const bool HAS_DIFFUSE = true;  // the path-traced Diffuse: integrator.glsl
+layout(constant_id = SPEC_HAS_EMITTERS) const bool HAS_EMITTERS = true;  // shape emitters: emitters.glsl
+layout(constant_id = SPEC_HAS_ENVIRONMENT) const bool HAS_ENVIRONMENT = true;  // environment.glsl
+layout(constant_id = SPEC_ESTIMATOR) const uint ESTIMATOR_KIND = ESTIMATOR_FROM_FRAME;  // device_host.h
 // 0: nothing in the scene pushes (feature_set.cpp), and the path stack's code is compiled out.
 const bool HAS_PATH_STACK = PATH_STACK_SIZE > 0u;
 const uint PATH_STACK_ENTRIES = HAS_PATH_STACK ? PATH_STACK_SIZE : 1u;  // an array needs one
@@ -41,6 +45,10 @@ layout(set = 0, binding = BINDING_SHADERS, rgba32ui) uniform readonly uimageBuff
 layout(set = 0, binding = BINDING_LIGHTS, rgba32ui) uniform readonly uimageBuffer lightTexels;
 layout(set = 0, binding = BINDING_TEXTURES, rgba32ui) uniform readonly uimageBuffer textureInfoTexels;
 layout(set = 0, binding = BINDING_TEXELS, r32ui) uniform readonly uimageBuffer textureTexels;
+layout(set = 0, binding = BINDING_EMITTERS, rgba32ui) uniform readonly uimageBuffer emitterTexels;
+layout(set = 0, binding = BINDING_EMITTER_TRIANGLES, rgba32ui) uniform readonly uimageBuffer emitterTriangleTexels;
+layout(set = 0, binding = BINDING_ENVIRONMENT, r32ui) uniform readonly uimageBuffer environmentTexels;
+layout(set = 0, binding = BINDING_ENVIRONMENT_CDF, r32ui) uniform readonly uimageBuffer environmentCdfTexels;
 // Uniform values (this block and the push constants) are read at VKRT_UNIFORM_INDEX, which is 0
 // but not a compile-time constant. lavapipe (Mesa 22.3, update_inline_shader_state) inlines
 // uniforms that feed branches or loop bounds into a copy of the kernel and recompiles it whenever
@@ -71,10 +79,16 @@ uint frameSeed() { return frame.scene.x; }
 uint frameMaxDepth() { return frame.scene.y; }
 uint frameLightCount() { return frame.scene.z; }
 uint frameTopLevelRoot() { return frame.scene.w; }
+uint frameEmitterCount() { return frame.lighting.x; }
+uint frameEstimator() { return frame.lighting.y; }
+uint frameEnvironmentFaceSize() { return frame.lighting.z; }
+uint frameEnvironmentCells() { return frame.lighting.w; }
 
 // The render's sampler (SAMPLER_*): the specialization constant, or for the general kernel the
 // frame's value. Every sample2D call takes it from here.
 uint samplerKind() { return SAMPLER_KIND == SAMPLER_FROM_FRAME ? frameSampler() : SAMPLER_KIND; }
+// The render's estimator (ESTIMATOR_*) the same way.
+uint estimatorKind() { return ESTIMATOR_KIND == ESTIMATOR_FROM_FRAME ? frameEstimator() : ESTIMATOR_KIND; }
 // The per-pixel sums, a texel buffer rather than an SSBO: on lavapipe an SSBO load at per-lane
 // addresses is a loop over the lanes, one scalar load (and cache miss) at a time, while imageLoad
 // is a gather (host/gpu/README.md, fact 3).
@@ -153,6 +167,30 @@ Light loadLight(uint i) {
     l.info = imageLoad(lightTexels, t + 4);
     return l;
 }
+
+EmitterRecord loadEmitter(uint i) {
+    int t = int(i * EMITTER_TEXELS);
+    EmitterRecord e;
+    e.radiance = uintBitsToFloat(imageLoad(emitterTexels, t));
+    e.sphere = uintBitsToFloat(imageLoad(emitterTexels, t + 1));
+    for (int r = 0; r < 3; ++r) {
+        e.toWorld[r] = uintBitsToFloat(imageLoad(emitterTexels, t + 2 + r));
+        e.toObject[r] = uintBitsToFloat(imageLoad(emitterTexels, t + 5 + r));
+    }
+    e.info = imageLoad(emitterTexels, t + 8);
+    return e;
+}
+
+EmitterTriangle loadEmitterTriangle(uint i) {
+    int t = int(i * EMITTER_TRIANGLE_TEXELS);
+    EmitterTriangle tri;
+    tri.corner = uintBitsToFloat(imageLoad(emitterTriangleTexels, t));
+    tri.edge1 = uintBitsToFloat(imageLoad(emitterTriangleTexels, t + 1));
+    tri.edge2 = uintBitsToFloat(imageLoad(emitterTriangleTexels, t + 2));
+    return tri;
+}
+// Only the cumulative share, for the binary search.
+float emitterTriangleShare(uint i) { return uintBitsToFloat(imageLoad(emitterTriangleTexels, int(i * EMITTER_TRIANGLE_TEXELS)).w); }
 
 TextureInfo loadTextureInfo(uint i) {
     TextureInfo t;

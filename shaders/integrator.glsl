@@ -1,12 +1,12 @@
-// The radiance of one camera sample: Whitted-style recursion with Cook's distribution effects,
-// written as a loop over an explicit stack of pending rays (GLSL has no recursion). Only
-// dielectrics (two branches) and depth-0 gloss samples push; everything else continues in place,
+// The radiance of one camera sample: Whitted-style recursion with Cook's distribution effects and
+// the course's path-traced Diffuse, written as a loop over an explicit stack of pending rays (GLSL
+// has no recursion). Only dielectrics (two branches) and depth-0 gloss samples push; everything
+// else (a mirror's reflection, a Diffuse bounce) continues in place,
 // so the stack never holds more than MAX_DEPTH + glossSamples entries (PATH_STACK_SIZE), and a
 // scene with neither has no stack at all (PATH_STACK_SIZE = 0).
 #ifndef VKRT_INTEGRATOR_GLSL
 #define VKRT_INTEGRATOR_GLSL
 
-const float FLT_MAX = 3.402823466e+38;
 const float MIN_RAY_WEIGHT = 1.0 / 1024.0;  // RENDERING.md §5: lighter rays are not traced
 
 struct PathRay {
@@ -14,6 +14,8 @@ struct PathRay {
     vec3 dir;      // unit length
     vec3 weight;
     uint depth;
+    float bouncePdf;  // > 0: a Diffuse bounce of this cosine density whose surface's light samples
+                      // already looked for emitters and the environment (the estimator weighs them)
 };
 
 // Children of the current hit: the first becomes the next ray, the rest wait on the stack.
@@ -29,9 +31,9 @@ uint g_pathTop = 0u;
 
 // Records a child ray; a hit emits at most two between flushes (emitReflection flushes after each
 // gloss sample).
-void emitRay(inout PathQueue q, vec3 origin, vec3 dir, vec3 weight, uint depth) {
+void emitRay(inout PathQueue q, vec3 origin, vec3 dir, vec3 weight, uint depth, float bouncePdf) {
     if (max(max(weight.x, weight.y), weight.z) < MIN_RAY_WEIGHT) return;
-    PathRay r = PathRay(origin, dir, weight, depth);
+    PathRay r = PathRay(origin, dir, weight, depth, bouncePdf);
     if (!q.hasNext) {
         q.next = r;
         q.hasNext = true;
@@ -78,7 +80,7 @@ void emitReflection(inout PathQueue q, PathRay ray, Surface s, vec3 N, float rou
     if (ray.depth >= MAX_DEPTH || ray.depth >= frameMaxDepth()) return;
     vec3 r = reflect(ray.dir, N);
     if (!HAS_GLOSS || roughness <= 0.0) {
-        if (dot(r, s.geomNormal) > 0.0) emitRay(q, offsetTowards(s, r), r, weight, ray.depth + 1u);
+        if (dot(r, s.geomNormal) > 0.0) emitRay(q, offsetTowards(s, r), r, weight, ray.depth + 1u, 0.0);
         return;
     }
     bool fanOut = ray.depth == 0u;  // gloss samples apply at primary hits only (RENDERING.md §5)
@@ -90,7 +92,7 @@ void emitReflection(inout PathQueue q, PathRay ray, Surface s, vec3 N, float rou
         vec2 u = fanOut ? sample2D(samplerKind(), frame.glossGrid, key.pixel, key.index * g + j, dimGloss(0u), key.seed)
                         : sample2D(samplerKind(), frame.pixelGrid, key.pixel, key.index, dimGloss(ray.depth), key.seed);
         vec3 rg = glossyDirection(r, roughness, u);
-        if (dot(rg, s.geomNormal) > 0.0) emitRay(q, offsetTowards(s, rg), rg, w, ray.depth + 1u);
+        if (dot(rg, s.geomNormal) > 0.0) emitRay(q, offsetTowards(s, rg), rg, w, ray.depth + 1u, 0.0);
         flushQueue(q);
     }
     if (j < g) markLoopCutOff();
@@ -127,7 +129,7 @@ void emitDielectric(inout PathQueue q, PathRay ray, Surface s, Material m, float
     }
     if (F > 0.0) {
         vec3 r = reflect(ray.dir, n);
-        emitRay(q, offsetTowards(s, r), r, weight * F, ray.depth + 1u);
+        emitRay(q, offsetTowards(s, r), r, weight * F, ray.depth + 1u, 0.0);
     }
     if (F < 1.0) {
         float roughness = materialRoughness(m);
@@ -138,14 +140,35 @@ void emitDielectric(inout PathQueue q, PathRay ray, Surface s, Material m, float
             refracted = glossyDirection(refracted, roughness, u);
             if (dot(refracted, n) >= 0.0) return;
         }
-        emitRay(q, offsetTowards(s, refracted), refracted, weight * (1.0 - F), ray.depth + 1u);
+        emitRay(q, offsetTowards(s, refracted), refracted, weight * (1.0 - F), ray.depth + 1u, 0.0);
     }
+}
+
+// The Diffuse bounce (RENDERING.md §5): one cosine-weighted direction per pixel sample, carrying
+// kd (f cos / pdf = (kd / pi) cos / (cos / pi)); none below the geometric surface.
+void emitBounce(inout PathQueue q, PathRay ray, Surface s, vec3 N, vec3 kd, SampleKey key) {
+    vec2 u = sample2D(samplerKind(), frame.pixelGrid, key.pixel, key.index, dimBounce(ray.depth), key.seed);
+    vec3 dir = cosineDirection(N, u);
+    if (dot(dir, s.geomNormal) <= 0.0) return;
+    float pdf = estimatorKind() != ESTIMATOR_BOUNCE ? max(cosinePdf(N, dir), 1e-30) : 0.0;
+    emitRay(q, offsetTowards(s, dir), dir, ray.weight * kd, ray.depth + 1u, pdf);
+}
+
+// What a ray sees on an emitter's surface: its radiance, weighted against the light samples of
+// the Diffuse surface the ray left, if it left one that took them.
+vec3 emittedRadiance(PathRay ray, Surface s, Material m) {
+    vec3 L = m.diffuse.rgb;
+    if (!(ray.bouncePdf > 0.0)) return L;
+    uint estimator = estimatorKind();
+    if (estimator == ESTIMATOR_NEE) return vec3(0.0);  // next-event estimation counted it already
+    float lightPdf = float(frameLightSamples()) * emitterPdf(loadEmitter(materialEmitter(m)), ray.origin, s.position, s.geomNormal);
+    return L * misWeight(ray.bouncePdf, lightPdf, estimator == ESTIMATOR_MIS_POWER);
 }
 
 vec3 cameraSampleRadiance(vec3 origin, vec3 dir, SampleKey key) {
     vec3 radiance = vec3(0.0);
     g_pathTop = 0u;
-    PathRay ray = PathRay(origin, dir, vec3(1.0), 0u);
+    PathRay ray = PathRay(origin, dir, vec3(1.0), 0u, 0.0);
     vec3 background = frame.background.rgb;
     bool finished = false;  // set by the loop's own exit (budget.glsl)
     while (true) {
@@ -155,12 +178,14 @@ vec3 cameraSampleRadiance(vec3 origin, vec3 dir, SampleKey key) {
         q.hasExtra = false;
         Hit hit;
         if (!traceScene(ray.origin, ray.dir, FLT_MAX, false, hit)) {
-            radiance += ray.weight * background;
+            radiance += ray.weight * (HAS_ENVIRONMENT ? escapedRadiance(ray.dir, ray.bouncePdf) : background);
         } else {
             Surface s = surfaceAt(ray.origin, ray.dir, hit);
             Material m = loadMaterial(s.material);
             uint type = materialType(m);
-            if (HAS_DIELECTRIC && type == SHADER_DIELECTRIC) {
+            if (HAS_EMITTERS && type == SHADER_EMITTER) {
+                radiance += ray.weight * emittedRadiance(ray, s, m);
+            } else if (HAS_DIELECTRIC && type == SHADER_DIELECTRIC) {
                 emitDielectric(q, ray, s, m, hit.t, key);
             } else {
                 // Two-sided shading: turn the normals towards the viewer.
@@ -178,9 +203,15 @@ vec3 cameraSampleRadiance(vec3 origin, vec3 dir, SampleKey key) {
                     if (diffuseTexture != TEXTURE_NONE) kd *= sampleTexture(diffuseTexture, s.uv);
                     if (specularTexture != TEXTURE_NONE) ks *= sampleTexture(specularTexture, s.uv);
                 }
+                // A Diffuse surface reflects nothing at the maximum depth: every light it reflects,
+                // its direct light included, is a bounce (RENDERING.md §5).
+                bool diffuseSurface = HAS_DIFFUSE && type == SHADER_DIFFUSE;
+                bool bounces = diffuseSurface && ray.depth < MAX_DEPTH && ray.depth < frameMaxDepth();
                 vec3 local = vec3(0.0);
-                if (type != SHADER_MIRROR)
+                if (type != SHADER_MIRROR && (!diffuseSurface || bounces)) {
                     local = directLighting(s, N, V, type, kd, ks, materialPhongExponent(m), ray.depth, key);
+                    if (HAS_ENVIRONMENT && bounces) local += environmentLighting(s, N, kd, ray.depth, key);
+                }
                 // The shares of local shading and of reflection: mirror 0 and 1, glaze 1 and m,
                 // mirrored Blinn-Phong 1 - m and m, the others 1 and none (RENDERING.md §5). One
                 // emitReflection call for the three reflecting shaders, not one each: lavapipe runs
@@ -192,6 +223,7 @@ vec3 cameraSampleRadiance(vec3 origin, vec3 dir, SampleKey key) {
                 radiance += ray.weight * localShare * local;
                 if (reflects)
                     emitReflection(q, ray, s, N, materialRoughness(m), ray.weight * (type == SHADER_MIRROR ? 1.0 : mirror), key);
+                if (bounces) emitBounce(q, ray, s, N, kd, key);
             }
         }
         flushQueue(q);

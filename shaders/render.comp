@@ -9,12 +9,15 @@
 #include "bindings.glsl"
 #include "budget.glsl"  // before sampling.h, whose loop reports through it
 #include "sampling.h"
+#include "emitter_sampling.h"
 #include "intersect.glsl"
 #include "traverse.glsl"
 #include "surface.glsl"
 #include "ray_offset.glsl"
 #include "texture.glsl"
+#include "emitters.glsl"
 #include "shading.glsl"
+#include "environment.glsl"
 #include "integrator.glsl"
 #include "camera.glsl"
 

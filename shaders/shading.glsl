@@ -46,6 +46,46 @@ vec3 lightFrom(Surface s, vec3 N, vec3 V, uint type, vec3 kd, vec3 ks, float pho
     return c * I;
 }
 
+// Shape emitters as a continuum of the course's point lights (RENDERING.md §4): a light sample of
+// density p (per steradian) stands for intensity L / (pi p). A Diffuse surface samples them only
+// as the estimator says, weighted against its bounce.
+vec3 emitterLighting(Surface s, vec3 N, vec3 V, uint type, vec3 kd, vec3 ks, float phongExp, uint depth, SampleKey key) {
+    bool diffuseSurface = HAS_DIFFUSE && type == SHADER_DIFFUSE;
+    uint estimator = estimatorKind();
+    if (diffuseSurface && estimator == ESTIMATOR_BOUNCE) return vec3(0.0);
+    bool weighs = diffuseSurface && (estimator == ESTIMATOR_MIS_BALANCE || estimator == ESTIMATOR_MIS_POWER);
+    uint count = frameEmitterCount();
+    uint k = frameLightSamples();
+    vec3 sum = vec3(0.0);
+    uint e = 0u;
+    for (; e < count; ++e) {
+        if (!chargeLoop()) break;
+        EmitterRecord r = loadEmitter(e);
+        vec3 acc = vec3(0.0);
+        uint j = 0u;
+        for (; j < k; ++j) {
+            if (!chargeLoop()) break;
+            vec2 u = sample2D(samplerKind(), frame.lightGrid, key.pixel, key.index * k + j,
+                              dimLight(depth, emitterLightOrdinal(r)), key.seed);
+            EmitterSample es = sampleEmitter(r, s.position, u);
+            if (!(es.pdf > 0.0) || isinf(es.pdf)) continue;
+            float w = 1.0;
+            if (weighs) {
+                // The bounce reaches this direction with its cosine density, or not at all below
+                // the geometric surface (emitBounce does not trace those).
+                vec3 l = normalize(es.point - s.position);
+                float bouncePdf = dot(l, s.geomNormal) > 0.0 ? cosinePdf(N, l) : 0.0;
+                w = misWeight(float(k) * es.pdf, bouncePdf, estimator == ESTIMATOR_MIS_POWER);
+            }
+            if (w > 0.0) acc += lightFrom(s, N, V, type, kd, ks, phongExp, es.point, r.radiance.rgb * (w * EMITTER_INV_PI / es.pdf));
+        }
+        if (j < k) markLoopCutOff();
+        sum += acc / float(k);
+    }
+    if (e < count) markLoopCutOff();
+    return sum;
+}
+
 vec3 directLighting(Surface s, vec3 N, vec3 V, uint type, vec3 kd, vec3 ks, float phongExp, uint depth, SampleKey key) {
     vec3 sum = vec3(0.0);
     uint lightCount = frameLightCount();
@@ -74,6 +114,7 @@ vec3 directLighting(Surface s, vec3 N, vec3 V, uint type, vec3 kd, vec3 ks, floa
         sum += acc / float(k);  // exact for a point light (k = 1)
     }
     if (l < lightCount) markLoopCutOff();
+    if (HAS_EMITTERS) sum += emitterLighting(s, N, V, type, kd, ks, phongExp, depth, key);
     return sum;
 }
 

@@ -159,6 +159,8 @@ uint failureFlags() {
 }
 
 // Closest hit (anyHit = false) or any hit (shadow rays) with 0 < t < tMax.
+const float FLT_MAX = 3.402823466e+38;  // tMax of a ray with no end
+
 bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
     hit.t = tMax;
     hit.instance = 0u;

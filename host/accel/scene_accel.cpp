@@ -99,6 +99,26 @@ SceneAccel buildSceneAccel(const Scene& scene, const bvh::BuildOptions& options)
         accel.instanceOrigin.push_back(static_cast<int>(i));
     }
 
+    // Shape emitters: visible geometry whose material is the emitter's (emitterMaterial), so a
+    // ray that meets one knows which emitter it saw. They never move (docs/RENDERING.md §9).
+    for (std::size_t e = 0; e < scene.emitters.size(); ++e) {
+        const Emitter& emitter = scene.emitters[e];
+        std::uint32_t group = 0;
+        if (emitter.prototype >= 0) {
+            group = firstPrototypeGroup + static_cast<std::uint32_t>(emitter.prototype);
+        } else {
+            group = static_cast<std::uint32_t>(groups.size());
+            groups.emplace_back();
+            accel.groupPrims.emplace_back();
+            addShape(scene, emitter.shape, groups.back(), accel.groupPrims.back());
+        }
+        instances.push_back({group, emitter.objectToWorld, emitterMaterial(scene, e)});
+        accel.instanceOrigin.push_back(-1);
+    }
+    accel.instanceEmitter.assign(instances.size(), -1);
+    for (std::size_t e = 0; e < scene.emitters.size(); ++e)
+        accel.instanceEmitter[instances.size() - scene.emitters.size() + e] = static_cast<int>(e);
+
     accel.bvh = bvh::buildSceneBvh(groups, instances, options);
     return accel;
 }

@@ -84,6 +84,20 @@ void addRenderOptions(CLI::App& app, CommandLine& cl, std::string& bg, std::stri
     app.add_option("--sampler", sampler,
                    "Sample pattern: jittered (Cook 1984), regular, random or sobol (Owen-scrambled, Burley 2020)")
         ->check(CLI::IsMember({"jittered", "regular", "random", "sobol"}));
+    app.add_option_function<std::string>(
+           "--estimator",
+           [&cl](const std::string& name) {
+               try {
+                   cl.render.estimator = parseEstimator(name);
+               } catch (const std::invalid_argument& e) {
+                   throw CLI::ValidationError("--estimator", e.what());
+               }
+           },
+           "Diffuse surfaces (path tracing): how light from shape emitters and the environment map is found: "
+           "bounce (only by the cosine-weighted bounce ray, the course's shader), nee (only by light samples), "
+           "mis-balance or mis (both, weighted by the balance or the power heuristic). Same image in "
+           "expectation; default mis")
+        ->default_str("mis");
     app.add_option("--device", device, "Renderer: gpu (Vulkan), cpu (reference) or auto (gpu if available)")
         ->check(CLI::IsMember({"auto", "cpu", "gpu"}));
     app.add_flag("--general-kernel", cl.general, "GPU: use the kernel with every feature (no specialisation)");
@@ -208,6 +222,7 @@ std::string describeSettings(const CommandLine& cl) {
     if (cl.command == Command::Sweep) out << "sweep out: " << cl.sweep.outDir << "\n";
     out << "image: " << r.width << "x" << r.height << " (aspect " << number(double(r.width) / r.height) << ")\n";
     if (cl.command != Command::Sweep) out << "rays per pixel: " << r.samplesPerPixel << " (" << samplerName(r.sampler) << ")\n";
+    if (cl.command != Command::Sweep) out << "estimator: " << estimatorName(r.estimator) << "\n";
     out << "recursion depth: " << r.maxDepth << "\n";
     if (cl.focusDistance) out << "focus distance: " << *cl.focusDistance << "\n";
     if (cl.aperture) out << "aperture: " << *cl.aperture << "\n";

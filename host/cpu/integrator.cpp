@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "dielectric.h"
+#include "emitter_sampling.h"
 #include "ray_offset.h"
 #include "sampling.h"
 #include "shading.h"
@@ -28,6 +29,20 @@ glm::vec3 textured(const Scene& scene, glm::vec3 colour, int texture, glm::vec2 
     return texture == kNoTexture ? colour : colour * sampleTexture(scene.textures[texture], uv);
 }
 
+// A point of emitter record r seen from x, for the 2D light sample u (emitter_sampling.h).
+emitters::EmitterSample sampleEmitter(const EmitterTable& table, const gpu::EmitterRecord& r, const glm::vec3& x,
+                                      glm::vec2 u) {
+    switch (gpu::emitterKind(r)) {
+    case gpu::EMITTER_SPHERE: return emitters::sampleSphereEmitter(x, glm::vec3(r.sphere), r.sphere.w, u);
+    case gpu::EMITTER_ELLIPSOID: return emitters::sampleEllipsoidEmitter(r, x, u);
+    default: break;
+    }
+    if (gpu::emitterTriangleCount(r) == 0) return emitters::EmitterSample{glm::vec3(0.0f), glm::vec3(0.0f), 0.0f};
+    const std::uint32_t i = pickEmitterTriangle(table, r, u.x);
+    const float previous = i > gpu::emitterFirstTriangle(r) ? gpu::emitterTriangleCdf(table.triangles[i - 1]) : 0.0f;
+    return emitters::sampleEmitterTriangle(table.triangles[i], previous, gpu::emitterAreaPdf(r), x, u);
+}
+
 }  // namespace
 
 glm::vec3 Integrator::cameraRadiance(const bvh::Ray& ray, SampleKey key) {
@@ -35,12 +50,30 @@ glm::vec3 Integrator::cameraRadiance(const bvh::Ray& ray, SampleKey key) {
     return trace(ray, 0, glm::vec3(1.0f), key);
 }
 
-glm::vec3 Integrator::trace(const bvh::Ray& ray, int depth, glm::vec3 weight, SampleKey key) {
+glm::vec3 Integrator::trace(const bvh::Ray& ray, int depth, glm::vec3 weight, SampleKey key, float bouncePdf) {
     bvh::Ray timed = ray;
     timed.time = key.time;
     bvh::Hit hit;
     if (!bvh::intersectClosest(ctx_.accel->bvh, timed, hit)) return ctx_.background;
-    return shade(timed, hit, depth, weight, key);
+    return shade(timed, hit, depth, weight, key, bouncePdf);
+}
+
+float Integrator::emitterPdf(int e, const glm::vec3& x, const glm::vec3& q, const glm::vec3& nq) const {
+    const gpu::EmitterRecord& r = ctx_.emitters.records[static_cast<std::size_t>(e)];
+    switch (gpu::emitterKind(r)) {
+    case gpu::EMITTER_SPHERE: return emitters::sphereEmitterPdf(x, glm::vec3(r.sphere), r.sphere.w, q, nq);
+    case gpu::EMITTER_ELLIPSOID: return emitters::ellipsoidEmitterPdf(r, x, q, nq);
+    default: break;
+    }
+    return gpu::emitterTriangleCount(r) == 0 ? 0.0f : emitters::solidAnglePdf(gpu::emitterAreaPdf(r), x, q, nq);
+}
+
+glm::vec3 Integrator::emitted(const bvh::Ray& ray, const SurfacePoint& sp, float bouncePdf) const {
+    const glm::vec3 radiance = glm::vec3(ctx_.emitters.records[static_cast<std::size_t>(sp.emitter)].radiance);
+    if (!(bouncePdf > 0.0f)) return radiance;  // not a Diffuse bounce that sampled lights: seen in full
+    if (!diffuseWeighs()) return glm::vec3(0.0f);  // next-event estimation counted it already
+    const float lightPdf = static_cast<float>(ctx_.lightSamples) * emitterPdf(sp.emitter, ray.origin, sp.position, sp.geometricNormal);
+    return radiance * emitters::misWeight(bouncePdf, lightPdf, ctx_.estimator == Estimator::MisPower);
 }
 
 bool Integrator::occluded(const glm::vec3& origin, const glm::vec3& lightPoint, float time) {
@@ -53,9 +86,11 @@ bool Integrator::occluded(const glm::vec3& origin, const glm::vec3& lightPoint, 
     return bvh::intersectAny(ctx_.accel->bvh, shadow);
 }
 
-glm::vec3 Integrator::shade(const bvh::Ray& ray, const bvh::Hit& hit, int depth, glm::vec3 weight, SampleKey key) {
+glm::vec3 Integrator::shade(const bvh::Ray& ray, const bvh::Hit& hit, int depth, glm::vec3 weight, SampleKey key,
+                             float bouncePdf) {
     const Scene& scene = *ctx_.scene;
     const SurfacePoint sp = describeHit(*ctx_.accel, scene, ray, hit);
+    if (sp.emitter >= 0) return emitted(ray, sp, bouncePdf);
     const Shader& shader = scene.shaders[sp.shader];
     if (shader.type == ShaderType::Dielectric) return dielectric(ray, hit, shader, sp, depth, weight, key);
 
@@ -70,6 +105,8 @@ glm::vec3 Integrator::shade(const bvh::Ray& ray, const bvh::Hit& hit, int depth,
 
     switch (shader.type) {
     case ShaderType::Lambertian:
+        if (shader.diffuseBounce) return diffuse(shader, sp, n, ng, kd, depth, weight, key);
+        return directLight(shader, sp, n, ng, view, kd, ks, depth, key);
     case ShaderType::BlinnPhong:
     case ShaderType::CoolToWarm:
         return directLight(shader, sp, n, ng, view, kd, ks, depth, key);
@@ -125,7 +162,56 @@ glm::vec3 Integrator::directLight(const Shader& shader, const SurfacePoint& sp, 
         }
         sum += lightSum / static_cast<float>(ctx_.lightSamples);
     }
+
+    // Shape emitters, as a continuum of the course's point lights: a sample of density p (per
+    // steradian) stands for intensity L / (pi p), so a Lambertian receiver gets kd / pi times the
+    // integral of L cos over the emitter's solid angle: what a Diffuse bounce that hits it sees.
+    const bool isDiffuse = shader.diffuseBounce;
+    if (ctx_.emitters.records.empty() || (isDiffuse && !diffuseSamplesLights())) return sum;
+    const bool weighs = isDiffuse && diffuseWeighs();
+    const float k = static_cast<float>(ctx_.lightSamples);
+    for (const gpu::EmitterRecord& r : ctx_.emitters.records) {
+        const glm::vec3 radiance(r.radiance);
+        const std::uint32_t dim = sampling::dimLight(static_cast<std::uint32_t>(depth), gpu::emitterLightOrdinal(r));
+        glm::vec3 emitterSum(0.0f);
+        for (std::uint32_t j = 0; j < ctx_.lightSamples; ++j) {
+            const glm::vec2 u = sampling::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel,
+                                                   key.sample * ctx_.lightSamples + j, dim, ctx_.seed);
+            const emitters::EmitterSample s = sampleEmitter(ctx_.emitters, r, sp.position, u);
+            if (!(s.pdf > 0.0f) || !std::isfinite(s.pdf)) continue;
+            float w = 1.0f;
+            if (weighs) {
+                // The bounce reaches this direction with its cosine density, or not at all below
+                // the geometric surface (diffuse() does not trace those).
+                const glm::vec3 l = glm::normalize(s.point - sp.position);
+                const float bouncePdf = glm::dot(l, ng) > 0.0f ? emitters::cosinePdf(n, l) : 0.0f;
+                w = emitters::misWeight(k * s.pdf, bouncePdf, ctx_.estimator == Estimator::MisPower);
+            }
+            if (w > 0.0f) emitterSum += contribution(s.point, radiance * (w * emitters::EMITTER_INV_PI / s.pdf));
+        }
+        sum += emitterSum / k;
+    }
     return sum;
+}
+
+glm::vec3 Integrator::diffuse(const Shader& shader, const SurfacePoint& sp, const glm::vec3& n, const glm::vec3& ng,
+                              const glm::vec3& kd, int depth, glm::vec3 weight, SampleKey key) {
+    // Every light a Diffuse surface reflects, its direct light included, is a bounce: none at the
+    // maximum depth (so -k 0 shows emitters and the environment only).
+    if (depth >= ctx_.maxDepth) return glm::vec3(0.0f);
+    glm::vec3 radiance = directLight(shader, sp, n, ng, n, kd, glm::vec3(0.0f), depth, key);
+
+    // One cosine-weighted bounce per pixel sample: f cos / pdf = (kd / pi) cos / (cos / pi) = kd.
+    const glm::vec2 u = sampling::sample2D(ctx_.sampler, ctx_.pixelGrid, key.pixel, key.sample,
+                                           sampling::dimBounce(static_cast<std::uint32_t>(depth)), ctx_.seed);
+    const glm::vec3 dir = emitters::cosineDirection(n, u);
+    if (glm::dot(dir, ng) <= 0.0f || !worthTracing(weight * kd)) return radiance;  // no light from inside
+    ++counts_.bounce;
+    bvh::Ray next;
+    next.origin = offsetRayOrigin(sp.position, sideOf(ng, dir), sp.errorMagnitude);
+    next.dir = dir;
+    const float bouncePdf = diffuseSamplesLights() ? std::max(emitters::cosinePdf(n, dir), 1e-30f) : 0.0f;
+    return radiance + kd * trace(next, depth + 1, weight * kd, key, bouncePdf);
 }
 
 glm::vec3 Integrator::reflection(const bvh::Ray& ray, const SurfacePoint& sp, const glm::vec3& n, const glm::vec3& ng,

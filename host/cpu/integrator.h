@@ -1,6 +1,7 @@
 // The recursion that gives a ray its radiance (docs/RENDERING.md §4-§6): closest hit, local
-// shading with shadow rays, mirror/glossy reflection and dielectric reflection + refraction down
-// to the maximum depth. One Integrator per thread: it owns that thread's ray counters.
+// shading with shadow rays, mirror/glossy reflection, dielectric reflection + refraction and the
+// Diffuse bounce down to the maximum depth; shape emitters seen or sampled, the environment for
+// rays that leave. One Integrator per thread: it owns that thread's ray counters.
 #pragma once
 
 #include <cstdint>
@@ -18,12 +19,14 @@ struct RayCounts {
     std::uint64_t shadow = 0;
     std::uint64_t reflection = 0;  // mirror and glossy reflections, dielectric reflections
     std::uint64_t refraction = 0;
+    std::uint64_t bounce = 0;      // Diffuse bounces
 
     RayCounts& operator+=(const RayCounts& o) {
         camera += o.camera;
         shadow += o.shadow;
         reflection += o.reflection;
         refraction += o.refraction;
+        bounce += o.bounce;
         return *this;
     }
 };
@@ -46,12 +49,25 @@ public:
 
 private:
     // `weight` is the product of the factors that will multiply this ray's radiance in the
-    // pixel sample (m, F, 1-F, Beer, 1/g): branches below kMinBranchWeight are not traced.
-    glm::vec3 trace(const bvh::Ray& ray, int depth, glm::vec3 weight, SampleKey key);
-    glm::vec3 shade(const bvh::Ray& ray, const bvh::Hit& hit, int depth, glm::vec3 weight, SampleKey key);
+    // pixel sample (m, F, 1-F, Beer, 1/g, kd): branches below kMinBranchWeight are not traced.
+    // `bouncePdf` > 0: the ray is a Diffuse bounce with that cosine density, whose surface's light
+    // samples already looked for emitters and the environment (the estimator weighs the two).
+    glm::vec3 trace(const bvh::Ray& ray, int depth, glm::vec3 weight, SampleKey key, float bouncePdf = 0.0f);
+    glm::vec3 shade(const bvh::Ray& ray, const bvh::Hit& hit, int depth, glm::vec3 weight, SampleKey key, float bouncePdf);
     // Sum over lights (and light samples) of the shader's local term; shadowed unless CoolToWarm.
+    // Shape emitters count as every shader's lights; on a Diffuse surface (`bounces`) they are
+    // sampled only as the estimator says, weighted against the bounce.
     glm::vec3 directLight(const Shader& shader, const SurfacePoint& sp, const glm::vec3& n, const glm::vec3& ng,
                           const glm::vec3& view, const glm::vec3& kd, const glm::vec3& ks, int depth, SampleKey key);
+    // The course's Diffuse: kd times the light arriving over the cosine-weighted hemisphere, one
+    // bounce ray per pixel sample, plus its light samples; black at the maximum depth.
+    glm::vec3 diffuse(const Shader& shader, const SurfacePoint& sp, const glm::vec3& n, const glm::vec3& ng,
+                      const glm::vec3& kd, int depth, glm::vec3 weight, SampleKey key);
+    // The radiance an emitter's surface sends along `ray` (which hit it at sp), weighted against
+    // the light samples of the Diffuse surface the ray left, if it left one.
+    glm::vec3 emitted(const bvh::Ray& ray, const SurfacePoint& sp, float bouncePdf) const;
+    // The solid-angle density with which emitter e's light samples from x reach its point q.
+    float emitterPdf(int e, const glm::vec3& x, const glm::vec3& q, const glm::vec3& nq) const;
     // The (possibly glossy) reflection seen from a surface with shading normal n and geometric normal ng
     // (both facing the incoming ray).
     glm::vec3 reflection(const bvh::Ray& ray, const SurfacePoint& sp, const glm::vec3& n, const glm::vec3& ng,
@@ -59,6 +75,10 @@ private:
     glm::vec3 dielectric(const bvh::Ray& ray, const bvh::Hit& hit, const Shader& shader, const SurfacePoint& sp,
                          int depth, glm::vec3 weight, SampleKey key);
     bool occluded(const glm::vec3& origin, const glm::vec3& lightPoint, float time);
+    // Whether a Diffuse surface samples emitters and the environment (every estimator but the
+    // plain bounce), and whether it weighs those samples against its bounce (MIS).
+    bool diffuseSamplesLights() const { return ctx_.estimator != Estimator::Bounce; }
+    bool diffuseWeighs() const { return ctx_.estimator == Estimator::MisBalance || ctx_.estimator == Estimator::MisPower; }
 
     const RenderContext& ctx_;
     RayCounts counts_;

@@ -40,6 +40,8 @@ RenderContext makeRenderContext(const Scene& scene, const SceneAccel& accel, con
     ctx.accel = &accel;
     ctx.camera = makeCameraFrame(scene.cameras[options.camera], options.width, options.height);
     ctx.lights = makeLightSources(scene);
+    ctx.emitters = buildEmitterTable(scene);
+    ctx.estimator = options.estimator;
     ctx.background = options.background ? *options.background : scene.background;
     ctx.sampler = static_cast<unsigned>(options.sampler);
     ctx.seed = options.seed;

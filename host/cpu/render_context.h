@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "camera.h"
+#include "emitter_table.h"
 #include "lights.h"
 #include "render_options.h"
 #include "scene.h"
@@ -19,6 +20,8 @@ struct RenderContext {
     const SceneAccel* accel = nullptr;
     CameraFrame camera;
     std::vector<LightSource> lights;
+    EmitterTable emitters;             // the shape emitters' sampling records (emitter_table.h)
+    Estimator estimator = Estimator::MisPower;  // Diffuse: how emitters and the environment are found
     glm::vec3 background{0.0f};
     unsigned sampler = 0;              // gpu::SAMPLER_*
     unsigned seed = 0;

@@ -90,7 +90,8 @@ SurfacePoint describeHit(const SceneAccel& accel, const Scene& scene, const bvh:
     const Shape& shape = *origin.shape;
 
     SurfacePoint sp;
-    sp.shader = accel.shaderOf(hit.instance, hit.prim);
+    sp.emitter = accel.emitterOf(hit.instance);
+    sp.shader = sp.emitter >= 0 ? -1 : accel.shaderOf(hit.instance, hit.prim);
 
     glm::vec3 pObject{0.0f}, nObject{0.0f}, shadingObject{0.0f};
     float objectMagnitude = 0.0f;  // largest |coordinate| of the primitive's data

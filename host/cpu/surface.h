@@ -15,7 +15,8 @@ struct SurfacePoint {
     glm::vec3 geometricNormal{0.0f};  // unit, world space, the primitive's true outward side
     glm::vec3 shadingNormal{0.0f};    // unit, world space, on the same side as geometricNormal
     glm::vec2 uv{0.0f};
-    int shader = 0;                   // index into Scene::shaders
+    int shader = 0;                   // index into Scene::shaders (not for an emitter's surface)
+    int emitter = -1;                 // index into Scene::emitters when the hit is on a shape emitter
     float errorMagnitude = 0.0f;      // the largest world-space magnitude the hit point's computation
                                       // involved: it scales the ray offset (ray_offset.h, RENDERING.md §6)
 };

@@ -75,6 +75,10 @@ std::array<std::uint32_t, gpu::SPEC_COUNT> FeatureSet::specializationValues(std:
     v[gpu::SPEC_HAS_THIN_LENS] = thinLens;
     v[gpu::SPEC_HAS_TRANSLUCENCY] = translucency;
     v[gpu::SPEC_HAS_MOTION] = motion;
+    v[gpu::SPEC_HAS_DIFFUSE] = diffuse;
+    v[gpu::SPEC_HAS_EMITTERS] = emitters;
+    v[gpu::SPEC_HAS_ENVIRONMENT] = environment;
+    v[gpu::SPEC_ESTIMATOR] = estimator;
     return v;
 }
 
@@ -99,6 +103,11 @@ std::string FeatureSet::describe() const {
     add(thinLens, "thin-lens");
     add(translucency, "translucency");
     add(motion, "motion");
+    add(diffuse, "diffuse");
+    add(emitters, "emitters");
+    add(environment, "environment");
+    add(diffuse && estimator != gpu::ESTIMATOR_FROM_FRAME,
+        ("estimator=" + estimatorName(static_cast<Estimator>(estimator))).c_str());
     add(!packedNodes, "exact-nodes");
     add(sampler != gpu::SAMPLER_FROM_FRAME, ("sampler=" + samplerName(static_cast<SamplerKind>(sampler))).c_str());
     add(true, ("depth=" + std::to_string(maxDepth) + " stack=" + std::to_string(pathStackSize)).c_str());
@@ -109,7 +118,7 @@ FeatureSet deriveFeatureSet(const Scene& scene, const SceneAccel& accel, const R
     FeatureSet f = geometryFeatures(accel.bvh, packedNodes);
     f.areaLights = std::any_of(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.type == LightType::Area; });
 
-    f.specular = f.reflection = f.gloss = f.dielectric = f.textures = f.coolToWarm = f.translucency = false;
+    f.specular = f.reflection = f.gloss = f.dielectric = f.textures = f.coolToWarm = f.translucency = f.diffuse = false;
     for (const int index : usedShaders(scene)) {
         const Shader& s = scene.shaders.at(index);
         f.specular |= s.type == ShaderType::BlinnPhong || s.type == ShaderType::BlinnPhongMirrored;
@@ -122,8 +131,14 @@ FeatureSet deriveFeatureSet(const Scene& scene, const SceneAccel& accel, const R
         f.textures |= s.diffuseTexture != kNoTexture || s.specularTexture != kNoTexture;
         f.coolToWarm |= s.type == ShaderType::CoolToWarm;
         f.translucency |= s.type == ShaderType::Dielectric && s.roughness > 0.0f;
+        f.diffuse |= s.diffuseBounce;
     }
-    f.maxDepth = (f.reflection || f.dielectric) ? static_cast<std::uint32_t>(std::max(options.maxDepth, 0)) : 0u;
+    f.emitters = !scene.emitters.empty();
+    f.environment = scene.environment.faceSize > 0;
+    // The estimator matters only where a Diffuse surface meets emitters or the environment; other
+    // scenes share one kernel whatever --estimator says.
+    f.estimator = f.diffuse ? static_cast<std::uint32_t>(options.estimator) : gpu::ESTIMATOR_BOUNCE;
+    f.maxDepth = (f.reflection || f.dielectric || f.diffuse) ? static_cast<std::uint32_t>(std::max(options.maxDepth, 0)) : 0u;
     f.pathStackSize = scenePathStack(f, options);
     // The one sampler the render uses: sample2D's other samplers would run too (every path runs
     // on lavapipe; host/gpu/README.md).
@@ -143,6 +158,8 @@ FeatureSet generalFeatureSet(const RenderOptions& options, bool packedNodes) {
 FeatureSet traversalFeatureSet(const bvh::SceneBvh& bvh, bool packedNodes) {
     FeatureSet f = geometryFeatures(bvh, packedNodes);
     f.areaLights = f.specular = f.reflection = f.gloss = f.dielectric = f.textures = f.coolToWarm = f.thinLens = f.translucency = false;
+    f.diffuse = f.emitters = f.environment = false;
+    f.estimator = gpu::ESTIMATOR_BOUNCE;
     f.maxDepth = 0;
     f.pathStackSize = 1;
     return f;

@@ -35,6 +35,11 @@ struct FeatureSet {
     bool thinLens = true;              // the render's camera has depth of field
     bool translucency = true;          // a used Dielectric has roughness > 0 (glossy refraction)
     bool motion = true;                // some instance moves (motion blur: a time per sample)
+    bool diffuse = true;               // a used shader is the course's path-traced Diffuse
+    bool emitters = true;              // the scene has shape emitters
+    bool environment = true;           // the scene has an environment map
+    std::uint32_t estimator = gpu::ESTIMATOR_FROM_FRAME;  // the render's Estimator when the scene has
+                                                          // Diffuse surfaces, else ESTIMATOR_BOUNCE
 
     auto operator<=>(const FeatureSet&) const = default;
 

@@ -21,6 +21,10 @@ KernelLayout renderLayout(const Context& context) {
         computeBinding(gpu::BINDING_FRAME, T::eUniformBuffer),
         computeBinding(gpu::BINDING_ACCUM, T::eStorageTexelBuffer),
         computeBinding(gpu::BINDING_STATUS, T::eStorageBuffer),
+        computeBinding(gpu::BINDING_EMITTERS, T::eStorageTexelBuffer),
+        computeBinding(gpu::BINDING_EMITTER_TRIANGLES, T::eStorageTexelBuffer),
+        computeBinding(gpu::BINDING_ENVIRONMENT, T::eStorageTexelBuffer),
+        computeBinding(gpu::BINDING_ENVIRONMENT_CDF, T::eStorageTexelBuffer),
     };
     return KernelLayout(context, bindings, sizeof(gpu::PassParams));
 }

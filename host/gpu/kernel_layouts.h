@@ -7,7 +7,7 @@
 
 namespace vkrt {
 
-// render.comp: the twelve bindings BINDING_NODES .. BINDING_STATUS, PassParams.
+// render.comp: its RENDER_BINDING_COUNT bindings BINDING_NODES .. BINDING_ENVIRONMENT_CDF, PassParams.
 KernelLayout renderLayout(const Context& context);
 // trace_rays.comp: nodes, primitives, instances, frame, status, rays, hits; TraceParams.
 KernelLayout traceLayout(const Context& context);

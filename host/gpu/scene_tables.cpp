@@ -33,7 +33,8 @@ gpu::Material toGpuMaterial(const Shader& s) {
     m.specular = glm::vec4(s.specular, s.phongExp);
     m.attenuation = glm::vec4(s.attenuation, s.refractiveIndex);
     m.params = glm::vec4(s.mirrorCoef, s.roughness, 0.0f, 0.0f);
-    m.ids = glm::uvec4(shaderTypeId(s.type), textureId(s.diffuseTexture), textureId(s.specularTexture), 0u);
+    const std::uint32_t type = s.diffuseBounce ? gpu::SHADER_DIFFUSE : shaderTypeId(s.type);
+    m.ids = glm::uvec4(type, textureId(s.diffuseTexture), textureId(s.specularTexture), 0u);
     return m;
 }
 
@@ -83,9 +84,17 @@ std::vector<std::uint32_t> appendVertexAttribs(const Scene& scene, std::vector<g
 SceneTables buildSceneTables(const Scene& scene, const SceneAccel& accel) {
     SceneTables t;
     for (const Shader& s : scene.shaders) t.materials.push_back(toGpuMaterial(s));
+    for (std::size_t e = 0; e < scene.emitters.size(); ++e) {
+        gpu::Material m{};
+        m.diffuse = glm::vec4(scene.emitters[e].radiance, 0.0f);
+        m.ids = glm::uvec4(gpu::SHADER_EMITTER, gpu::TEXTURE_NONE, gpu::TEXTURE_NONE, static_cast<std::uint32_t>(e));
+        t.materials.push_back(m);
+    }
+    t.emitters = buildEmitterTable(scene);
 
     std::uint32_t areaLights = 0;
-    for (const Light& l : scene.lights) t.lights.push_back(toGpuLight(l, l.type == LightType::Area ? areaLights++ : 0u));
+    for (const Light& l : scene.lights)
+        if (l.emitterStandIn < 0) t.lights.push_back(toGpuLight(l, l.type == LightType::Area ? areaLights++ : 0u));
 
     const std::vector<std::uint32_t> attribBase = appendVertexAttribs(scene, t.vertexAttribs);
 

@@ -6,14 +6,19 @@
 #include <vector>
 
 #include "device_host.h"
+#include "emitter_table.h"
 #include "scene.h"
 #include "scene_accel.h"
 
 namespace vkrt {
 
 struct SceneTables {
-    std::vector<gpu::Material> materials;        // one per Scene::shaders, same order
-    std::vector<gpu::Light> lights;              // one per Scene::lights, same order
+    std::vector<gpu::Material> materials;        // one per Scene::shaders, same order, then one per
+                                                 // Scene::emitters (emitterMaterial, scene_accel.h)
+    std::vector<gpu::Light> lights;              // one per Scene::lights but shape lights, same order
+    EmitterTable emitters;                       // the shape emitters' sampling records
+    std::vector<std::uint32_t> environmentTexels;// the environment map's bordered faces (RGBA8), or empty
+    std::vector<float> environmentCdf;           // its luminance distribution, or empty
     std::vector<gpu::PrimInfo> primInfos;        // parallel to SceneAccel::bvh.prims
     std::vector<gpu::VertexAttrib> vertexAttribs;// every mesh's vertices, mesh after mesh
     std::vector<gpu::TextureInfo> textures;      // one per Scene::textures

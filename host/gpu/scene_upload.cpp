@@ -37,7 +37,7 @@ vk::BufferUsageFlags usageOf(BufferKind kind) {
 
 std::vector<BufferPlan> planSceneBuffers(const SceneTables& tables, const bvh::SceneBvh& bvh, std::uint64_t nodeBytes,
                                          std::uint64_t pixels) {
-    std::vector<BufferPlan> plan(gpu::BINDING_STATUS + 1);
+    std::vector<BufferPlan> plan(gpu::RENDER_BINDING_COUNT);
     // Every table the kernel reads is a texel buffer, sized past the lengths that change lavapipe's
     // JIT key (stableTexelBufferBytes, buffer.h).
     auto texels = [](std::uint64_t bytes) { return stableTexelBufferBytes(bytes); };
@@ -56,6 +56,11 @@ std::vector<BufferPlan> planSceneBuffers(const SceneTables& tables, const bvh::S
     plan[gpu::BINDING_ACCUM] = {"accumulation (one vec4 per pixel)", BufferKind::StorageTexel,
                                 texels(std::max<std::uint64_t>(1, pixels) * sizeof(glm::vec4))};
     plan[gpu::BINDING_STATUS] = {"render status", BufferKind::Storage, sizeof(gpu::RenderStatus)};
+    plan[gpu::BINDING_EMITTERS] = {"emitters", BufferKind::StorageTexel, texels(bytesOf(tables.emitters.records))};
+    plan[gpu::BINDING_EMITTER_TRIANGLES] = {"emitter triangles", BufferKind::StorageTexel, texels(bytesOf(tables.emitters.triangles))};
+    plan[gpu::BINDING_ENVIRONMENT] = {"environment map", BufferKind::StorageTexel, texels(bytesOf(tables.environmentTexels)), 4};
+    plan[gpu::BINDING_ENVIRONMENT_CDF] = {"environment distribution", BufferKind::StorageTexel,
+                                          texels(bytesOf(tables.environmentCdf)), 4};
     return plan;
 }
 
@@ -101,6 +106,10 @@ SceneUpload::SceneUpload(const Context& context, Transfers& transfers, const Ker
     upload(gpu::BINDING_TEXTURES, tables.textures);
     upload(gpu::BINDING_TEXELS, tables.texels);
     upload(gpu::BINDING_FRAME, std::vector<gpu::FrameParams>{frame});
+    upload(gpu::BINDING_EMITTERS, tables.emitters.records);
+    upload(gpu::BINDING_EMITTER_TRIANGLES, tables.emitters.triangles);
+    upload(gpu::BINDING_ENVIRONMENT, tables.environmentTexels);
+    upload(gpu::BINDING_ENVIRONMENT_CDF, tables.environmentCdf);
     transfers.zero(buffers_[gpu::BINDING_ACCUM]);
     transfers.zero(buffers_[gpu::BINDING_STATUS]);
 

@@ -23,6 +23,22 @@ SamplerKind parseSampler(const std::string& name) {
     throw std::invalid_argument("unknown sampler '" + name + "' (expected jittered, regular, random or sobol)");
 }
 
+std::string estimatorName(Estimator estimator) {
+    switch (estimator) {
+    case Estimator::Bounce: return "bounce";
+    case Estimator::Nee: return "nee";
+    case Estimator::MisBalance: return "mis-balance";
+    case Estimator::MisPower: return "mis";
+    }
+    return "unknown";
+}
+
+Estimator parseEstimator(const std::string& name) {
+    for (Estimator e : {Estimator::Bounce, Estimator::Nee, Estimator::MisBalance, Estimator::MisPower})
+        if (estimatorName(e) == name) return e;
+    throw std::invalid_argument("unknown estimator '" + name + "' (expected bounce, nee, mis-balance or mis)");
+}
+
 glm::vec2 shutterOf(const RenderOptions& options) {
     const glm::vec2 shutter = options.shutter.value_or(glm::vec2(0.0f, 1.0f));
     const auto text = [&] { return std::to_string(shutter.x) + "," + std::to_string(shutter.y); };

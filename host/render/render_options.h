@@ -28,6 +28,15 @@ std::string samplerName(SamplerKind sampler);  // "jittered", "regular", "random
 // Throws std::invalid_argument naming the text when it is not a sampler's name.
 SamplerKind parseSampler(const std::string& name);
 
+// How a Diffuse surface's light from shape emitters and the environment map is estimated
+// (docs/RENDERING.md §5); the image's expectation is the same for each. Values match
+// gpu::ESTIMATOR_* in shaders/shared/device_host.h.
+enum class Estimator : std::uint32_t { Bounce = 0, Nee = 1, MisBalance = 2, MisPower = 3 };
+
+std::string estimatorName(Estimator estimator);  // "bounce", "nee", "mis-balance", "mis"
+// Throws std::invalid_argument naming the text when it is not an estimator's name.
+Estimator parseEstimator(const std::string& name);
+
 struct RenderOptions {
     int width = 250;             // the instructor's reference renders are 250x250
     int height = 250;
@@ -37,6 +46,9 @@ struct RenderOptions {
     int maxDepth = 4;            // reflection/refraction recursion (course default -k 4)
     std::uint32_t seed = 0;
     SamplerKind sampler = SamplerKind::Jittered;
+    // Diffuse surfaces: how emitters and the environment map are found (a bounce ray, light
+    // samples, or both weighted by multiple importance sampling). Scenes without Diffuse ignore it.
+    Estimator estimator = Estimator::MisPower;
     std::optional<glm::vec3> background;  // overrides the scene's bgColor
     int camera = 0;              // index into Scene::cameras
     // Motion blur: the shutter's open and close in the instances' motion time (0: <transform>,

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "environment_loading.h"
 #include "json_context.h"
 #include "json_source.h"
 #include "local_origin.h"
@@ -46,7 +47,8 @@ enum class ShapeRole { Loose, Prototype, Emitter };
 //   2. cameras, lights (shape lights included), shapes and instances, background.
 class JsonSceneBuilder {
 public:
-    JsonSceneBuilder(const JsonContext& context, Scene& scene) : context_(context), scene_(scene), meshes_(scene.meshes) {}
+    JsonSceneBuilder(const JsonContext& context, Scene& scene, NegZRule negZ)
+        : context_(context), scene_(scene), meshes_(scene.meshes), negZ_(negZ) {}
 
     void build(const JsonNode& root) {
         requireObject(context_, root);
@@ -145,7 +147,6 @@ private:
         }
         rules::resolveLegacyShaderType(shader);
 
-        if (shader.diffuseBounce && fallbacks_.first(Fallback::Diffuse)) context_.warn(typeNode, fallbackProblem(Fallback::Diffuse), name);
         if (shader.emission != glm::vec3(0.0f) && fallbacks_.first(Fallback::EmitterShader))
             context_.warn(typeNode, fallbackProblem(Fallback::EmitterShader), name);
         if (const auto found = shaderByName_.find(name); found != shaderByName_.end()) {
@@ -550,7 +551,6 @@ private:
         }
         scene_.emitters.push_back(emitter);
         scene_.lights.push_back(emitterStandInLight(scene_, static_cast<int>(scene_.emitters.size()) - 1));
-        if (fallbacks_.first(Fallback::ShapeLight)) context_.warn(node, fallbackProblem(Fallback::ShapeLight), emitter.name);
     }
 
     // The prototype an instance's `_id` names; nullopt (after a warning) for a skipped one.
@@ -603,8 +603,9 @@ private:
 
     // Three spellings of the background, in this precedence (§4): sceneParameters.bgColor (J26),
     // the scene's _bgColor (J22), the scene's bgColor (read by no course parser). Every one given
-    // is read; one that disagrees with the one used is a warning. Environment maps are recorded,
-    // resolved against the scene file, and not rendered (one warning, render_fallbacks.h).
+    // is read; one that disagrees with the one used is a warning. The environment map's files
+    // resolve against the scene file and are loaded (environment_loading.h): the cube faces when a
+    // prefix is given, else the vertical cross.
     void readBackground(const JsonNode& scene) {
         const JsonNode parameters = member(scene, "sceneParameters");
         if (parameters) {
@@ -625,15 +626,28 @@ private:
         }
         const JsonNode prefix = member(parameters, "envMapPrefix");
         const JsonNode cross = member(parameters, "envMapVertCross");
-        bool any = false;
-        for (const auto& [node, field] : {std::pair{&prefix, &scene_.envMapPrefix}, std::pair{&cross, &scene_.envMapVertCross}}) {
+        std::string texts[2];
+        for (const auto& [node, text, field] : {std::tuple{&prefix, &texts[0], &scene_.envMapPrefix},
+                                                std::tuple{&cross, &texts[1], &scene_.envMapVertCross}}) {
             if (!*node) continue;
-            const std::string text = readText(context_, *node);
-            if (text.empty()) continue;  // J26's default: no map
-            *field = rules::resolveScenePath(context_.sceneDirectory, text);
-            if (!any && fallbacks_.first(Fallback::EnvironmentMap)) context_.warn(*node, fallbackProblem(Fallback::EnvironmentMap), text);
-            any = true;
+            *text = readText(context_, *node);
+            if (!text->empty()) *field = rules::resolveScenePath(context_.sceneDirectory, *text);  // empty: J26's default, no map
         }
+        EnvironmentProblem problem;
+        std::optional<Environment> environment;
+        const JsonNode* named = &prefix;
+        if (!texts[0].empty()) {
+            if (!texts[1].empty()) context_.warn(cross, kIgnoredVertCross, texts[1]);
+            environment = loadCubeFaceEnvironment(scene_.envMapPrefix, negZ_, problem);
+        } else if (!texts[1].empty()) {
+            named = &cross;
+            environment = loadVerticalCrossEnvironment(scene_.envMapVertCross, problem);
+        } else {
+            return;
+        }
+        if (!environment) context_.fail(*named, problem.problem, problem.value);
+        scene_.environment = std::move(*environment);
+        scene_.environment.where = context_.locationOf(*named);
     }
 
     JsonContext context_;  // a copy: the origin is set once the cameras are read
@@ -644,6 +658,7 @@ private:
     MissingShaders missingShaders_;
     std::map<std::string, int> prototypeByName_;    // -1: a skipped (unknown-type) prototype
     FallbackNotes fallbacks_;
+    NegZRule negZ_;
 };
 
 }  // namespace
@@ -653,7 +668,7 @@ Scene loadJsonScene(const std::string& path, const std::string& text, const Load
     const JsonContext context{source, diagnostics, options.strict, std::filesystem::path(path).parent_path(), options.localOrigin};
     Scene scene;
     scene.path = path;
-    JsonSceneBuilder(context, scene).build(JsonNode{&source.root(), ""});
+    JsonSceneBuilder(context, scene, options.environmentNegZ).build(JsonNode{&source.root(), ""});
     return scene;
 }
 

@@ -33,7 +33,6 @@ const char* fallbackProblem(Fallback fallback) {
         case Fallback::EmitterShader: return "Emitter shaders rendered as black Lambertian (their emission is not rendered)";
         case Fallback::ShapeLight:
             return "shape lights rendered as point lights at the centre of their bounds (the emitting shape is not drawn)";
-        case Fallback::EnvironmentMap: return "environment maps are not rendered, the background colour is used";
     }
     return "";
 }

@@ -1,5 +1,5 @@
 // JSON-era features the renderers cannot show yet (path-traced Diffuse, Emitter shaders, shape
-// lights, environment maps: issue 20), what they show instead, and the warning that says so. Each
+// lights: issue 20), what they show instead, and the warning that says so. Each
 // loader warns once per scene, at the first thing that needs a fallback, with these texts. This
 // is the one place to change when the renderers learn the real thing (and the loaders' calls of
 // FallbackNotes, which then go).
@@ -12,7 +12,7 @@
 
 namespace vkrt {
 
-enum class Fallback { Diffuse, EmitterShader, ShapeLight, EnvironmentMap };
+enum class Fallback { Diffuse, EmitterShader, ShapeLight };
 
 // The warning's problem text, naming the fallback.
 const char* fallbackProblem(Fallback fallback);
@@ -23,7 +23,7 @@ public:
     bool first(Fallback fallback) { return !std::exchange(seen_[static_cast<std::size_t>(fallback)], true); }
 
 private:
-    std::array<bool, 4> seen_{};
+    std::array<bool, 3> seen_{};
 };
 
 // The point light that stands in for scene.emitters[index] (Light::emitterStandIn): at the

@@ -2,6 +2,7 @@
 // parsing and validation (host/scene/scene_loader.h builds it). No GPU or BVH concerns live here.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -164,6 +165,24 @@ struct Emitter {
     SourceLocation where;
 };
 
+// An environment map: what every ray that leaves the scene sees (docs/RENDERING.md §10), loaded
+// from the cube faces or the vertical cross the file names (environment_loading.h). The renderers
+// read it through host/lighting (bordered faces, lookup, importance sampling).
+struct Environment {
+    int faceSize = 0;  // N; 0: no environment map (rays that leave see Scene::background)
+    // +X, -X, +Y, -Y, +Z, -Z (cube_map.h's order and OpenGL orientation), N x N texels each, RGBA8
+    // with r in the low byte, row 0 = the top row, used linearly (byte / 255) as textures are.
+    std::array<std::vector<std::uint32_t>, 6> faces;
+    // Cube faces only: whether the -Z file was read mirrored left-right (the course's 2021 face;
+    // docs/RENDERING.md §10.2), and the mean seam error (per channel, 0-255) of the -Z face's four
+    // edges against its neighbours read each way, from which LoadOptions' default chose. Both
+    // errors are 0 when the -Z rule was forced or the map is a vertical cross.
+    bool negZMirrored = false;
+    double negZSeamErrorAsOpenGL = 0.0;
+    double negZSeamErrorMirrored = 0.0;
+    SourceLocation where;  // the envMapPrefix / envMapVertCross that named it
+};
+
 struct Scene {
     std::string path;                 // the scene file
     // Where the model's coordinates start, in the file's world: every position above is relative
@@ -171,11 +190,13 @@ struct Scene {
     // puts it at the default camera's eye (local_origin.h).
     glm::dvec3 origin{0.0};
     glm::vec3 background{0.0f};
-    // Environment maps, resolved against the scene file's directory; recorded, not rendered (a
-    // warning says so). envMapPrefix names six cube faces `<prefix>posX.png` ...; envMapVertCross
-    // one image holding a vertical cross (JSON only).
+    // Environment maps as the file names them, resolved against the scene file's directory (the
+    // writers and watch mode use these): envMapPrefix names six cube faces `<prefix>posX.png` ...,
+    // envMapVertCross one image holding a vertical cross. `environment` is the one loaded
+    // (envMapPrefix when both are given); faceSize 0 when neither is.
     std::string envMapPrefix;
     std::string envMapVertCross;
+    Environment environment;
     std::vector<Camera> cameras;      // at least one, in file order
     int defaultCamera = 0;            // index into cameras: <sceneParameters><camera>name</camera>, else 0
     std::vector<Light> lights;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "diagnostics.h"
+#include "environment_loading.h"
 #include "scene.h"
 
 namespace vkrt {
@@ -18,6 +19,9 @@ struct LoadOptions {
     // (Scene::origin, local_origin.h): what renders use, so that a scene far from the origin keeps
     // its image. Off, the model holds the file's own numbers (vkrt convert, the loader's tests).
     bool localOrigin = false;
+    // How an environment map's -Z cube face file is read: by default whichever way joins its
+    // neighbours with the smaller seam error (environment_loading.h, docs/RENDERING.md §10.2).
+    NegZRule environmentNegZ = NegZRule::Measure;
 };
 
 Scene loadScene(const std::string& path, const LoadOptions& options, Diagnostics& diagnostics);

@@ -9,6 +9,7 @@
 #include <pugixml.hpp>
 
 #include "camera_parsing.h"
+#include "environment_loading.h"
 #include "light_parsing.h"
 #include "local_origin.h"
 #include "missing_shaders.h"
@@ -36,7 +37,8 @@ bool isElement(pugi::xml_node node, std::string_view name) {
 //      origin, local_origin.h), lights, then shapes and instances, then scene parameters.
 class SceneBuilder {
 public:
-    SceneBuilder(const ParseContext& context, Scene& scene) : context_(context), scene_(scene), meshes_(scene.meshes) {}
+    SceneBuilder(const ParseContext& context, Scene& scene, NegZRule negZ)
+        : context_(context), scene_(scene), meshes_(scene.meshes), negZ_(negZ) {}
 
     void build(pugi::xml_node root) {
         checkAttributes(context_, root, {"bgColor", "envmapPrefix", "envMapPrefix"});
@@ -117,7 +119,6 @@ private:
         const std::string name = node.attribute("name").value();
         if (name.empty() && !inlineInShape) context_.fail(node, "missing required attribute name");
         Shader shader = parseShader(context_, node, textures_);
-        if (shader.diffuseBounce && fallbacks_.first(Fallback::Diffuse)) context_.warn(node, fallbackProblem(Fallback::Diffuse), name);
         if (shader.emission != glm::vec3(0.0f) && fallbacks_.first(Fallback::EmitterShader))
             context_.warn(node, fallbackProblem(Fallback::EmitterShader), name);
         if (!name.empty()) {
@@ -284,12 +285,11 @@ private:
         }
         scene_.emitters.push_back(emitter);
         scene_.lights.push_back(emitterStandInLight(scene_, static_cast<int>(scene_.emitters.size()) - 1));
-        if (fallbacks_.first(Fallback::ShapeLight)) context_.warn(node, fallbackProblem(Fallback::ShapeLight), emitter.name);
     }
 
     // Background and environment map: <sceneParameters> children win over the root attributes
-    // (docs/XML_FORMAT.md §7.3). Environment maps are recorded (resolved against the scene file), not
-    // rendered; a warning says so (render_fallbacks.h).
+    // (docs/XML_FORMAT.md §7.3). The environment map's files resolve against the scene file and are
+    // loaded (environment_loading.h): the cube faces when a prefix is given, else the vertical cross.
     void readSceneParameters(pugi::xml_node root, pugi::xml_node parameters) {
         if (const pugi::xml_attribute bg = root.attribute("bgColor")) {
             scene_.background = parseVec3Text(context_, root, "scene bgColor", bg.value());
@@ -320,12 +320,23 @@ private:
             }
         }
         // The cube faces' prefix and the vertical-cross image are separate fields, as in JSON.
-        for (const auto& [node, text, field] : {std::tuple{prefixNode, &prefix, &scene_.envMapPrefix},
-                                                std::tuple{crossNode, &cross, &scene_.envMapVertCross}}) {
-            if (text->empty()) continue;
-            *field = rules::resolveScenePath(context_.sceneDirectory, *text);
-            if (fallbacks_.first(Fallback::EnvironmentMap)) context_.warn(node, fallbackProblem(Fallback::EnvironmentMap), *text);
+        for (const auto& [text, field] : {std::pair{&prefix, &scene_.envMapPrefix}, std::pair{&cross, &scene_.envMapVertCross}})
+            if (!text->empty()) *field = rules::resolveScenePath(context_.sceneDirectory, *text);
+        EnvironmentProblem problem;
+        std::optional<Environment> environment;
+        pugi::xml_node named = prefixNode;
+        if (!prefix.empty()) {
+            if (!cross.empty()) context_.warn(crossNode, kIgnoredVertCross, cross);
+            environment = loadCubeFaceEnvironment(scene_.envMapPrefix, negZ_, problem);
+        } else if (!cross.empty()) {
+            named = crossNode;
+            environment = loadVerticalCrossEnvironment(scene_.envMapVertCross, problem);
+        } else {
+            return;
         }
+        if (!environment) context_.fail(named, problem.problem, problem.value);
+        scene_.environment = std::move(*environment);
+        scene_.environment.where = {context_.source.path(), context_.source.lineOf(named)};
     }
 
     void selectCamera(pugi::xml_node camera) {
@@ -344,6 +355,7 @@ private:
     std::map<const void*, int> inlineShaders_;   // inline <shader> node -> index into Scene::shaders
     std::map<std::string, int> prototypeByName_; // -1: a skipped (unknown-type) prototype
     FallbackNotes fallbacks_;
+    NegZRule negZ_;
 };
 
 }  // namespace
@@ -357,7 +369,7 @@ Scene loadXmlScene(const std::string& path, const std::string& text, const LoadO
 
     Scene scene;
     scene.path = path;
-    SceneBuilder(context, scene).build(root);
+    SceneBuilder(context, scene, options.environmentNegZ).build(root);
     return scene;
 }
 

@@ -54,8 +54,13 @@ VKRT_CONST uint BINDING_TEXELS = 8;        // readonly uimageBuffer R32UI: RGBA8
 VKRT_CONST uint BINDING_FRAME = 9;         // UBO FrameParams
 VKRT_CONST uint BINDING_ACCUM = 10;        // uimageBuffer RGBA32UI: per-pixel radiance sum (rgb float bits), w unused
 VKRT_CONST uint BINDING_STATUS = 11;       // SSBO RenderStatus
-VKRT_CONST uint BINDING_RAYS = 12;         // trace_rays.comp only: readonly uimageBuffer RGBA32UI, TraceRayInput = 2 texels
-VKRT_CONST uint BINDING_HITS = 13;         // trace_rays.comp only: writeonly uimageBuffer R32UI, TRACE_HIT_WORDS(_INSTANCED) per ray
+VKRT_CONST uint BINDING_EMITTERS = 12;     // EmitterRecord[] (shape emitters)
+VKRT_CONST uint BINDING_EMITTER_TRIANGLES = 13;  // EmitterTriangle[]
+VKRT_CONST uint BINDING_ENVIRONMENT = 14;  // readonly uimageBuffer R32UI: the environment map's bordered cube faces, RGBA8
+VKRT_CONST uint BINDING_ENVIRONMENT_CDF = 15;  // readonly uimageBuffer R32UI: its luminance distribution (float bits)
+VKRT_CONST uint RENDER_BINDING_COUNT = 16; // render.comp declares bindings 0 .. 15
+VKRT_CONST uint BINDING_RAYS = 16;         // trace_rays.comp only: readonly uimageBuffer RGBA32UI, TraceRayInput = 2 texels
+VKRT_CONST uint BINDING_HITS = 17;         // trace_rays.comp only: writeonly uimageBuffer R32UI, TRACE_HIT_WORDS(_INSTANCED) per ray
 
 // ---------------------------------------------------------------------------------------------
 // BVH node as the kernels read it: 48 bytes = 3 RGBA32UI texels, both children's boxes side by
@@ -195,13 +200,16 @@ VKRT_CONST uint SHADER_GLAZE = 3u;
 VKRT_CONST uint SHADER_BLINN_PHONG_MIRRORED = 4u;
 VKRT_CONST uint SHADER_DIELECTRIC = 5u;
 VKRT_CONST uint SHADER_COOL_TO_WARM = 6u;
+VKRT_CONST uint SHADER_DIFFUSE = 7u;   // the course's path-traced Diffuse (Lambertian plus the diffuse bounce)
+VKRT_CONST uint SHADER_EMITTER = 8u;   // a shape emitter's surface: radiance ids.w's EmitterRecord, reflects nothing
 VKRT_CONST uint TEXTURE_NONE = 0xffffffffu;
 struct Material {
     vec4 diffuse;      // rgb diffuse (tint when textured), w unused
     vec4 specular;     // rgb specular, w = phongExp
     vec4 attenuation;  // rgb transmittance per unit distance (dielectric), w = refractive index
     vec4 params;       // x = mirrorCoef, y = roughness, z, w unused
-    uvec4 ids;         // x = SHADER_* type, y = diffuse texture, z = specular texture, w unused
+    uvec4 ids;         // x = SHADER_* type, y = diffuse texture, z = specular texture,
+                       // w = the EmitterRecord of a SHADER_EMITTER (its radiance is in diffuse.rgb)
 };
 VKRT_CONST uint MATERIAL_TEXELS = 5;
 VKRT_FN uint materialType(Material m) { return m.ids.x; }
@@ -211,6 +219,7 @@ VKRT_FN float materialPhongExponent(Material m) { return m.specular.w; }
 VKRT_FN float materialRefractiveIndex(Material m) { return m.attenuation.w; }
 VKRT_FN float materialMirrorCoef(Material m) { return m.params.x; }
 VKRT_FN float materialRoughness(Material m) { return m.params.y; }
+VKRT_FN uint materialEmitter(Material m) { return m.ids.w; }
 
 // ---------------------------------------------------------------------------------------------
 // Light. 80 bytes. A point light has zero edges; an area light is the rectangle
@@ -227,6 +236,44 @@ struct Light {
 VKRT_CONST uint LIGHT_TEXELS = 5;
 VKRT_FN uint lightType(Light l) { return l.info.x; }
 VKRT_FN uint lightAreaOrdinal(Light l) { return l.info.y; }
+
+// ---------------------------------------------------------------------------------------------
+// Shape emitters (a JSON `light` of `_type: "shape"`; docs/RENDERING.md §4): geometry that is
+// visible with radiance L and lights the scene as a continuum of course point lights, sampled by
+// shaders/shared/emitter_sampling.h. Built on the host from the scene (host/lighting/emitter_table.h)
+// in Scene::emitters order; EMITTER_TEXELS texels each, then the world-space triangles of every
+// EMITTER_TRIANGLES emitter in their own table.
+//  - EMITTER_SPHERE: a sphere placed by a similarity (uniform scale, rotation, mirror), sampled
+//    by the solid angle it subtends (a cone of directions), over its whole area from inside it;
+//  - EMITTER_ELLIPSOID: a sphere under any other affine map, sampled uniformly over the object
+//    sphere's area and mapped by the transform (its world area density varies over the surface);
+//  - EMITTER_TRIANGLES: a triangle, a box's twelve or a mesh's triangles in world space, sampled
+//    by world area (a triangle by its cumulative area share, then uniformly inside it).
+VKRT_CONST uint EMITTER_SPHERE = 0u;
+VKRT_CONST uint EMITTER_ELLIPSOID = 1u;
+VKRT_CONST uint EMITTER_TRIANGLES = 2u;
+struct EmitterRecord {
+    vec4 radiance;     // rgb emitted radiance (both sides); w: the area density, 1 / total world
+                       // area (TRIANGLES), or 1 / (4 pi r^2 |det M|) (ELLIPSOID, emitter_sampling.h)
+    vec4 sphere;       // xyz centre, w radius: in world space (SPHERE), in object space (ELLIPSOID)
+    vec4 toWorld[3];   // ELLIPSOID: rows of the 3x4 object-to-world transform
+    vec4 toObject[3];  // ELLIPSOID: rows of its inverse
+    uvec4 info;        // x: EMITTER_* kind, y: first EmitterTriangle, z: triangle count,
+                       // w: light ordinal (its sampling dimension, after the area lights)
+};
+VKRT_CONST uint EMITTER_TEXELS = 9;
+VKRT_FN uint emitterKind(EmitterRecord e) { return e.info.x; }
+VKRT_FN uint emitterFirstTriangle(EmitterRecord e) { return e.info.y; }
+VKRT_FN uint emitterTriangleCount(EmitterRecord e) { return e.info.z; }
+VKRT_FN uint emitterLightOrdinal(EmitterRecord e) { return e.info.w; }
+VKRT_FN float emitterAreaPdf(EmitterRecord e) { return e.radiance.w; }
+struct EmitterTriangle {
+    vec4 corner;  // xyz v0 (world), w: the emitter's area share of its triangles up to and including this one
+    vec4 edge1;   // xyz v1 - v0
+    vec4 edge2;   // xyz v2 - v0
+};
+VKRT_CONST uint EMITTER_TRIANGLE_TEXELS = 3;
+VKRT_FN float emitterTriangleCdf(EmitterTriangle t) { return t.corner.w; }
 
 // Texture: texels[offset .. offset + width*height), row 0 = top row of the image, RGBA8 packed
 // little-endian (r in the low byte), values used linearly (no sRGB decode, like the course).
@@ -251,6 +298,16 @@ VKRT_CONST uint SAMPLER_SOBOL = 3u;
 // that sampler's code is compiled: sample2D's branches on the kind are not skipped on lavapipe,
 // which runs every path for all 8 lanes (host/gpu/README.md, fact 2).
 VKRT_CONST uint SAMPLER_FROM_FRAME = 0xffffffffu;
+// How a Diffuse surface's light from emitters and the environment map is estimated
+// (docs/RENDERING.md §5, RenderOptions::estimator): the expectation is the same for all four.
+//  BOUNCE: only the cosine-weighted bounce ray finds them (the course's week-6 shader);
+//  NEE: only light samples (next-event estimation): a bounce ray that hits them adds nothing;
+//  MIS_BALANCE, MIS_POWER: both, weighted by Veach's balance or power heuristic.
+VKRT_CONST uint ESTIMATOR_BOUNCE = 0u;
+VKRT_CONST uint ESTIMATOR_NEE = 1u;
+VKRT_CONST uint ESTIMATOR_MIS_BALANCE = 2u;
+VKRT_CONST uint ESTIMATOR_MIS_POWER = 3u;
+VKRT_CONST uint ESTIMATOR_FROM_FRAME = 0xffffffffu;  // the general kernel: FrameParams::lighting.y
 struct FrameParams {
     vec4 cameraPosition;  // xyz eye, w = lens radius (aperture / 2; 0 for a pinhole)
     vec4 cameraU;         // xyz unit right vector, w = image plane width
@@ -268,6 +325,8 @@ struct FrameParams {
                           // primitive, w its primitive count; y = w = 0 when none is
     vec4 shutter;         // x open, y close: a camera sample's time is open + (close - open) * u,
                           // in the instances' motion time (0: transform, 1: transformEnd); zw unused
+    uvec4 lighting;       // x shape emitters, y ESTIMATOR_*, z environment face size (0: none),
+                          // w environment distribution cells per face side
 };
 // The kernels read these lanes straight from the uniform block, one lane each, through
 // bindings.glsl's frameSeed(), frameMaxDepth(), ...: passing the block's struct to a function makes
@@ -362,7 +421,11 @@ VKRT_CONST uint SPEC_SAMPLES_PER_DISPATCH = 15;  // a render's k (sample_batchin
 VKRT_CONST uint SPEC_HAS_THIN_LENS = 16;    // the camera has depth of field (Camera::thinLens)
 VKRT_CONST uint SPEC_HAS_TRANSLUCENCY = 17; // a used Dielectric has roughness > 0
 VKRT_CONST uint SPEC_HAS_MOTION = 18;       // an instance moves during the shutter (InstanceMotion)
-VKRT_CONST uint SPEC_COUNT = 19;
+VKRT_CONST uint SPEC_HAS_DIFFUSE = 19;      // a used shader is the course's path-traced Diffuse
+VKRT_CONST uint SPEC_HAS_EMITTERS = 20;     // the scene has shape emitters (EmitterRecord)
+VKRT_CONST uint SPEC_HAS_ENVIRONMENT = 21;  // the scene has an environment map
+VKRT_CONST uint SPEC_ESTIMATOR = 22;        // ESTIMATOR_*, or ESTIMATOR_FROM_FRAME
+VKRT_CONST uint SPEC_COUNT = 23;
 
 // Entries of the kernel's BVH traversal stack. The host refuses a BVH whose top-level depth plus
 // deepest bottom-level depth exceeds it, so the stack can never overflow at run time.
@@ -389,7 +452,9 @@ static_assert(offsetof(Instance, info) == 144);
 static_assert(sizeof(Material) == 16 * MATERIAL_TEXELS);
 static_assert(sizeof(Light) == 16 * LIGHT_TEXELS);
 static_assert(sizeof(TextureInfo) == 16 * TEXTURE_INFO_TEXELS);
-static_assert(sizeof(FrameParams) == 208);
+static_assert(sizeof(EmitterRecord) == 16 * EMITTER_TEXELS);
+static_assert(sizeof(EmitterTriangle) == 16 * EMITTER_TRIANGLE_TEXELS);
+static_assert(sizeof(FrameParams) == 224);
 static_assert(sizeof(RenderStatus) == 16);
 static_assert(sizeof(PassParams) == 32);
 static_assert(sizeof(TraceRayInput) == 32);

@@ -74,6 +74,10 @@ VKRT_FN uint dimGloss(uint depth) { return ((depth + 1u) << 16u) | 0u; }
 VKRT_FN uint dimLight(uint depth, uint areaLightOrdinal) { return ((depth + 1u) << 16u) | (1u + areaLightOrdinal); }
 // Glossy translucency at a dielectric hit of this depth (the slot after every light ordinal).
 VKRT_FN uint dimTranslucency(uint depth) { return ((depth + 1u) << 16u) | 0xffffu; }
+// The Diffuse bounce's direction at a hit of this depth, and the environment map's light samples
+// there (shape emitters take light ordinals after the area lights: dimLight).
+VKRT_FN uint dimBounce(uint depth) { return ((depth + 1u) << 16u) | 0xfffeu; }
+VKRT_FN uint dimEnvironment(uint depth) { return ((depth + 1u) << 16u) | 0xfffdu; }
 
 // A pseudo-random permutation of [0, n): a bijection on the enclosing power of two, built from
 // steps that are each invertible modulo 2^k (xor with a key, multiply by an odd constant,

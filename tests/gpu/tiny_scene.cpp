@@ -47,6 +47,7 @@ TinyScene::TinyScene() {
     b.topRoot = 1;
     accel.groupPrims = {{PrimOrigin{&scene.shapes[0], -1}}};
     accel.instanceOrigin = {-1};
+    accel.instanceEmitter = {-1};
 }
 
 GpuSceneData TinyScene::gpu() const { return prepareGpuScene(scene, accel); }

@@ -266,37 +266,43 @@ TEST_F(BackgroundParsing, MalformedAttributeNamesTheAttribute) {
     expectIssue(issue, 2, "scene bgColor", "0.5 0.5");
 }
 
-TEST_F(BackgroundParsing, EnvMapPrefixAttributeIsRecordedWithAWarning) {
+TEST_F(BackgroundParsing, EnvMapPrefixAttributeIsResolvedAndLoaded) {
+    writeCubeFaces("data/reef_");
     const std::string xml = sceneWith("", " bgColor=\"1 0 0\" envmapPrefix=\"data/reef_\"");
-    Diagnostics diagnostics;
-    const Scene scene = load(xml, diagnostics);
+    const Scene scene = loadClean(xml);
     EXPECT_EQ(scene.envMapPrefix, (dir / "data/reef_").lexically_normal().string());  // resolved against the file
     EXPECT_EQ(scene.background, glm::vec3(1, 0, 0));
-    ASSERT_EQ(diagnostics.warnings().size(), 1u);
-    expectIssue(diagnostics.warnings()[0], 2, "scene", "data/reef_");
-    EXPECT_NE(diagnostics.warnings()[0].problem.find("not rendered"), std::string::npos);
+    EXPECT_EQ(scene.environment.faceSize, 2);
+    EXPECT_EQ(scene.environment.where.line, 2);
 }
 
-TEST_F(BackgroundParsing, EnvMapPrefixElementWinsAndWarnsOnce) {
+TEST_F(BackgroundParsing, EnvMapPrefixElementWinsOverTheAttribute) {
+    writeCubeFaces("images/reef_");  // data/reef_, the attribute's, does not exist: it is not read
     const std::string xml = sceneWith(
         "<sceneParameters>\n<bgColor>0.5 0.5 0.6</bgColor>\n<envMapPrefix>images/reef_</envMapPrefix>\n</sceneParameters>",
         " envmapPrefix=\"data/reef_\"");
-    Diagnostics diagnostics;
-    const Scene scene = load(xml, diagnostics);
+    const Scene scene = loadClean(xml);
     EXPECT_EQ(scene.envMapPrefix, (dir / "images/reef_").lexically_normal().string());
-    ASSERT_EQ(diagnostics.warnings().size(), 1u);
-    expectIssue(diagnostics.warnings()[0], lineOf(xml, "<envMapPrefix>"), "envMapPrefix", "images/reef_");
+    EXPECT_EQ(scene.environment.where.line, lineOf(xml, "<envMapPrefix>"));
 }
 
-// The vertical-cross image is its own field, not the cube faces' prefix (as in JSON).
+TEST_F(BackgroundParsing, AMissingEnvironmentMapIsAnErrorAtItsElement) {
+    const std::string xml = sceneWith("", " envmapPrefix=\"data/reef_\"");
+    expectIssue(errorOf(xml), 2, "scene", (dir / "data/reef_posX.png").lexically_normal().string());
+}
+
+// The vertical-cross image is its own field, not the cube faces' prefix (as in JSON); with both
+// given, the cube faces are the map and the cross is warned about.
 TEST_F(BackgroundParsing, EnvMapVertCrossIsKeptApartFromThePrefix) {
+    writeCubeFaces("images/reef_");
     const std::string xml = sceneWith(
         "<sceneParameters>\n<envMapPrefix>images/reef_</envMapPrefix>\n<envMapVertCross>cross.png</envMapVertCross>\n</sceneParameters>");
     Diagnostics diagnostics;
     const Scene scene = load(xml, diagnostics);
     EXPECT_EQ(scene.envMapPrefix, (dir / "images/reef_").lexically_normal().string());
     EXPECT_EQ(scene.envMapVertCross, (dir / "cross.png").lexically_normal().string());
-    ASSERT_EQ(diagnostics.warnings().size(), 1u);  // one fallback warning per scene
+    ASSERT_EQ(diagnostics.warnings().size(), 1u);
+    expectIssue(diagnostics.warnings()[0], lineOf(xml, "<envMapVertCross>"), "envMapVertCross", "cross.png");
 }
 
 }  // namespace

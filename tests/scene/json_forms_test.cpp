@@ -126,16 +126,21 @@ TEST_F(JsonForms, BackgroundPrecedenceIsSceneParametersThenUnderscoreThenPlain) 
     EXPECT_EQ(second.warnings().size(), 1u);
 }
 
-TEST_F(JsonForms, EnvironmentMapsResolveBesideTheFileWithOneWarning) {
+TEST_F(JsonForms, EnvironmentMapsResolveBesideTheFileAndThePrefixWins) {
+    writeCubeFaces("images/reef_");
     const std::string json = jsonWith(R"("sceneParameters": {"envMapPrefix": "images/reef_", "envMapVertCross": "images/cross.png"})");
     Diagnostics diagnostics;
     const Scene scene = loadJson(json, diagnostics);
     EXPECT_EQ(scene.envMapPrefix, (dir / "images/reef_").string());
     EXPECT_EQ(scene.envMapVertCross, (dir / "images/cross.png").string());
+    EXPECT_EQ(scene.environment.faceSize, 2);
     ASSERT_EQ(diagnostics.warnings().size(), 1u);
-    expectJsonIssueAt(diagnostics.warnings()[0], json, "\"images/reef_\"", "scene.sceneParameters.envMapPrefix", "images/reef_");
-    EXPECT_EQ(diagnostics.warnings()[0].problem, "environment maps are not rendered, the background colour is used");
+    expectJsonIssueAt(diagnostics.warnings()[0], json, "\"images/cross.png\"", "scene.sceneParameters.envMapVertCross", "images/cross.png");
+    EXPECT_EQ(diagnostics.warnings()[0].problem, "ignored, the environment map is envMapPrefix's cube faces");
     EXPECT_TRUE(loadJsonClean(jsonWith(R"("sceneParameters": {"envMapVertCross": ""})")).envMapVertCross.empty());
+    const std::string missing = jsonWith(R"("sceneParameters": {"envMapVertCross": "nothing.png"})");
+    expectJsonIssueAt(jsonErrorOf(missing), missing, "\"nothing.png\"", "scene.sceneParameters.envMapVertCross",
+                      (dir / "nothing.png").string());
 }
 
 TEST_F(JsonForms, PrototypesAreInstancedWithOrWithoutAShaderOverride) {

@@ -108,6 +108,7 @@ class SceneRoundTripFields : public SceneFiles {};
 TEST_F(SceneRoundTripFields, AHandMadeSceneWithEveryFieldSurvivesBothWriters) {
     write("tex.ppm", "P3\n2 1\n255\n255 0 0 0 255 0\n");
     write("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n");
+    writeCubeFaces("faces/sky_");  // (cross.png is not read: the prefix wins, with a warning)
     const std::string xml = R"(<?xml version="1.0"?>
 <scene bgColor="0.1 0.2 0.30000001">
   <sceneParameters><envMapPrefix>faces/sky_</envMapPrefix><envMapVertCross>cross.png</envMapVertCross><camera>side</camera></sceneParameters>

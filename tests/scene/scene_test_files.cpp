@@ -5,6 +5,8 @@
 
 #include <unistd.h>
 
+#include <OpenImageIO/imageio.h>
+
 namespace vkrt::test {
 
 std::string sceneWith(const std::string& body, const std::string& rootAttributes) {
@@ -96,6 +98,18 @@ std::string SceneFiles::write(const std::string& name, const std::string& text) 
     std::filesystem::create_directories(path.parent_path());
     std::ofstream(path, std::ios::binary) << text;
     return path.string();
+}
+
+void SceneFiles::writeCubeFaces(const std::string& prefix) const {
+    for (const char* face : {"posX", "negX", "posY", "negY", "posZ", "negZ"}) {
+        const std::filesystem::path path = dir / (prefix + face + ".png");
+        std::filesystem::create_directories(path.parent_path());
+        const unsigned char grey[2 * 2 * 3] = {90, 90, 90, 90, 90, 90, 90, 90, 90, 90, 90, 90};
+        auto out = OIIO::ImageOutput::create(path.string());
+        ASSERT_TRUE(out && out->open(path.string(), OIIO::ImageSpec(2, 2, 3, OIIO::TypeDesc::UINT8))) << path;
+        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, grey)) << path;
+        out->close();
+    }
 }
 
 Scene SceneFiles::load(const std::string& xml, Diagnostics& diagnostics, bool strict) const {

@@ -36,6 +36,9 @@ protected:
 
     // Writes `text` to dir/name and returns the path.
     std::string write(const std::string& name, const std::string& text) const;
+    // Writes an environment map's six faces dir/<prefix>posX.png ... negZ.png (2 x 2 grey PNGs):
+    // scenes that name one load it (environment_loading.h).
+    void writeCubeFaces(const std::string& prefix) const;
     Scene load(const std::string& xml, Diagnostics& diagnostics, bool strict = false) const;
     // The same for JSON text, written to dir/scene.json (jsonPath).
     Scene loadJson(const std::string& json, Diagnostics& diagnostics, bool strict = false) const;

@@ -136,7 +136,7 @@ TEST(SceneBuffers, PlanPadsEmptyTablesToOneElement) {
     SceneTables tables;  // all empty
     const GpuNodes nodes = gpuNodes(tiny.accel.bvh);
     const std::vector<BufferPlan> plan = planSceneBuffers(tables, tiny.accel.bvh, nodeBytes(nodes), 10);
-    ASSERT_EQ(plan.size(), gpu::BINDING_STATUS + 1u);
+    ASSERT_EQ(plan.size(), gpu::RENDER_BINDING_COUNT);
     // One zeroed element, then the texel-buffer padding that keeps lavapipe's JIT key stable.
     EXPECT_EQ(plan[gpu::BINDING_SHADERS].bytes, stableTexelBufferBytes(sizeof(gpu::Material)));
     EXPECT_EQ(plan[gpu::BINDING_SHADERS].kind, BufferKind::StorageTexel);

@@ -1,0 +1,139 @@
+#include "emitter_table.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace vkrt {
+
+namespace {
+
+const Shape& shapeOf(const Scene& scene, const Emitter& emitter) {
+    return emitter.prototype >= 0 ? scene.prototypes.at(static_cast<std::size_t>(emitter.prototype)) : emitter.shape;
+}
+
+// The 3x4 rows of an affine matrix (glm is column-major: row r is m[c][r]).
+void rowsOf(const glm::mat4& m, glm::vec4 rows[3]) {
+    for (int r = 0; r < 3; ++r) rows[r] = glm::vec4(m[0][r], m[1][r], m[2][r], m[3][r]);
+}
+
+// Whether the 3x3 part is a similarity: orthogonal columns of one length. A relative tolerance of
+// 1e-5 admits the rounding of a rotation composed from degrees; anything further from a
+// similarity is sampled as the ellipsoid it is.
+bool isSimilarity(const glm::mat3& a, float& scale) {
+    const float l0 = glm::length(a[0]), l1 = glm::length(a[1]), l2 = glm::length(a[2]);
+    scale = (l0 + l1 + l2) / 3.0f;
+    const float tol = 1e-5f * scale;
+    const bool equal = std::fabs(l0 - scale) <= tol && std::fabs(l1 - scale) <= tol && std::fabs(l2 - scale) <= tol;
+    const float tol2 = 1e-5f * scale * scale;
+    return equal && std::fabs(glm::dot(a[0], a[1])) <= tol2 && std::fabs(glm::dot(a[0], a[2])) <= tol2 &&
+           std::fabs(glm::dot(a[1], a[2])) <= tol2;
+}
+
+// The world-space triangles of a box, a triangle or a mesh under `toWorld`.
+std::vector<glm::vec3> worldTriangles(const Scene& scene, const Shape& shape, const glm::mat4& toWorld) {
+    std::vector<glm::vec3> corners;
+    auto add = [&](glm::vec3 a, glm::vec3 b, glm::vec3 c) {
+        for (const glm::vec3& p : {a, b, c}) corners.push_back(glm::vec3(toWorld * glm::vec4(p, 1.0f)));
+    };
+    switch (shape.type) {
+    case ShapeType::Triangle: add(shape.v0, shape.v1, shape.v2); break;
+    case ShapeType::Box: {
+        const glm::vec3 lo = shape.minPt, hi = shape.maxPt;
+        auto corner = [&](int i) { return glm::vec3(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z); };
+        // Each face as two triangles over its four corners (bit `axis` fixed to `side`).
+        for (int axis = 0; axis < 3; ++axis) {
+            const int u = 1 << ((axis + 1) % 3), v = 1 << ((axis + 2) % 3);
+            for (int side = 0; side < 2; ++side) {
+                const int base = side << axis;
+                add(corner(base), corner(base | u), corner(base | u | v));
+                add(corner(base), corner(base | u | v), corner(base | v));
+            }
+        }
+        break;
+    }
+    case ShapeType::Mesh: {
+        const Mesh& mesh = scene.meshes.at(static_cast<std::size_t>(shape.mesh));
+        corners.reserve(mesh.triangles.size() * 3);
+        for (const glm::uvec3& t : mesh.triangles) add(mesh.positions[t.x], mesh.positions[t.y], mesh.positions[t.z]);
+        break;
+    }
+    case ShapeType::Sphere: break;
+    }
+    return corners;
+}
+
+void addTriangles(EmitterTable& table, gpu::EmitterRecord& record, const std::vector<glm::vec3>& corners) {
+    const std::size_t count = corners.size() / 3;
+    std::vector<double> areas(count);
+    double total = 0.0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const glm::dvec3 a(corners[3 * i]), b(corners[3 * i + 1]), c(corners[3 * i + 2]);
+        areas[i] = 0.5 * glm::length(glm::cross(b - a, c - a));
+        total += areas[i];
+    }
+    record.info.x = gpu::EMITTER_TRIANGLES;
+    record.info.y = static_cast<std::uint32_t>(table.triangles.size());
+    if (!(total > 0.0)) return;  // no area: nothing to sample (and nothing to see)
+    record.info.z = static_cast<std::uint32_t>(count);
+    record.radiance.w = static_cast<float>(1.0 / total);
+    double running = 0.0;
+    for (std::size_t i = 0; i < count; ++i) {
+        running += areas[i];
+        gpu::EmitterTriangle t;
+        // The last share is exactly 1, so every u in [0, 1) finds a triangle.
+        const float share = i + 1 == count ? 1.0f : static_cast<float>(running / total);
+        t.corner = glm::vec4(corners[3 * i], share);
+        t.edge1 = glm::vec4(corners[3 * i + 1] - corners[3 * i], 0.0f);
+        t.edge2 = glm::vec4(corners[3 * i + 2] - corners[3 * i], 0.0f);
+        table.triangles.push_back(t);
+    }
+}
+
+}  // namespace
+
+std::uint32_t areaLightCount(const Scene& scene) {
+    return static_cast<std::uint32_t>(
+        std::count_if(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.type == LightType::Area; }));
+}
+
+EmitterTable buildEmitterTable(const Scene& scene) {
+    EmitterTable table;
+    const std::uint32_t firstOrdinal = areaLightCount(scene);
+    for (std::size_t e = 0; e < scene.emitters.size(); ++e) {
+        const Emitter& emitter = scene.emitters[e];
+        const Shape& shape = shapeOf(scene, emitter);
+        gpu::EmitterRecord record{};
+        record.radiance = glm::vec4(emitter.radiance, 0.0f);
+        record.info.w = firstOrdinal + static_cast<std::uint32_t>(e);
+        if (shape.type == ShapeType::Sphere) {
+            const glm::mat3 linear(emitter.objectToWorld);
+            float scale = 1.0f;
+            if (isSimilarity(linear, scale)) {
+                record.info.x = gpu::EMITTER_SPHERE;
+                record.sphere = glm::vec4(glm::vec3(emitter.objectToWorld * glm::vec4(shape.center, 1.0f)), shape.radius * scale);
+            } else {
+                record.info.x = gpu::EMITTER_ELLIPSOID;
+                record.sphere = glm::vec4(shape.center, shape.radius);
+                rowsOf(emitter.objectToWorld, record.toWorld);
+                rowsOf(glm::inverse(emitter.objectToWorld), record.toObject);
+                const double det = std::fabs(static_cast<double>(glm::determinant(linear)));
+                const double r = shape.radius;
+                record.radiance.w = static_cast<float>(1.0 / (4.0 * std::numbers::pi * r * r * det));
+            }
+        } else {
+            addTriangles(table, record, worldTriangles(scene, shape, emitter.objectToWorld));
+        }
+        table.records.push_back(record);
+    }
+    return table;
+}
+
+std::uint32_t pickEmitterTriangle(const EmitterTable& table, const gpu::EmitterRecord& record, float u) {
+    const auto first = table.triangles.begin() + gpu::emitterFirstTriangle(record);
+    const auto last = first + gpu::emitterTriangleCount(record);
+    const auto it = std::upper_bound(first, last, u, [](float x, const gpu::EmitterTriangle& t) { return x < t.corner.w; });
+    return static_cast<std::uint32_t>(std::min(it, last - 1) - table.triangles.begin());
+}
+
+}  // namespace vkrt

@@ -1,0 +1,30 @@
+// Scene::emitters -> the records both renderers sample them by (gpu::EmitterRecord and
+// gpu::EmitterTriangle, shaders/shared/device_host.h; the sampling itself is
+// shaders/shared/emitter_sampling.h). World space, in Scene::emitters order.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "device_host.h"
+#include "scene.h"
+
+namespace vkrt {
+
+struct EmitterTable {
+    std::vector<gpu::EmitterRecord> records;     // one per Scene::emitters entry
+    std::vector<gpu::EmitterTriangle> triangles; // the EMITTER_TRIANGLES records' triangles
+};
+
+// The number of area lights: the emitters' light ordinals (sampling dimensions) follow theirs.
+std::uint32_t areaLightCount(const Scene& scene);
+
+// A sphere stays a sphere (sampled by its cone) under a similarity; any other affine map makes it
+// an ellipsoid (sampled by area). Boxes are their twelve triangles, meshes their triangles.
+EmitterTable buildEmitterTable(const Scene& scene);
+
+// The index of the triangle an EMITTER_TRIANGLES sample u.x picks: the first whose cumulative
+// share exceeds u (the GLSL kernel's search is the same: the same triangle on both devices).
+std::uint32_t pickEmitterTriangle(const EmitterTable& table, const gpu::EmitterRecord& record, float u);
+
+}  // namespace vkrt

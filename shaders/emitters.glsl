@@ -1,0 +1,45 @@
+// Shape emitters in the kernel (docs/RENDERING.md §4): a point of one seen from a shading point,
+// and the density with which its light samples reach a point a ray hit. The sampling itself is
+// shared with the CPU reference (shared/emitter_sampling.h); this file fetches the records.
+#ifndef VKRT_EMITTERS_GLSL
+#define VKRT_EMITTERS_GLSL
+
+// The triangle an EMITTER_TRIANGLES sample u picks: the first whose cumulative share exceeds u,
+// by binary search (host/lighting/emitter_table.cpp pickEmitterTriangle is the same search).
+uint pickEmitterTriangle(EmitterRecord e, float u) {
+    uint lo = emitterFirstTriangle(e);
+    uint hi = lo + emitterTriangleCount(e);
+    uint last = hi - 1u;
+    while (lo < hi) {
+        if (!chargeLoop()) break;
+        uint mid = (lo + hi) >> 1u;
+        if (u < emitterTriangleShare(mid)) hi = mid;
+        else lo = mid + 1u;
+    }
+    if (lo < hi) markLoopCutOff();
+    return min(lo, last);
+}
+
+EmitterSample sampleEmitter(EmitterRecord e, vec3 x, vec2 u) {
+    uint kind = emitterKind(e);
+    if (kind == EMITTER_SPHERE) return sampleSphereEmitter(x, e.sphere.xyz, e.sphere.w, u);
+    if (kind == EMITTER_ELLIPSOID) return sampleEllipsoidEmitter(e, x, u);
+    EmitterSample none;
+    none.point = x;
+    none.normal = vec3(0.0, 0.0, 1.0);
+    none.pdf = 0.0;
+    if (emitterTriangleCount(e) == 0u) return none;
+    uint i = pickEmitterTriangle(e, u.x);
+    float previous = i > emitterFirstTriangle(e) ? emitterTriangleShare(i - 1u) : 0.0;
+    return sampleEmitterTriangle(loadEmitterTriangle(i), previous, emitterAreaPdf(e), x, u);
+}
+
+// The solid-angle density at x of the emitter's light samples reaching its point q (normal nq).
+float emitterPdf(EmitterRecord e, vec3 x, vec3 q, vec3 nq) {
+    uint kind = emitterKind(e);
+    if (kind == EMITTER_SPHERE) return sphereEmitterPdf(x, e.sphere.xyz, e.sphere.w, q, nq);
+    if (kind == EMITTER_ELLIPSOID) return ellipsoidEmitterPdf(e, x, q, nq);
+    return emitterTriangleCount(e) == 0u ? 0.0 : solidAnglePdf(emitterAreaPdf(e), x, q, nq);
+}
+
+#endif

@@ -1,0 +1,202 @@
+// Directions and light points for path tracing, for the CPU reference and the GLSL kernels alike
+// (this file is valid C++ and valid GLSL; docs/RENDERING.md §4-§5): the Diffuse bounce's
+// cosine-weighted direction, a point on a shape emitter with its solid-angle density, and the
+// multiple-importance weights. One definition, so both devices draw the same directions from the
+// same sample numbers (equal to rounding, not bit for bit: the GPU may fuse multiply-adds and its
+// sqrt, sin and cos are less exact).
+//
+// Densities are per steradian as seen from the shading point x. A density of 0 means "no
+// sample": the caller adds nothing for it.
+#ifndef VKRT_EMITTER_SAMPLING_H
+#define VKRT_EMITTER_SAMPLING_H
+
+#ifdef __cplusplus
+#include <glm/glm.hpp>
+#include "device_host.h"
+#include "sampling.h"
+namespace vkrt::emitters {
+using glm::abs;
+using glm::cos;
+using glm::cross;
+using glm::dot;
+using glm::length;
+using glm::max;
+using glm::min;
+using glm::normalize;
+using glm::sin;
+using glm::sqrt;
+using gpu::EmitterRecord;
+using gpu::EmitterTriangle;
+using gpu::uint;
+using gpu::vec2;
+using gpu::vec3;
+using gpu::vec4;
+using mat3 = glm::mat3;
+using sampling::concentricDisk;
+#endif
+
+VKRT_CONST float EMITTER_PI = 3.14159265358979f;
+VKRT_CONST float EMITTER_INV_PI = 0.318309886183791f;
+
+// An orthonormal basis whose third column is the unit vector n. Every such construction jumps
+// somewhere (no tangent field on the sphere is continuous); where it jumps matters here, because
+// both devices must pick the same side for the same surface. Duff et al.'s (2017) jumps at n.z = 0:
+// on every wall and floor of an axis-aligned room, whose normals' z is a rounding error of either
+// sign, so the CPU and the GPU drew unrelated bounces on whole triangles. This one is the cross
+// product with a fixed reference direction G1 (unit: 0.48^2 + 0.6^2 + 0.64^2 = 1), or G2 (unit and
+// orthogonal to G1) within 37 degrees of +-G1, so it jumps only on the cone |n.G1| = 0.8, which no
+// axis direction is near (|components of G1| <= 0.64) and where |cross| >= 0.6 on both sides.
+VKRT_FN mat3 basisAround(vec3 n) {
+    vec3 a = abs(dot(n, vec3(0.48f, 0.6f, 0.64f))) < 0.8f ? vec3(0.48f, 0.6f, 0.64f) : vec3(0.780869f, -0.624695f, 0.0f);
+    vec3 t = normalize(cross(a, n));
+    return mat3(t, cross(n, t), n);
+}
+
+// A cosine-weighted direction around the unit normal n (Malley's method: the concentric disc
+// point lifted onto the hemisphere, so the sample's strata stay compact). Density cos / pi.
+VKRT_FN vec3 cosineDirection(vec3 n, vec2 u) {
+    vec2 d = concentricDisk(u);
+    float z = sqrt(max(0.0f, 1.0f - d.x * d.x - d.y * d.y));
+    return normalize(basisAround(n) * vec3(d.x, d.y, z));
+}
+VKRT_FN float cosinePdf(vec3 n, vec3 dir) { return max(dot(n, dir), 0.0f) * EMITTER_INV_PI; }
+
+// A uniformly distributed unit vector (Archimedes: z uniform in [-1, 1]).
+VKRT_FN vec3 uniformSphereDirection(vec2 u) {
+    float z = 1.0f - 2.0f * u.x;
+    float r = sqrt(max(0.0f, 1.0f - z * z));
+    float phi = 2.0f * EMITTER_PI * u.y;
+    return vec3(r * cos(phi), r * sin(phi), z);
+}
+
+// A point on an emitter seen from x: `pdf` is per steradian at x (0: none).
+struct EmitterSample {
+    vec3 point;
+    vec3 normal;  // unit, the surface's outward side (emission is two-sided)
+    float pdf;
+};
+
+// From an area density at point q with unit normal nq to a solid-angle density at x.
+VKRT_FN float solidAnglePdf(float areaPdf, vec3 x, vec3 q, vec3 nq) {
+    vec3 d = q - x;
+    float cosQ = abs(dot(nq, normalize(d)));
+    return cosQ > 0.0f ? areaPdf * dot(d, d) / cosQ : 0.0f;
+}
+
+// 1 - cos(theta_max) of the cone a sphere of radius r subtends at distance^2 d2 > r^2, written as
+// sin^2 / (1 + cos) so that a small, far sphere keeps its digits (1 - cos would cancel).
+VKRT_FN float coneOneMinusCos(float d2, float r) {
+    float sin2 = min(r * r / d2, 1.0f);
+    return sin2 / (1.0f + sqrt(1.0f - sin2));
+}
+
+// Whether x samples the sphere by its cone: outside it by a margin, so the cone is well defined
+// (from inside, or on it, the whole sphere is sampled by area).
+VKRT_FN bool sphereConeApplies(vec3 x, vec3 c, float r) {
+    vec3 toC = c - x;
+    return dot(toC, toC) > r * r * 1.0001f;
+}
+
+// EMITTER_SPHERE (world centre c, radius r): by the solid angle it subtends from x (the cone of
+// directions towards it, uniformly), or uniformly by area when x is inside or on it.
+VKRT_FN EmitterSample sampleSphereEmitter(vec3 x, vec3 c, float r, vec2 u) {
+    EmitterSample s;
+    if (!sphereConeApplies(x, c, r)) {
+        s.normal = uniformSphereDirection(u);
+        s.point = c + r * s.normal;
+        s.pdf = solidAnglePdf(1.0f / (4.0f * EMITTER_PI * r * r), x, s.point, s.normal);
+        return s;
+    }
+    vec3 toC = c - x;
+    float d2 = dot(toC, toC);
+    float d = sqrt(d2);
+    float oneMinusCosMax = coneOneMinusCos(d2, r);
+    float oneMinusCos = u.x * oneMinusCosMax;
+    float cosTheta = 1.0f - oneMinusCos;
+    float sin2Theta = oneMinusCos * (2.0f - oneMinusCos);
+    float sinTheta = sqrt(max(0.0f, sin2Theta));
+    float phi = 2.0f * EMITTER_PI * u.y;
+    vec3 dir = normalize(basisAround(toC / d) * vec3(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta));
+    // The nearer intersection of x + t dir with the sphere: t = d cos - sqrt(r^2 - d^2 sin^2).
+    float t = d * cosTheta - sqrt(max(0.0f, r * r - d2 * sin2Theta));
+    s.point = x + t * dir;
+    s.normal = normalize(s.point - c);
+    s.pdf = 1.0f / (2.0f * EMITTER_PI * oneMinusCosMax);
+    return s;
+}
+
+// The density sampleSphereEmitter gives the point q (unit normal nq) it reaches from x.
+VKRT_FN float sphereEmitterPdf(vec3 x, vec3 c, float r, vec3 q, vec3 nq) {
+    if (!sphereConeApplies(x, c, r)) return solidAnglePdf(1.0f / (4.0f * EMITTER_PI * r * r), x, q, nq);
+    vec3 toC = c - x;
+    return 1.0f / (2.0f * EMITTER_PI * coneOneMinusCos(dot(toC, toC), r));
+}
+
+// The 3x4 affine rows of an EmitterRecord applied to a point, and the transpose of the 3x3 part of
+// `rows` applied to a vector (with toObject's rows: M^-T v, the normal of the world surface).
+VKRT_FN vec3 applyRows(vec4 r0, vec4 r1, vec4 r2, vec3 p) {
+    return vec3(dot(vec3(r0), p) + r0.w, dot(vec3(r1), p) + r1.w, dot(vec3(r2), p) + r2.w);
+}
+VKRT_FN vec3 applyTransposed(vec4 r0, vec4 r1, vec4 r2, vec3 v) {
+    return v.x * vec3(r0) + v.y * vec3(r1) + v.z * vec3(r2);
+}
+
+// EMITTER_ELLIPSOID: uniformly over the object sphere's area, mapped to the world. A patch dA of
+// the object sphere with unit normal n becomes |det M| |M^-T n| dA in the world (Nanson's
+// formula), so the world area density is 1 / (4 pi r^2 |det M|) (the record's constant) divided
+// by |M^-T n|.
+VKRT_FN float ellipsoidAreaPdf(EmitterRecord e, vec3 objectNormal) {
+    float stretch = length(applyTransposed(e.toObject[0], e.toObject[1], e.toObject[2], objectNormal));
+    return stretch > 0.0f ? emitterAreaPdf(e) / stretch : 0.0f;
+}
+VKRT_FN EmitterSample sampleEllipsoidEmitter(EmitterRecord e, vec3 x, vec2 u) {
+    EmitterSample s;
+    vec3 n = uniformSphereDirection(u);
+    s.point = applyRows(e.toWorld[0], e.toWorld[1], e.toWorld[2], vec3(e.sphere) + e.sphere.w * n);
+    s.normal = normalize(applyTransposed(e.toObject[0], e.toObject[1], e.toObject[2], n));
+    s.pdf = solidAnglePdf(ellipsoidAreaPdf(e, n), x, s.point, s.normal);
+    return s;
+}
+// The density sampleEllipsoidEmitter gives the world point q (unit normal nq) it reaches from x.
+VKRT_FN float ellipsoidEmitterPdf(EmitterRecord e, vec3 x, vec3 q, vec3 nq) {
+    vec3 n = normalize(applyRows(e.toObject[0], e.toObject[1], e.toObject[2], q) - vec3(e.sphere));
+    return solidAnglePdf(ellipsoidAreaPdf(e, n), x, q, nq);
+}
+
+// EMITTER_TRIANGLES: the triangle whose cumulative share first exceeds u.x was chosen by the
+// caller (a binary search over emitterTriangleCdf, the same on both sides); `previousCdf` is the
+// share before it. u.x is stretched back to [0, 1) inside that triangle's share, and the point is
+// uniform in the triangle (square-root map), so the world area density is the emitter's constant.
+VKRT_FN EmitterSample sampleEmitterTriangle(EmitterTriangle t, float previousCdf, float areaPdf, vec3 x, vec2 u) {
+    float width = emitterTriangleCdf(t) - previousCdf;
+    float ux = width > 0.0f ? min((u.x - previousCdf) / width, 0.99999994f) : 0.0f;
+    float su = sqrt(max(ux, 0.0f));
+    EmitterSample s;
+    s.point = vec3(t.corner) + su * (1.0f - u.y) * vec3(t.edge1) + su * u.y * vec3(t.edge2);
+    s.normal = normalize(cross(vec3(t.edge1), vec3(t.edge2)));
+    s.pdf = solidAnglePdf(areaPdf, x, s.point, s.normal);
+    return s;
+}
+
+// Veach's multiple-importance weight of a strategy with density `a` (times its sample count)
+// against one with density `b`: the balance heuristic a / (a + b), or the power heuristic with
+// exponent 2. Densities can reach float's range on a tiny, far emitter (1 / (2 pi (1 - cos))),
+// so both are scaled by the larger before squaring.
+VKRT_FN float misWeight(float a, float b, bool power) {
+    if (!(a > 0.0f)) return 0.0f;
+    if (!(b > 0.0f)) return 1.0f;
+    float m = max(a, b);
+    float x = a / m;
+    float y = b / m;
+    if (power) {
+        x *= x;
+        y *= y;
+    }
+    return x / (x + y);
+}
+
+#ifdef __cplusplus
+}  // namespace vkrt::emitters
+#endif
+
+#endif  // VKRT_EMITTER_SAMPLING_H
