@@ -54,8 +54,45 @@ glm::vec3 Integrator::trace(const bvh::Ray& ray, int depth, glm::vec3 weight, Sa
     bvh::Ray timed = ray;
     timed.time = key.time;
     bvh::Hit hit;
-    if (!bvh::intersectClosest(ctx_.accel->bvh, timed, hit)) return ctx_.background;
+    if (!bvh::intersectClosest(ctx_.accel->bvh, timed, hit)) return escaped(timed.dir, bouncePdf);
     return shade(timed, hit, depth, weight, key, bouncePdf);
+}
+
+glm::vec3 Integrator::escaped(const glm::vec3& dir, float bouncePdf) const {
+    if (ctx_.environment.faceSize == 0) return ctx_.background;  // never light-sampled: always seen in full
+    const glm::vec3 radiance = environmentRadiance(ctx_.environment, dir);
+    if (!(bouncePdf > 0.0f)) return radiance;
+    if (!diffuseWeighs()) return glm::vec3(0.0f);  // next-event estimation counted it already
+    const float lightPdf = static_cast<float>(ctx_.lightSamples) * vkrt::environmentPdf(ctx_.environmentLights, dir);
+    return radiance * emitters::misWeight(bouncePdf, lightPdf, ctx_.estimator == Estimator::MisPower);
+}
+
+glm::vec3 Integrator::environmentLight(const SurfacePoint& sp, const glm::vec3& n, const glm::vec3& ng, int depth,
+                                       SampleKey key) {
+    const bool weighs = diffuseWeighs();
+    const float k = static_cast<float>(ctx_.lightSamples);
+    const std::uint32_t dim = sampling::dimEnvironment(static_cast<std::uint32_t>(depth));
+    glm::vec3 sum(0.0f);
+    for (std::uint32_t j = 0; j < ctx_.lightSamples; ++j) {
+        const glm::vec2 u = sampling::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel, key.sample * ctx_.lightSamples + j,
+                                               dim, ctx_.seed);
+        const EnvironmentSample s = sampleEnvironment(ctx_.environmentLights, u);
+        const float cosine = glm::dot(n, s.direction);
+        // No light from inside the surface, as for the bounce.
+        if (cosine <= 0.0f || glm::dot(s.direction, ng) <= 0.0f) continue;
+        const float w = weighs ? emitters::misWeight(k * s.pdf, emitters::cosinePdf(n, s.direction),
+                                                     ctx_.estimator == Estimator::MisPower)
+                               : 1.0f;
+        if (!(w > 0.0f)) continue;
+        ++counts_.shadow;
+        bvh::Ray shadow;
+        shadow.origin = offsetRayOrigin(sp.position, sideOf(ng, s.direction), sp.errorMagnitude);
+        shadow.dir = s.direction;
+        shadow.time = key.time;
+        if (bvh::intersectAny(ctx_.accel->bvh, shadow)) continue;
+        sum += environmentRadiance(ctx_.environment, s.direction) * (w * cosine * emitters::EMITTER_INV_PI / s.pdf);
+    }
+    return sum / k;
 }
 
 float Integrator::emitterPdf(int e, const glm::vec3& x, const glm::vec3& q, const glm::vec3& nq) const {
@@ -200,6 +237,7 @@ glm::vec3 Integrator::diffuse(const Shader& shader, const SurfacePoint& sp, cons
     // maximum depth (so -k 0 shows emitters and the environment only).
     if (depth >= ctx_.maxDepth) return glm::vec3(0.0f);
     glm::vec3 radiance = directLight(shader, sp, n, ng, n, kd, glm::vec3(0.0f), depth, key);
+    if (ctx_.environment.faceSize > 0 && diffuseSamplesLights()) radiance += kd * environmentLight(sp, n, ng, depth, key);
 
     // One cosine-weighted bounce per pixel sample: f cos / pdf = (kd / pi) cos / (cos / pi) = kd.
     const glm::vec2 u = sampling::sample2D(ctx_.sampler, ctx_.pixelGrid, key.pixel, key.sample,

@@ -66,6 +66,11 @@ private:
     // The radiance an emitter's surface sends along `ray` (which hit it at sp), weighted against
     // the light samples of the Diffuse surface the ray left, if it left one.
     glm::vec3 emitted(const bvh::Ray& ray, const SurfacePoint& sp, float bouncePdf) const;
+    // What a ray that leaves the scene along dir sees: the environment map (weighted against the
+    // light samples of the Diffuse surface it left, if it left one that took them) or the background.
+    glm::vec3 escaped(const glm::vec3& dir, float bouncePdf) const;
+    // A Diffuse surface's k light samples of the environment map, drawn by luminance.
+    glm::vec3 environmentLight(const SurfacePoint& sp, const glm::vec3& n, const glm::vec3& ng, int depth, SampleKey key);
     // The solid-angle density with which emitter e's light samples from x reach its point q.
     float emitterPdf(int e, const glm::vec3& x, const glm::vec3& q, const glm::vec3& nq) const;
     // The (possibly glossy) reflection seen from a surface with shading normal n and geometric normal ng

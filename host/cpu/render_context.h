@@ -8,6 +8,8 @@
 
 #include "camera.h"
 #include "emitter_table.h"
+#include "environment_distribution.h"
+#include "environment_map.h"
 #include "lights.h"
 #include "render_options.h"
 #include "scene.h"
@@ -21,6 +23,8 @@ struct RenderContext {
     CameraFrame camera;
     std::vector<LightSource> lights;
     EmitterTable emitters;             // the shape emitters' sampling records (emitter_table.h)
+    EnvironmentTexels environment;     // the environment map's bordered faces (faceSize 0: none)
+    EnvironmentDistribution environmentLights;  // its luminance distribution, for light samples
     Estimator estimator = Estimator::MisPower;  // Diffuse: how emitters and the environment are found
     glm::vec3 background{0.0f};
     unsigned sampler = 0;              // gpu::SAMPLER_*

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "environment_distribution.h"
 #include "sampling.h"
 
 namespace vkrt {
@@ -72,7 +73,10 @@ gpu::FrameParams makeFrameParams(const Scene& scene, const SceneAccel& accel, co
     f.glossGrid = sampling::makeSampleGrid(rpp * glossSamples);
     const glm::vec2 shutter = shutterOf(options);  // read only by a kernel built with HAS_MOTION
     f.shutter = glm::vec4(shutter.x, shutter.y, 0.0f, 0.0f);
-    f.lighting = glm::uvec4(static_cast<std::uint32_t>(scene.emitters.size()), static_cast<std::uint32_t>(options.estimator), 0u, 0u);
+    // The environment's face size and its distribution's cells (environment_distribution.h: C = min(N, 64)).
+    const auto faceSize = static_cast<std::uint32_t>(scene.environment.faceSize);
+    f.lighting = glm::uvec4(static_cast<std::uint32_t>(scene.emitters.size()), static_cast<std::uint32_t>(options.estimator),
+                            faceSize, std::min(faceSize, kMaxEnvironmentCells));
     return f;
 }
 

@@ -1,5 +1,8 @@
 #include "scene_tables.h"
 
+#include "environment_distribution.h"
+#include "environment_map.h"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -91,6 +94,9 @@ SceneTables buildSceneTables(const Scene& scene, const SceneAccel& accel) {
         t.materials.push_back(m);
     }
     t.emitters = buildEmitterTable(scene);
+    EnvironmentTexels environment = borderedEnvironment(scene.environment);
+    t.environmentCdf = environmentDistribution(environment).table;
+    t.environmentTexels = std::move(environment.texels);
 
     std::uint32_t areaLights = 0;
     for (const Light& l : scene.lights)
