@@ -29,10 +29,7 @@ glm::vec3 boundsCentre(const Scene& scene, const Shape& shape) {
 
 const char* fallbackProblem(Fallback fallback) {
     switch (fallback) {
-        case Fallback::Diffuse: return "Diffuse rendered as Lambertian (direct light only, no diffuse interreflection)";
         case Fallback::EmitterShader: return "Emitter shaders rendered as black Lambertian (their emission is not rendered)";
-        case Fallback::ShapeLight:
-            return "shape lights rendered as point lights at the centre of their bounds (the emitting shape is not drawn)";
     }
     return "";
 }

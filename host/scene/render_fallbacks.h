@@ -1,8 +1,7 @@
-// JSON-era features the renderers cannot show yet (path-traced Diffuse, Emitter shaders, shape
-// lights: issue 20), what they show instead, and the warning that says so. Each
-// loader warns once per scene, at the first thing that needs a fallback, with these texts. This
-// is the one place to change when the renderers learn the real thing (and the loaders' calls of
-// FallbackNotes, which then go).
+// JSON-era features the renderers do not show as the file means them, what they show instead,
+// and the warning that says so: today only the `Emitter` shader (J26; no course file uses one),
+// rendered as black Lambertian. Each loader warns once per scene, at the first thing that needs
+// a fallback. Also here: the marker light that keeps a shape light's place among the lights.
 #pragma once
 
 #include <array>
@@ -12,7 +11,7 @@
 
 namespace vkrt {
 
-enum class Fallback { Diffuse, EmitterShader, ShapeLight };
+enum class Fallback { EmitterShader };
 
 // The warning's problem text, naming the fallback.
 const char* fallbackProblem(Fallback fallback);
@@ -23,13 +22,13 @@ public:
     bool first(Fallback fallback) { return !std::exchange(seen_[static_cast<std::size_t>(fallback)], true); }
 
 private:
-    std::array<bool, 3> seen_{};
+    std::array<bool, 1> seen_{};
 };
 
-// The point light that stands in for scene.emitters[index] (Light::emitterStandIn): at the
-// centre of the emitter's world-space bounds, with intensity = its radiance. The course's lights
-// have no falloff and no emitter cosine (docs/RENDERING.md §4), so this is the limit of the shape
-// shrunk to a point. The emitting shape itself is not drawn: it would shadow its own stand-in.
+// The marker for scene.emitters[index] in Scene::lights (Light::emitterStandIn): a point light at
+// the centre of the emitter's world-space bounds with intensity = its radiance, so the writers put
+// the shape light back in its place among the lights. Renderers skip it: the emitter itself is
+// geometry that lights the scene (docs/RENDERING.md §4, host/lighting/emitter_table.h).
 Light emitterStandInLight(const Scene& scene, int index);
 
 }  // namespace vkrt

@@ -46,8 +46,9 @@ struct Light {
     glm::vec3 normal{0.0f, -1.0f, 0.0f};  // area only; unit length
     float width = 0.0f;                   // area only; along the tangent (docs/RENDERING.md §4)
     float length = 0.0f;                  // area only; along the bitangent
-    // >= 0: this point light is not in the file; it stands in for Scene::emitters[emitterStandIn]
-    // until shape lights are rendered (render_fallbacks.h). -1 for every light the file gives.
+    // >= 0: not a light of its own but the place of Scene::emitters[emitterStandIn] in the file's
+    // order of lights, for the writers; renderers skip it (render_fallbacks.h). -1 for every light
+    // the file gives.
     int emitterStandIn = -1;
     SourceLocation where;
 };
@@ -72,8 +73,8 @@ struct Shader {
     int diffuseTexture = kNoTexture;   // index into Scene::textures
     int specularTexture = kNoTexture;
     // The course's `Diffuse` (JSON era): a Lambertian that also gathers the light other surfaces
-    // scatter (a path-traced diffuse bounce). type is Lambertian, which is how the renderers
-    // shade it until they path-trace (render_fallbacks.h); the file said Diffuse.
+    // scatter (a path-traced diffuse bounce, docs/RENDERING.md §5). type is Lambertian (its
+    // parameters and its direct light are Lambertian's); the file said Diffuse.
     bool diffuseBounce = false;
     // An `Emitter` shader's radiance (J26; no course file uses one). type is Lambertian with a
     // black diffuse colour until emission is rendered (render_fallbacks.h).
@@ -153,8 +154,8 @@ struct Instance {
 
 // A shape that emits light (a JSON `light` of `_type: "shape"`): radiance = the light's intensity.
 // The geometry is `shape` (world space when objectToWorld is the identity), or, when prototype
-// >= 0, Scene::prototypes[prototype] placed by objectToWorld. Renderers do not draw it yet: a
-// point light stands in for it (Light::emitterStandIn, render_fallbacks.h).
+// >= 0, Scene::prototypes[prototype] placed by objectToWorld. Renderers draw it and light the scene
+// with it (docs/RENDERING.md §4; host/lighting/emitter_table.h); it never moves.
 struct Emitter {
     std::string name;
     glm::vec3 radiance{1.0f};

@@ -194,20 +194,19 @@ TEST_F(ShaderParsing, NegativeRoughnessIsAnError) {
     expectIssue(errorOf(xml), 4, "roughness", "-0.1");
 }
 
-TEST_F(ShaderParsing, JsonEraDiffuseIsLambertianMarkedAsABounceWithOneWarningPerScene) {
+// Diffuse is path traced (docs/RENDERING.md §5): Lambertian's parameters plus the bounce, no warning.
+TEST_F(ShaderParsing, JsonEraDiffuseIsLambertianMarkedAsABounceWithoutWarning) {
     const std::string xml = sceneWith("<shader name=\"d\" type=\"Diffuse\"><diffuse>0.2 0.3 0.4</diffuse></shader>\n"
                                       "<shader name=\"e\" type=\"Diffuse\"><diffuse>1 1 1</diffuse></shader>\n"
                                       "<shader name=\"l\" type=\"Lambertian\"><diffuse>1 1 1</diffuse></shader>");
     Diagnostics diagnostics;
     const Scene scene = load(xml, diagnostics);
-    EXPECT_EQ(scene.shaders[0].type, ShaderType::Lambertian);  // how it renders until path tracing (render_fallbacks.h)
+    EXPECT_EQ(scene.shaders[0].type, ShaderType::Lambertian);  // its parameters and direct light
     EXPECT_TRUE(scene.shaders[0].diffuseBounce);               // what the file said
     EXPECT_TRUE(scene.shaders[1].diffuseBounce);
     EXPECT_FALSE(scene.shaders[2].diffuseBounce);
     EXPECT_EQ(scene.shaders[0].diffuse, glm::vec3(0.2f, 0.3f, 0.4f));
-    ASSERT_EQ(diagnostics.warnings().size(), 1u);
-    expectIssue(diagnostics.warnings()[0], 4, "shader", "d");
-    EXPECT_EQ(diagnostics.warnings()[0].problem, "Diffuse rendered as Lambertian (direct light only, no diffuse interreflection)");
+    EXPECT_TRUE(diagnostics.warnings().empty());
 }
 
 TEST_F(ShaderParsing, EmitterIsABlackLambertianKeepingItsEmissionWithOneWarning) {
