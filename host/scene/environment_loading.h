@@ -62,10 +62,11 @@ std::vector<std::uint32_t> crossFace(const Texture& image, const CrossCell& cell
 double edgeSeamError(const CubeFaces& faces, int faceSize, int face, int edge);
 
 // The -Z face's four edges together (their mean), read as in `faces` and mirrored left-right.
+// `faces` is the same on return (its -Z face is mirrored in place for the second figure, and back).
 struct NegZSeams {
     double asOpenGL = 0.0;
     double mirrored = 0.0;
 };
-NegZSeams measureNegZSeams(const CubeFaces& faces, int faceSize);
+NegZSeams measureNegZSeams(CubeFaces& faces, int faceSize);
 
 }  // namespace vkrt
