@@ -48,6 +48,9 @@ void addImageOptions(CLI::App& app, CommandLine& cl, std::string& bg) {
         ->check(CLI::Range(1, 4096));
     app.add_option("--seed", cl.render.seed, "Random seed: the same seed and options give the same image");
     app.add_option("--bg", bg, "Background colour r,g,b (overrides the scene's bgColor)");
+    app.add_flag("--no-environment{false}", cl.render.environment,
+                 "Rays that leave the scene see the background colour even when the scene names an environment map "
+                 "(as in the course's own ray tracers and its reference renders)");
     app.add_option_function<std::vector<float>>(
            "--shutter",
            [&cl](const std::vector<float>& v) {
@@ -107,6 +110,7 @@ void addRenderOptions(CLI::App& app, CommandLine& cl, std::string& bg, std::stri
 struct SweepText {
     std::string out, cache, device = "both", referenceDevice;
     std::vector<std::string> samplers{"random", "regular", "jittered", "sobol"};
+    std::vector<std::string> estimators{estimatorName(RenderOptions{}.estimator)};
 };
 
 void addSweepOptions(CLI::App& app, CommandLine& cl, std::string& bg, SweepText& text) {
@@ -118,6 +122,11 @@ void addSweepOptions(CLI::App& app, CommandLine& cl, std::string& bg, SweepText&
     app.add_option("--samplers", text.samplers, "Samplers to sweep, comma-separated")
         ->delimiter(',')
         ->check(CLI::IsMember({"jittered", "regular", "random", "sobol"}));
+    app.add_option("--estimators,--estimator", text.estimators,
+                   "Diffuse surfaces' estimators to sweep, comma-separated: bounce, nee, mis-balance, mis (vkrt --estimator; "
+                   "all have the same expectation, so they share the reference). Default: the renders' default only")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"bounce", "nee", "mis-balance", "mis"}));
     app.add_option("--device", text.device, "Devices to sweep: gpu, cpu or both")->check(CLI::IsMember({"gpu", "cpu", "both"}));
     app.add_option("--reference-rpp", sw.referenceRpp, "Rays per pixel of the converged reference (sobol; even: two halves estimate its noise)")
         ->check(CLI::Range(2, 1 << 24));
@@ -223,6 +232,11 @@ std::string describeSettings(const CommandLine& cl) {
     out << "image: " << r.width << "x" << r.height << " (aspect " << number(double(r.width) / r.height) << ")\n";
     if (cl.command != Command::Sweep) out << "rays per pixel: " << r.samplesPerPixel << " (" << samplerName(r.sampler) << ")\n";
     if (cl.command != Command::Sweep) out << "estimator: " << estimatorName(r.estimator) << "\n";
+    if (cl.command == Command::Sweep) {
+        out << "estimators:";
+        for (Estimator e : cl.sweep.estimators) out << " " << estimatorName(e);
+        out << "\n";
+    }
     out << "recursion depth: " << r.maxDepth << "\n";
     if (cl.focusDistance) out << "focus distance: " << *cl.focusDistance << "\n";
     if (cl.aperture) out << "aperture: " << *cl.aperture << "\n";
@@ -394,6 +408,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
             sw.cacheDir = sweepText.cache;
             sw.samplers.clear();
             for (const std::string& name : sweepText.samplers) sw.samplers.push_back(parseSampler(name));
+            sw.estimators.clear();
+            for (const std::string& name : sweepText.estimators) sw.estimators.push_back(parseEstimator(name));
             sw.devices.clear();
             if (sweepText.device != "cpu") sw.devices.push_back(study::Device::Gpu);
             if (sweepText.device != "gpu") sw.devices.push_back(study::Device::Cpu);

@@ -56,6 +56,8 @@ ErrorMetrics measureError(const Image& image, const Image& reference, const Regi
     e.rmseGloss = std::sqrt(meanSquaredError(image, reference, &masks.gloss));
     e.rmseDefocus = std::sqrt(meanSquaredError(image, reference, &masks.defocus));
     e.rmseMotion = std::sqrt(meanSquaredError(image, reference, &masks.motion));
+    e.rmseIndirect = std::sqrt(meanSquaredError(image, reference, &masks.indirect));
+    e.rmseEmitter = std::sqrt(meanSquaredError(image, reference, &masks.emitter));
     double rel = 0.0;
     for (std::size_t k = 0; k < image.pixels.size(); ++k)
         for (int c = 0; c < 3; ++c) {

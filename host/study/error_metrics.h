@@ -19,6 +19,8 @@ struct ErrorMetrics {
     double rmseGloss = 0.0;
     double rmseDefocus = 0.0;
     double rmseMotion = 0.0;
+    double rmseIndirect = 0.0;
+    double rmseEmitter = 0.0;
 };
 
 // Squared errors are of linear radiance (not clamped or quantised). Throws std::invalid_argument

@@ -17,7 +17,8 @@ namespace vkrt::study {
 
 namespace {
 
-// One colour per sampler, the same in every plot; devices differ by dash and point type.
+// One colour per sampler, the same in every plot; devices differ by dash and by filled (GPU) or
+// open (CPU) points.
 std::string colour(SamplerKind s) {
     switch (s) {
     case SamplerKind::Random: return "#d62728";
@@ -26,6 +27,31 @@ std::string colour(SamplerKind s) {
     case SamplerKind::Sobol: return "#2ca02c";
     }
     return "#000000";
+}
+
+// A sweep of several estimators compares them, so they get the colours (colour is what the eye
+// follows from panel to panel) and the samplers the point shapes; with one estimator the plots are
+// those of a sampler sweep.
+std::string colour(Estimator e) {
+    switch (e) {
+    case Estimator::Bounce: return "#d62728";
+    case Estimator::Nee: return "#ff7f0e";
+    case Estimator::MisBalance: return "#9467bd";
+    case Estimator::MisPower: return "#2ca02c";
+    }
+    return "#000000";
+}
+
+// gnuplot point types: circle, square, triangle, diamond, each filled (GPU) or open (CPU).
+int pointType(SamplerKind s, bool gpu) {
+    int filled = 7;
+    switch (s) {
+    case SamplerKind::Random: filled = 7; break;
+    case SamplerKind::Regular: filled = 5; break;
+    case SamplerKind::Jittered: filled = 9; break;
+    case SamplerKind::Sobol: filled = 13; break;
+    }
+    return gpu ? filled : filled - 1;
 }
 
 // A gnuplot single-quoted string: a quote inside is written twice.
@@ -42,9 +68,8 @@ std::string number(double v) {
     return buf;
 }
 
-struct Series {
-    Device device;
-    SamplerKind sampler;
+struct PlotSeries {
+    Series series;
     std::filesystem::path data;
 };
 
@@ -80,15 +105,19 @@ PlotFiles plotSweep(const std::vector<SweepPoint>& points, const std::array<doub
     const std::filesystem::path dir = outDir / "plots";
     std::filesystem::create_directories(dir);
 
-    std::vector<Series> series;
+    std::vector<PlotSeries> series;
     std::map<std::string, std::ofstream> files;
+    bool severalEstimators = false;
+    for (const SweepPoint& p : points) severalEstimators = severalEstimators || p.estimator != points.front().estimator;
     for (const SweepPoint& p : points) {
-        const std::string name = deviceName(p.device) + "_" + samplerName(p.sampler);
+        const std::string name = deviceName(p.device) + "_" + samplerName(p.sampler) + "_" + estimatorName(p.estimator);
         auto [it, added] = files.try_emplace(name);
         if (added) {
-            series.push_back({p.device, p.sampler, dir / (name + ".dat")});
+            series.push_back({seriesOf(p), dir / (name + ".dat")});
             it->second.open(series.back().data);
-            it->second << "# rpp seconds rmse_all rmse_edge rmse_penumbra rmse_gloss rmse_defocus rmse_motion (RMSE over seeds)\n";
+            it->second << "# rpp seconds";
+            for (Region region : kRegions) it->second << " rmse_" << regionName(region);
+            it->second << " (RMSE over seeds)\n";
         }
         it->second << p.rpp << ' ' << number(p.seconds);
         for (double e : p.rmse) it->second << ' ' << number(e);
@@ -98,12 +127,12 @@ PlotFiles plotSweep(const std::vector<SweepPoint>& points, const std::array<doub
 
     PlotFiles out{outDir / "error_vs_time.png", outDir / "error_vs_rpp.png"};
     std::ostringstream gp;
-    gp << "set terminal pngcairo size 1500,900 noenhanced font 'sans,10'\n"
+    gp << "set terminal pngcairo size 2000,900 noenhanced font 'sans,10'\n"
        << "set logscale xy\nset grid\nset key bottom left box opaque\nset ylabel 'RMSE (linear radiance)'\n";
     auto figure = [&](const std::filesystem::path& png, bool byTime) {
         gp << "set output " << quoted(png.string()) << "\n"
            << "set xlabel " << quoted(byTime ? "render time (s)" : "rays per pixel") << "\n"
-           << "set multiplot layout 2,3 title " << quoted(title + (byTime ? ": error vs time" : ": error vs rpp")) << "\n";
+           << "set multiplot layout 2,4 title " << quoted(title + (byTime ? ": error vs time" : ": error vs rpp")) << "\n";
         for (Region region : kRegions) {
             const int g = static_cast<int>(region);
             gp << "set title " << quoted(regionName(region) + " pixels (" + std::to_string(regionPixels[g]) + ")") << "\n";
@@ -117,12 +146,17 @@ PlotFiles plotSweep(const std::vector<SweepPoint>& points, const std::array<doub
             }
             // One legend, in the first panel: the colours and dashes mean the same in every panel.
             gp << (region == Region::All ? "set key bottom left box opaque\n" : "unset key\n") << "plot ";
-            for (std::size_t s = 0; s < series.size(); ++s) {
-                const bool gpu = series[s].device == Device::Gpu;
-                gp << (s ? ", \\\n     " : "") << quoted(series[s].data.string()) << " using " << (byTime ? 2 : 1) << ':'
-                   << (3 + g) << " with linespoints lw 2 lc rgb " << quoted(colour(series[s].sampler)) << " dt "
-                   << (gpu ? 1 : 2) << " pt " << (gpu ? 7 : 6) << " title "
-                   << quoted(deviceName(series[s].device) + " " + samplerName(series[s].sampler));
+            for (std::size_t k = 0; k < series.size(); ++k) {
+                const Series& s = series[k].series;
+                const bool gpu = s.device == Device::Gpu;
+                std::string title = deviceName(s.device);
+                title += ' ';  // appended separately: GCC 12 warns falsely (-Wrestrict) on " " + string
+                title += samplerName(s.sampler);
+                if (severalEstimators) (title += ' ') += estimatorName(s.estimator);
+                gp << (k ? ", \\\n     " : "") << quoted(series[k].data.string()) << " using " << (byTime ? 2 : 1) << ':'
+                   << (3 + g) << " with linespoints lw 2 lc rgb "
+                   << quoted(severalEstimators ? colour(s.estimator) : colour(s.sampler)) << " dt " << (gpu ? 1 : 2)
+                   << " pt " << (severalEstimators ? pointType(s.sampler, gpu) : (gpu ? 7 : 6)) << " title " << quoted(title);
             }
             if (referenceRmse[g] > 0.0 && std::isfinite(referenceRmse[g]))
                 gp << ", \\\n     " << number(referenceRmse[g]) << " with lines dt 3 lw 2 lc rgb '#000000' title 'reference noise'";

@@ -1,5 +1,5 @@
 // The sweep's plots, drawn by gnuplot (Debian gnuplot-nox): log-log RMSE against time and against
-// rays per pixel, one panel per region, one line per device and sampler.
+// rays per pixel, one panel per region, one line per device, sampler and estimator.
 #pragma once
 
 #include <array>
@@ -16,7 +16,9 @@ struct PlotFiles {
     std::filesystem::path errorVsRpp;   // DIR/error_vs_rpp.png
 };
 
-// Writes DIR/plots/<device>_<sampler>.dat and DIR/plots/sweep.gp and runs gnuplot on it.
+// Writes DIR/plots/<device>_<sampler>_<estimator>.dat and DIR/plots/sweep.gp and runs gnuplot on it.
+// Colour = sampler, or with several estimators colour = estimator and point shape = sampler;
+// solid lines and filled points = GPU, dashed and open = CPU.
 // referenceRmse (per Region; NaN = none) is drawn as a dotted "reference noise" line: errors near
 // it are the reference's own noise, not the render's. regionPixels labels the panels.
 // Throws std::runtime_error when gnuplot is missing or fails (with its message).

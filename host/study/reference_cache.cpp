@@ -19,8 +19,11 @@ namespace {
 // Bump when the meaning of the cached reference or noise changes (the image definition, the noise
 // estimate), so that old cache entries are not reused. The masks have their own version in their
 // file name: they are cheap to recompute and change independently.
-constexpr int kCacheFormat = 1;
-constexpr int kMasksFormat = 3;
+// 2: Diffuse surfaces are path traced and shape emitters are geometry (docs/RENDERING.md §4-§5);
+//    format 1 references of such scenes show the Lambertian and point-light stand-ins.
+constexpr int kCacheFormat = 2;
+// 4: the indirect and emitter regions; shape emitters count in the penumbra.
+constexpr int kMasksFormat = 4;
 
 std::string hexFloat(float v) {
     char buf[32];
@@ -28,6 +31,9 @@ std::string hexFloat(float v) {
     return buf;
 }
 
+// Every option that changes the reference's expectation, and so its key. Not the estimator: all
+// have the same expectation, and the reference is always rendered with kReferenceEstimator, so a
+// sweep of other estimators (--estimators) reuses it.
 std::string describe(const ReferenceSpec& spec) {
     const RenderOptions& o = spec.options;
     std::ostringstream s;
@@ -119,6 +125,7 @@ Reference loadOrRenderReference(StudyRenderer& renderer, const PreparedScene& sc
 
     RenderOptions half = spec.options;
     half.sampler = spec.sampler;
+    half.estimator = kReferenceEstimator;
     half.samplesPerPixel = spec.rpp / 2;
     const HalfRenderer render = renderHalf ? renderHalf : [&](const RenderOptions& o) { return renderer.render(spec.device, scene, o); };
     half.seed = kReferenceSeedA;
@@ -140,7 +147,8 @@ Reference loadOrRenderReference(StudyRenderer& renderer, const PreparedScene& sc
     writeAtomically(ref.noise, noisePath);
     loadOrFindMasks();
     std::ofstream info(infoPath);
-    info << describe(spec) << "render seconds " << ref.seconds << "\n";
+    info << describe(spec) << "estimator " << estimatorName(kReferenceEstimator) << " (not in the key: every estimator has the same expectation)\n"
+         << "render seconds " << ref.seconds << "\n";
     return ref;
 }
 

@@ -27,8 +27,16 @@ namespace vkrt::study {
 inline constexpr std::uint32_t kReferenceSeedA = 0x9e3779b9u;
 inline constexpr std::uint32_t kReferenceSeedB = 0x7f4a7c15u;
 
+// The reference's estimator (render_options.h). Every estimator has the same expectation (docs/
+// RENDERING.md §5), so the reference serves a sweep of any of them and the cache key leaves the
+// estimator out; it is rendered with MIS (power heuristic), which never does worse than the others
+// by much and far better where small emitters light Diffuse surfaces (docs/SAMPLING.md §4).
+inline constexpr Estimator kReferenceEstimator = Estimator::MisPower;
+
 struct ReferenceSpec {
-    RenderOptions options;   // size, depth, light/gloss samples, background, camera, threads
+    // Size, depth, light/gloss samples, background, camera, threads. The estimator is ignored: the
+    // reference always uses kReferenceEstimator.
+    RenderOptions options;
     int rpp = 4096;
     SamplerKind sampler = SamplerKind::Sobol;
     Device device = Device::Gpu;

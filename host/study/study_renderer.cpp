@@ -39,10 +39,13 @@ TimedRender StudyRenderer::render(Device device, const PreparedScene& scene, con
     }
     if (!gpu_ || !scene.gpu) throw std::invalid_argument("study: a GPU render was asked for, but no GPU renderer is open");
     if (sampleVariance) throw std::invalid_argument("study: the GPU renderer has no per-pixel variance output");
-    // The kernel variant depends on the sampler and, through the samples per dispatch, on the rpp:
-    // the first render of each pair is preceded by an untimed one of the same options on one row,
-    // which creates (and compiles) its pipeline at 1/height of the render's cost.
-    if (warmed_.insert({scene.id, static_cast<std::uint32_t>(options.sampler), options.samplesPerPixel}).second) {
+    // The kernel variant depends on the sampler, the estimator (in a scene with Diffuse surfaces)
+    // and, through the samples per dispatch, on the rpp: the first render of each is preceded by an
+    // untimed one of the same options on one row, which creates (and compiles) its pipeline at
+    // 1/height of the render's cost.
+    if (warmed_.insert({scene.id, static_cast<std::uint32_t>(options.sampler), static_cast<std::uint32_t>(options.estimator),
+                        options.samplesPerPixel})
+            .second) {
         RenderOptions warmUp = options;
         warmUp.rows = glm::ivec2(0, 1);
         warmUp.quiet = true;

@@ -51,15 +51,15 @@ public:
     PreparedScene prepare(const Scene& scene) const;
 
     // One render. `sampleVariance` (CPU only, else std::invalid_argument): the per-pixel sample
-    // variance (cpu_renderer.h). GPU renders are timed after the kernel variant for the scene, sampler
-    // and rpp has been created (an untimed one-row warm-up), so pipeline compilation is not counted.
+    // variance (cpu_renderer.h). GPU renders are timed after the kernel variant for the scene, sampler,
+    // estimator and rpp has been created (an untimed one-row warm-up), so pipeline compilation is not counted.
     TimedRender render(Device device, const PreparedScene& scene, const RenderOptions& options,
                        Image* sampleVariance = nullptr);
 
 private:
     std::unique_ptr<GpuRenderer> gpu_;
-    // (PreparedScene::id, sampler, rpp) of the GPU renders warmed up so far.
-    std::set<std::tuple<std::uint64_t, std::uint32_t, int>> warmed_;
+    // (PreparedScene::id, sampler, estimator, rpp) of the GPU renders warmed up so far.
+    std::set<std::tuple<std::uint64_t, std::uint32_t, std::uint32_t, int>> warmed_;
 };
 
 }  // namespace vkrt::study

@@ -58,6 +58,13 @@ void checkSameDevices(WorkSharing& ranks, const std::vector<Device>& devices, De
                                  "every rank must sweep the same devices");
 }
 
+// The estimators weigh the light that a Diffuse surface can both hit and sample: shape emitters and
+// the environment map. Without those (or without Diffuse) they compute the same image.
+bool estimatorsDiffer(const Scene& scene) {
+    const bool diffuse = std::any_of(scene.shaders.begin(), scene.shaders.end(), [](const Shader& s) { return s.diffuseBounce; });
+    return diffuse && (!scene.emitters.empty() || scene.environment.faceSize > 0);
+}
+
 std::string joined(const std::vector<int>& values) {
     std::string s;
     for (int v : values) {
@@ -80,6 +87,10 @@ void validateSweepOptions(const SweepOptions& o) {
     if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) fail("--rpp lists a value twice: " + joined(o.rpps));
     if (o.seeds < 1) fail("--seeds must be at least 1, not " + std::to_string(o.seeds));
     if (o.samplers.empty()) fail("--samplers needs at least one sampler");
+    if (o.estimators.empty()) fail("--estimators needs at least one estimator");
+    for (std::size_t i = 0; i < o.estimators.size(); ++i)
+        if (std::find(o.estimators.begin(), o.estimators.begin() + i, o.estimators[i]) != o.estimators.begin() + i)
+            fail("--estimators lists " + estimatorName(o.estimators[i]) + " twice");
     if (o.devices.empty()) fail("no device to sweep");
     if (o.referenceRpp < 2 || o.referenceRpp % 2 != 0)
         fail("--reference-rpp must be even (two halves) and at least 2, not " + std::to_string(o.referenceRpp));
@@ -106,29 +117,36 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
     ReferenceSpec spec;
     spec.options = options.render;
     spec.options.quiet = true;
+    // Every estimator has the same expectation, so one reference serves them all and its key leaves
+    // the estimator out (reference_cache.h); it is rendered with the one of least variance.
+    spec.options.estimator = kReferenceEstimator;
     spec.rpp = options.referenceRpp;
     spec.sampler = options.referenceSampler;
     spec.device = *referenceDevice;
     const Camera& camera = scene.cameras.at(options.render.camera);
     spec.lens = glm::vec2(camera.focusDistance, camera.aperture);
 
-    // The (seed, rpp, sampler, device) settings in interleaved order: the machine's speed drifts,
-    // and interleaving spreads the drift over every setting instead of biasing whichever ran last.
+    // The (seed, rpp, sampler, estimator, device) settings in interleaved order: the machine's speed
+    // drifts, and interleaving spreads the drift over every setting instead of biasing whichever ran
+    // last. MPI ranks share them by their index in this list (shared_renders.h).
     struct Setting {
         int seedIndex, rpp;
         SamplerKind sampler;
+        Estimator estimator;
         Device device;
     };
     std::vector<Setting> settings;
     for (int s = 0; s < options.seeds; ++s)
         for (int rpp : options.rpps)
             for (SamplerKind sampler : options.samplers)
-                for (Device device : result.devices) settings.push_back({s, rpp, sampler, device});
+                for (Estimator estimator : options.estimators)
+                    for (Device device : result.devices) settings.push_back({s, rpp, sampler, estimator, device});
     const auto settingOptions = [&](const Setting& setting) {
         RenderOptions o = options.render;
         o.quiet = true;
         o.samplesPerPixel = setting.rpp;
         o.sampler = setting.sampler;
+        o.estimator = setting.estimator;
         o.seed = options.render.seed + static_cast<std::uint32_t>(setting.seedIndex);
         return o;
     };
@@ -143,6 +161,10 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
         return result;
     }
 
+    if (options.estimators.size() > 1 && !estimatorsDiffer(scene))
+        log << "note: every estimator renders the same image of " << options.scenePath.string()
+            << ": it has no Diffuse surface, or nothing but the bounce finds its light (no shape emitter or environment "
+               "map; docs/RENDERING.md §5); their times still differ\n";
     const std::string sceneText = readText(options.scenePath);
     std::error_code ec;
     std::filesystem::create_directories(options.outDir, ec);
@@ -161,12 +183,14 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
     renderShared(ranks, settings.size(), renderSetting, [&](std::size_t i, const TimedRender& r) {
         const Setting& setting = settings[i];
         const RenderOptions o = settingOptions(setting);
-        SweepRow row{setting.device, setting.sampler, setting.rpp, o.seed, r.seconds, measureError(r.image, ref.image, ref.masks)};
+        SweepRow row{setting.device, setting.sampler, setting.estimator, setting.rpp, o.seed, r.seconds,
+                     measureError(r.image, ref.image, ref.masks)};
         result.rows.push_back(row);
         if (!options.render.quiet) {
-            char line[160];
-            std::snprintf(line, sizeof line, "%s %-8s %5d rpp seed %u: %8.3f s  rmse %.3e\n", deviceName(setting.device).c_str(),
-                          samplerName(setting.sampler).c_str(), setting.rpp, o.seed, r.seconds, row.error.rmse);
+            char line[200];
+            std::snprintf(line, sizeof line, "%s %-8s %-11s %5d rpp seed %u: %8.3f s  rmse %.3e\n",
+                          deviceName(setting.device).c_str(), samplerName(setting.sampler).c_str(),
+                          estimatorName(setting.estimator).c_str(), setting.rpp, o.seed, r.seconds, row.error.rmse);
             log << line << std::flush;
         }
     });
@@ -181,7 +205,9 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
     std::ostringstream settingsLine;
     settingsLine << r.width << "x" << r.height << ", max depth " << r.maxDepth << ", " << r.lightSamples
              << " light sample(s) and " << r.glossSamples << " gloss sample(s) per pixel sample; rpp "
-             << joined(options.rpps) << "; " << options.seeds << " seed(s) from " << r.seed << "; devices:";
+             << joined(options.rpps) << "; " << options.seeds << " seed(s) from " << r.seed << "; estimators:";
+    for (Estimator e : options.estimators) settingsLine << " " << estimatorName(e);
+    settingsLine << "; devices:";
     for (Device d : result.devices)
         settingsLine << " " << (d == Device::Gpu ? "gpu (" + renderer->gpuDeviceName() + ")" : std::string("cpu"));
     settingsLine << ". Time = wall time of one render call (scene loaded and BVH built beforehand; GPU kernel "
@@ -190,12 +216,15 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
     std::ostringstream refLine;
     char seconds[32];
     std::snprintf(seconds, sizeof seconds, "%.1f", ref.seconds);
-    refLine << options.referenceRpp << " rpp, " << samplerName(spec.sampler) << " sampler, on the " << deviceName(spec.device)
+    refLine << options.referenceRpp << " rpp, " << samplerName(spec.sampler) << " sampler, "
+            << estimatorName(spec.options.estimator) << " estimator (for every estimator: they have the same expectation), on the "
+            << deviceName(spec.device)
             << (ref.fromCache ? ", from the cache " : ", rendered in " + std::string(seconds) + " s and cached as ") << "`"
             << ref.imagePath.string() << "`.";
     report.referenceLine = refLine.str();
-    const PixelMask* masks[kRegionCount] = {nullptr,         &ref.masks.edge,    &ref.masks.penumbra,
-                                            &ref.masks.gloss, &ref.masks.defocus, &ref.masks.motion};
+    const PixelMask* masks[kRegionCount] = {nullptr,           &ref.masks.edge,     &ref.masks.penumbra,
+                                            &ref.masks.gloss,  &ref.masks.defocus,  &ref.masks.motion,
+                                            &ref.masks.indirect, &ref.masks.emitter};
     for (Region g : kRegions) {
         const int i = static_cast<int>(g);
         report.referenceMse[i] = meanOverRegion(ref.noise, masks[i]);
@@ -204,7 +233,8 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
     report.points = result.points;
     report.targetRmse = options.targetRmse;
     report.files = {"sweep.csv", "error_vs_time.png", "error_vs_rpp.png",
-                    "regions.png (left: red edge, green penumbra, blue gloss; right: red defocus, green motion)",
+                    "regions.png (left: red edge, green penumbra, blue gloss; middle: red defocus, green motion; "
+                    "right: red indirect, green emitter, so emitter pixels are yellow)",
                     "reference.png", "plots/ (gnuplot data and script)"};
     result.report = options.outDir / "report.md";
     writeSweepReport(report, result.report);

@@ -1,5 +1,5 @@
 // `vkrt sweep`: the speed/accuracy trade of a scene, measured. Renders a converged reference
-// (reference_cache.h), then every (seed, rpp, sampler, device) setting, and writes under DIR:
+// (reference_cache.h), then every (seed, rpp, sampler, estimator, device) setting, and writes under DIR:
 //   sweep.csv (one row per render), error_vs_time.png and error_vs_rpp.png (gnuplot),
 //   report.md (convergence slopes, the cheapest setting for a target error), plots/ (plot data).
 #pragma once
@@ -23,11 +23,15 @@ struct SweepOptions {
     std::filesystem::path scenePath;
     std::filesystem::path outDir;
     // Size, depth, light/gloss samples, background, camera, threads, quiet. `seed` is the first of
-    // the sweep's seeds (seed, seed + 1, ...); samplesPerPixel and sampler are ignored.
+    // the sweep's seeds (seed, seed + 1, ...); samplesPerPixel, sampler and estimator are ignored.
     RenderOptions render;
     std::vector<int> rpps{1, 4, 16, 64, 256};
     int seeds = 3;
     std::vector<SamplerKind> samplers{SamplerKind::Random, SamplerKind::Regular, SamplerKind::Jittered, SamplerKind::Sobol};
+    // How Diffuse surfaces find emitters and the environment (render_options.h). By default only the
+    // renders' default, so a sweep costs what it did before the axis existed; every estimator has
+    // the same expectation, so all are measured against the one reference.
+    std::vector<Estimator> estimators{RenderOptions{}.estimator};
     std::vector<Device> devices{Device::Gpu, Device::Cpu};
     int referenceRpp = 4096;
     std::optional<Device> referenceDevice;  // default: the GPU when the sweep uses it, else the CPU

@@ -22,12 +22,17 @@ std::string number(double v) {
 void writeSweepCsv(const std::vector<SweepRow>& rows, const std::filesystem::path& path) {
     std::ofstream out(path);
     if (!out) throw std::runtime_error(path.string() + ": cannot write the sweep's CSV");
-    out << "device,sampler,rpp,seed,time_s,rmse,relmse,rmse_edge,rmse_penumbra,rmse_gloss,rmse_defocus,rmse_motion\n";
-    for (const SweepRow& r : rows)
-        out << deviceName(r.device) << ',' << samplerName(r.sampler) << ',' << r.rpp << ',' << r.seed << ','
-            << number(r.seconds) << ',' << number(r.error.rmse) << ',' << number(r.error.relMse) << ','
-            << number(r.error.rmseEdge) << ',' << number(r.error.rmsePenumbra) << ',' << number(r.error.rmseGloss)
-            << ',' << number(r.error.rmseDefocus) << ',' << number(r.error.rmseMotion) << '\n';
+    out << "device,sampler,estimator,rpp,seed,time_s,rmse,relmse";
+    for (Region region : kRegions)
+        if (region != Region::All) out << ",rmse_" << regionName(region);
+    out << '\n';
+    for (const SweepRow& r : rows) {
+        out << deviceName(r.device) << ',' << samplerName(r.sampler) << ',' << estimatorName(r.estimator) << ',' << r.rpp
+            << ',' << r.seed << ',' << number(r.seconds) << ',' << number(r.error.rmse) << ',' << number(r.error.relMse);
+        for (Region region : kRegions)
+            if (region != Region::All) out << ',' << number(rmseIn(r.error, region));
+        out << '\n';
+    }
     if (!out) throw std::runtime_error(path.string() + ": write failed");
 }
 

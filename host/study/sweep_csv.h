@@ -8,8 +8,9 @@
 
 namespace vkrt::study {
 
-// The header: device,sampler,rpp,seed,time_s,rmse,relmse,rmse_edge,rmse_penumbra,rmse_gloss.
-// An empty region's RMSE is written as "nan". Throws std::runtime_error naming the file.
+// The header: device,sampler,estimator,rpp,seed,time_s,rmse,relmse, then rmse_<region> for every
+// region but all (edge, penumbra, gloss, defocus, motion, indirect, emitter). An empty region's
+// RMSE is written as "nan". Throws std::runtime_error naming the file.
 void writeSweepCsv(const std::vector<SweepRow>& rows, const std::filesystem::path& path);
 
 }  // namespace vkrt::study

@@ -1,5 +1,5 @@
-// DIR/report.md: what was swept, the fitted convergence slopes per device, sampler and region, and
-// the cheapest setting that reaches a target error.
+// DIR/report.md: what was swept, the fitted convergence slopes per device, sampler, estimator and
+// region, the estimators' errors at equal time, and the cheapest setting that reaches a target error.
 #pragma once
 
 #include <array>
@@ -18,15 +18,22 @@ namespace vkrt::study {
 inline constexpr double kReferenceFloorFactor = 4.0;
 
 struct ConvergenceSlope {
-    Device device = Device::Cpu;
-    SamplerKind sampler = SamplerKind::Jittered;
+    Series series;
     Region region = Region::All;
     LogLogFit fit;
 };
 
-// Slopes of log RMSE against log rpp per (device, sampler, region), over the points whose MSE
-// exceeds kReferenceFloorFactor x referenceMse[region].
+// Slopes of log RMSE against log rpp per (series, region), over the points whose MSE exceeds
+// kReferenceFloorFactor x referenceMse[region].
 std::vector<ConvergenceSlope> fitSlopes(const std::vector<SweepPoint>& points, const std::array<double, kRegionCount>& referenceMse);
+
+// Equal time: the estimators of one device and sampler compared at the same render time. The time
+// is the longest that every one of their series reached (the least of their longest mean times),
+// so no series is extrapolated; NaN when some series' shortest time is above it.
+double commonTime(const std::vector<SweepPoint>& points, Device device, SamplerKind sampler);
+// A series' RMSE in `region` at `seconds`: linear in log time and log RMSE between the two points
+// (ordered by time) around it; NaN outside the series' times or where the region is empty.
+double rmseAtTime(const std::vector<SweepPoint>& points, const Series& series, Region region, double seconds);
 
 // The cheapest (least mean time) point whose RMSE in `region` is <= target; nullopt if none.
 std::optional<SweepPoint> cheapestReaching(const std::vector<SweepPoint>& points, Region region, double target);

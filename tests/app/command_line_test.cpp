@@ -167,6 +167,18 @@ TEST(CommandLineOptions, ShutterTakesOpenAndClose) {
     EXPECT_THROW(shutterOf(backwards), std::invalid_argument);
 }
 
+TEST(CommandLineOptions, SweepTakesAListOfEstimators) {
+    EXPECT_EQ(parseOk({"sweep", "s.xml", "--out", "d"}).sweep.estimators, std::vector<Estimator>{RenderOptions{}.estimator})
+        << "by default only the renders' default: a sweep costs what it did";
+    const CommandLine all = parseOk({"sweep", "s.xml", "--out", "d", "--estimators", "bounce,nee,mis-balance,mis"});
+    EXPECT_EQ(all.sweep.estimators,
+              (std::vector<Estimator>{Estimator::Bounce, Estimator::Nee, Estimator::MisBalance, Estimator::MisPower}));
+    EXPECT_NE(describeSettings(all).find("estimators: bounce nee mis-balance mis\n"), std::string::npos);
+    EXPECT_EQ(parseOk({"sweep", "s.xml", "--out", "d", "--estimator", "nee"}).sweep.estimators, std::vector<Estimator>{Estimator::Nee})
+        << "render's spelling";
+    EXPECT_NE(parseRefused({"sweep", "s.xml", "--out", "d", "--estimators", "bounce,path"}).find("path"), std::string::npos);
+}
+
 TEST(CommandLineOptions, WatchAndProgressiveAreRenderOptionsOfOneProcess) {
     const CommandLine cl = parseOk({"s.xml", "--watch", "--progressive", "4"});
     EXPECT_TRUE(cl.watch);

@@ -1,6 +1,8 @@
 // `vkrt sweep` end to end on a small scene (both devices, validation on): the CSV's columns and
 // rows, the plots as real PNGs, the report, the reference cache (hit on the second run, with the
-// same errors), and the region masks on scenes whose regions are known.
+// same errors), the estimator axis against one reference, and the region masks on scenes whose
+// regions are known.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -12,12 +14,15 @@
 
 #include <gtest/gtest.h>
 
+#include "cpu_renderer.h"
+#include "diagnostics.h"
 #include "reference_cache.h"
 #include "region_masks.h"
-#include "cpu_renderer.h"
 #include "scene_accel.h"
+#include "scene_loader.h"
 #include "study_scenes.h"
 #include "sweep.h"
+#include "sweep_report.h"
 #include "test_paths.h"
 
 namespace vkrt::test {
@@ -42,6 +47,23 @@ std::string readText(const std::filesystem::path& path) {
     std::stringstream s;
     s << in.rdbuf();
     return s.str();
+}
+
+Scene loadFile(const std::filesystem::path& path) {
+    Diagnostics diagnostics;
+    return loadScene(path.string(), LoadOptions{}, diagnostics);
+}
+
+// emitterTest.json (a small sphere emitter over a ground and a big sphere) with its Lambertian
+// receivers made Diffuse: the estimators differ there. Written into `dir`.
+std::filesystem::path diffuseEmitterScene(const std::filesystem::path& dir) {
+    std::string text = readText(jsonSceneDir() + "/emitterTest.json");
+    const std::string from = "\"Lambertian\"", to = "\"Diffuse\"";
+    for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at)) text.replace(at, from.size(), to);
+    std::filesystem::create_directories(dir);
+    const std::filesystem::path path = dir / "emitterTest_diffuse.json";
+    std::ofstream(path) << text;
+    return path;
 }
 
 study::SweepOptions smallSweep(const std::filesystem::path& dir) {
@@ -76,20 +98,25 @@ TEST(Sweep, WritesCsvPlotsAndReportAndReusesTheCachedReference) {
 
     const auto rows = readCsv(dir / "out" / "sweep.csv");
     ASSERT_FALSE(rows.empty());
-    const std::vector<std::string> header = {"device", "sampler", "rpp", "seed", "time_s", "rmse", "relmse",
-                                             "rmse_edge", "rmse_penumbra", "rmse_gloss", "rmse_defocus", "rmse_motion"};
+    const std::vector<std::string> header = {"device",        "sampler",       "estimator",  "rpp",
+                                             "seed",          "time_s",        "rmse",       "relmse",
+                                             "rmse_edge",     "rmse_penumbra", "rmse_gloss", "rmse_defocus",
+                                             "rmse_motion",   "rmse_indirect", "rmse_emitter"};
     EXPECT_EQ(rows[0], header);
     ASSERT_EQ(rows.size(), 1u + 2u * 4u * 3u * 2u);  // devices x samplers x rpps x seeds
     std::set<std::string> settings;
     for (std::size_t r = 1; r < rows.size(); ++r) {
         ASSERT_EQ(rows[r].size(), header.size()) << "row " << r;
-        settings.insert(rows[r][0] + "," + rows[r][1] + "," + rows[r][2] + "," + rows[r][3]);
+        settings.insert(rows[r][0] + "," + rows[r][1] + "," + rows[r][3] + "," + rows[r][4]);
         EXPECT_TRUE(rows[r][0] == "gpu" || rows[r][0] == "cpu");
-        EXPECT_GT(std::stod(rows[r][4]), 0.0) << "time, row " << r;
-        for (std::size_t c = 5; c < header.size(); ++c) {
+        EXPECT_EQ(rows[r][2], "mis") << "the default estimator only, row " << r;
+        EXPECT_GT(std::stod(rows[r][5]), 0.0) << "time, row " << r;
+        for (std::size_t c = 6; c < header.size(); ++c) {
             const double v = std::stod(rows[r][c]);
-            // glossy.xml has no lens and nothing moves: those regions are empty, their RMSE nan.
-            if (header[c] == "rmse_defocus" || header[c] == "rmse_motion")
+            // glossy.xml has no lens, nothing moves and nothing is path traced: those regions are
+            // empty, their RMSE nan.
+            if (header[c] == "rmse_defocus" || header[c] == "rmse_motion" || header[c] == "rmse_indirect" ||
+                header[c] == "rmse_emitter")
                 EXPECT_TRUE(std::isnan(v)) << header[c] << " = " << rows[r][c] << ", row " << r;
             else
                 EXPECT_TRUE(std::isfinite(v) && v > 0.0) << header[c] << " = " << rows[r][c] << ", row " << r;
@@ -100,7 +127,7 @@ TEST(Sweep, WritesCsvPlotsAndReportAndReusesTheCachedReference) {
     for (const auto& png : {first.plots.errorVsTime, first.plots.errorVsRpp}) {
         ASSERT_TRUE(std::filesystem::exists(png)) << png;
         const Image image = readImage(png.string());
-        EXPECT_EQ(image.width, 1500) << png;
+        EXPECT_EQ(image.width, 2000) << png;
         EXPECT_EQ(image.height, 900) << png;
         double sum = 0.0;
         for (const glm::vec3& p : image.pixels) sum += p.r + p.g + p.b;
@@ -112,8 +139,9 @@ TEST(Sweep, WritesCsvPlotsAndReportAndReusesTheCachedReference) {
     EXPECT_NE(report.find("## Cheapest setting reaching RMSE <= 0.01"), std::string::npos);
     for (const char* device : {"gpu", "cpu"})
         for (const char* sampler : {"random", "regular", "jittered", "sobol"})
-            EXPECT_NE(report.find(std::string("| ") + device + " | " + sampler + " | "), std::string::npos)
+            EXPECT_NE(report.find(std::string("| ") + device + " | " + sampler + " | mis | "), std::string::npos)
                 << device << " " << sampler;
+    EXPECT_EQ(report.find("## Estimators at equal time"), std::string::npos) << "one estimator: nothing to compare";
 
     // The second run takes the reference from the cache; the CPU renders are deterministic, so with
     // the same reference their errors are the same to the last printed digit.
@@ -132,6 +160,97 @@ TEST(Sweep, WritesCsvPlotsAndReportAndReusesTheCachedReference) {
                 ++matched;
             }
     EXPECT_EQ(matched, second.rows.size());
+}
+
+TEST(Sweep, EveryEstimatorIsMeasuredAgainstTheOneReference) {
+    VKRT_SKIP_WITHOUT(jsonSceneDir() + "/emitterTest.json");
+    const std::filesystem::path dir = artifactDir() + "/sweep_estimators";
+    std::filesystem::remove_all(dir);
+    study::SweepOptions options = smallSweep(dir);
+    options.scenePath = diffuseEmitterScene(dir);
+    const Scene scene = loadFile(options.scenePath);
+    options.render.background = glm::vec3(0.0f);  // the emitter alone lights the scene (its sky is grey)
+    options.devices = {study::Device::Cpu};
+    options.samplers = {SamplerKind::Jittered};
+    const std::vector<Estimator> all = {Estimator::Bounce, Estimator::Nee, Estimator::MisBalance, Estimator::MisPower};
+    options.estimators = all;
+    std::ostringstream log;
+    const study::SweepResult swept = study::runSweep(options, scene, log);
+    EXPECT_FALSE(swept.reference.fromCache);
+
+    // One row per estimator, rpp and seed, in the CSV too.
+    ASSERT_EQ(swept.rows.size(), all.size() * 3u * 2u);
+    const auto csv = readCsv(dir / "out" / "sweep.csv");
+    ASSERT_EQ(csv.size(), 1u + swept.rows.size());
+    EXPECT_EQ(csv[0][2], "estimator");
+    for (Estimator e : all) {
+        EXPECT_EQ(std::count_if(swept.rows.begin(), swept.rows.end(), [e](const study::SweepRow& r) { return r.estimator == e; }), 6)
+            << estimatorName(e);
+        EXPECT_EQ(std::count_if(csv.begin(), csv.end(), [e](const auto& row) { return row[2] == estimatorName(e); }), 6)
+            << estimatorName(e);
+    }
+    // The path-traced regions are there, so their errors are numbers.
+    for (const study::SweepRow& r : swept.rows) {
+        EXPECT_TRUE(std::isfinite(r.error.rmseIndirect) && r.error.rmseIndirect > 0.0) << estimatorName(r.estimator);
+        EXPECT_TRUE(std::isfinite(r.error.rmseEmitter) && r.error.rmseEmitter > 0.0) << estimatorName(r.estimator);
+    }
+    // Where the small emitter lights Diffuse surfaces, its light samples beat the bounce that must
+    // hit it, at equal rpp (docs/SAMPLING.md §4 measures equal time). Measured at 16 rpp: RMSE in
+    // the emitter region 1.8x lower (the pixels' edges, 24x18 pixels for a whole scene, are half of
+    // it for every estimator), relative MSE 15x lower.
+    auto at16 = [&](Estimator e) {
+        for (const study::SweepPoint& p : swept.points)
+            if (p.estimator == e && p.rpp == 16) return p;
+        return study::SweepPoint{};
+    };
+    for (Estimator e : {Estimator::Nee, Estimator::MisBalance, Estimator::MisPower}) {
+        const int emitter = static_cast<int>(study::Region::Emitter);
+        EXPECT_LT(1.5 * at16(e).rmse[emitter], at16(Estimator::Bounce).rmse[emitter]) << estimatorName(e);
+        EXPECT_LT(5.0 * at16(e).relMse, at16(Estimator::Bounce).relMse) << estimatorName(e);
+    }
+
+    const std::string report = readText(swept.report);
+    EXPECT_NE(report.find("## Estimators at equal time"), std::string::npos);
+    for (Estimator e : all)
+        EXPECT_NE(report.find("| cpu | jittered | " + estimatorName(e) + " | "), std::string::npos) << estimatorName(e);
+
+    // The reference is rendered with MIS whatever is swept, and its key leaves the estimator out:
+    // a sweep of another estimator alone takes it from the cache.
+    EXPECT_NE(readText(dir / "cache" / "references" / (swept.reference.key + ".txt")).find("estimator mis "), std::string::npos);
+    options.estimators = {Estimator::Bounce};
+    options.outDir = dir / "out2";
+    const study::SweepResult bounce = study::runSweep(options, scene, log);
+    EXPECT_TRUE(bounce.reference.fromCache);
+    EXPECT_EQ(bounce.reference.key, swept.reference.key);
+    for (const study::SweepRow& a : swept.rows)
+        for (const study::SweepRow& b : bounce.rows)
+            if (a.estimator == b.estimator && a.rpp == b.rpp && a.seed == b.seed) {
+                EXPECT_EQ(a.error.rmse, b.error.rmse);
+            }
+}
+
+TEST(Sweep, EqualTimeInterpolatesBetweenTheSettingsAroundIt) {
+    auto point = [](Estimator e, int rpp, double seconds, double rmse) {
+        study::SweepPoint p;
+        p.estimator = e;
+        p.rpp = rpp;
+        p.seconds = seconds;
+        p.rmse.fill(rmse);
+        return p;
+    };
+    // bounce: 0.1 s -> 0.4, 0.4 s -> 0.1 (RMSE ~ 1 / (25 t)); nee: 0.2 s -> 0.05, 0.8 s -> 0.025.
+    const std::vector<study::SweepPoint> points = {point(Estimator::Bounce, 1, 0.1, 0.4), point(Estimator::Bounce, 4, 0.4, 0.1),
+                                                   point(Estimator::Nee, 1, 0.2, 0.05), point(Estimator::Nee, 4, 0.8, 0.025)};
+    const double t = study::commonTime(points, study::Device::Cpu, SamplerKind::Jittered);
+    EXPECT_DOUBLE_EQ(t, 0.4);  // bounce's longest
+    const study::Series bounce{study::Device::Cpu, SamplerKind::Jittered, Estimator::Bounce};
+    const study::Series nee{study::Device::Cpu, SamplerKind::Jittered, Estimator::Nee};
+    EXPECT_DOUBLE_EQ(study::rmseAtTime(points, bounce, study::Region::All, t), 0.1);
+    EXPECT_NEAR(study::rmseAtTime(points, nee, study::Region::All, t), 0.05 * std::pow(0.5, 0.5), 1e-12);  // halfway in log time
+    EXPECT_TRUE(std::isnan(study::rmseAtTime(points, nee, study::Region::All, 0.1)));  // before nee's first setting
+    // No time both reached: nothing to compare.
+    const std::vector<study::SweepPoint> apart = {point(Estimator::Bounce, 1, 0.1, 0.4), point(Estimator::Nee, 1, 0.2, 0.05)};
+    EXPECT_TRUE(std::isnan(study::commonTime(apart, study::Device::Cpu, SamplerKind::Jittered)));
 }
 
 TEST(Sweep, CacheKeyChangesWithTheSceneAndTheImageOptionsOnly) {
@@ -159,6 +278,9 @@ TEST(Sweep, CacheKeyChangesWithTheSceneAndTheImageOptionsOnly) {
     EXPECT_NE(changed([](study::ReferenceSpec& s) { s.lens = glm::vec2(8.0f, 0.3f); }), key);
     EXPECT_NE(changed([](study::ReferenceSpec& s) { s.options.shutter = glm::vec2(0.0f, 0.5f); }), key);
     EXPECT_EQ(changed([](study::ReferenceSpec& s) { s.options.shutter = glm::vec2(0.0f, 1.0f); }), key);  // the default
+    // Every estimator has the same expectation: one reference serves them all.
+    for (Estimator e : {Estimator::Bounce, Estimator::Nee, Estimator::MisBalance, Estimator::MisPower})
+        EXPECT_EQ(changed([e](study::ReferenceSpec& s) { s.options.estimator = e; }), key) << estimatorName(e);
 }
 
 TEST(Sweep, BadOptionsAreRejectedWithTheirValue) {
@@ -173,6 +295,13 @@ TEST(Sweep, BadOptionsAreRejectedWithTheirValue) {
     o.seeds = 1;
     o.render.seed = study::kReferenceSeedA;  // would correlate the sweep with the reference
     EXPECT_THROW(study::validateSweepOptions(o), std::invalid_argument);
+    o.render.seed = 0;
+    o.estimators = {};
+    EXPECT_THROW(study::validateSweepOptions(o), std::invalid_argument);
+    o.estimators = {Estimator::Nee, Estimator::Bounce, Estimator::Nee};
+    EXPECT_THROW(study::validateSweepOptions(o), std::invalid_argument);
+    o.estimators = {Estimator::Nee, Estimator::Bounce};
+    EXPECT_NO_THROW(study::validateSweepOptions(o));
 }
 
 RenderOptions onePixel() {
@@ -218,6 +347,8 @@ TEST(RegionMasks, FindEdgesPenumbraeAndGloss) {
 
     EXPECT_EQ(study::countPixels(g.defocus), 0u);
     EXPECT_EQ(study::countPixels(g.motion), 0u);
+    EXPECT_EQ(study::countPixels(g.indirect), 0u);
+    EXPECT_EQ(study::countPixels(g.emitter), 0u);
 
     // Defocus: the depth-of-field scene's spheres off the focus plane, not the one on it (nor the
     // same camera as a pinhole); motion: the moving instances, none with a shutter of zero length.
@@ -246,6 +377,65 @@ TEST(RegionMasks, FindEdgesPenumbraeAndGloss) {
         EXPECT_EQ(back.defocus, masks->defocus);
         EXPECT_EQ(back.motion, masks->motion);
     }
+}
+
+TEST(RegionMasks, FindPathTracedPixelsAndTheEmittersLightingThem) {
+    VKRT_SKIP_WITHOUT(jsonSceneDir() + "/emitterTest.json");
+    RenderOptions o;
+    o.width = 40;
+    o.height = 30;
+
+    // Lambertian receivers: the shape emitter lights them (its soft shadow is a penumbra) but
+    // nothing is path traced, so every estimator computes the same image: no indirect or emitter pixel.
+    const Scene lambertian = loadFile(jsonSceneDir() + "/emitterTest.json");
+    const study::RegionMasks l = study::findRegions(lambertian, prepareCpuScene(lambertian), o);
+    EXPECT_EQ(study::countPixels(l.indirect), 0u);
+    EXPECT_EQ(study::countPixels(l.emitter), 0u);
+    EXPECT_GT(study::countPixels(l.penumbra), 0u);
+
+    // The same receivers Diffuse: path traced; the emitter lights most of them, but not the ground
+    // in the big sphere's shadow nor the sphere's far side. Emitter pixels are indirect ones.
+    const Scene diffuse = loadFile(diffuseEmitterScene(artifactDir() + "/region_masks"));
+    const study::RegionMasks d = study::findRegions(diffuse, prepareCpuScene(diffuse), o);
+    EXPECT_GT(study::countPixels(d.indirect), d.indirect.size() / 2);
+    EXPECT_GT(study::countPixels(d.emitter), 0u);
+    EXPECT_LT(study::countPixels(d.emitter), study::countPixels(d.indirect));
+    for (std::size_t k = 0; k < d.emitter.size(); ++k)
+        if (d.emitter[k]) {
+            EXPECT_EQ(d.indirect[k], 1) << "pixel " << k;
+        }
+    EXPECT_EQ(d.penumbra, l.penumbra) << "the penumbra does not depend on the receivers' shader";
+    // At -k 0 a Diffuse hit is black: nothing is path traced.
+    RenderOptions flat = o;
+    flat.maxDepth = 0;
+    const study::RegionMasks f = study::findRegions(diffuse, prepareCpuScene(diffuse), flat);
+    EXPECT_EQ(study::countPixels(f.indirect), 0u);
+    EXPECT_EQ(study::countPixels(f.emitter), 0u);
+
+    // Diffuse under point lights only: path traced, but no emitter to sample.
+    if (std::filesystem::exists(jsonSceneDir() + "/diffuseScene.json")) {
+        const Scene points = loadFile(jsonSceneDir() + "/diffuseScene.json");
+        const study::RegionMasks p = study::findRegions(points, prepareCpuScene(points), o);
+        EXPECT_GT(study::countPixels(p.indirect), 0u);
+        EXPECT_EQ(study::countPixels(p.emitter), 0u);
+    }
+
+    // Through mirrors: glossy.xml with Diffuse spheres. The panels show them one level deeper, so
+    // at -k 1 (where a Diffuse hit of depth 1 is black) only the spheres seen directly are indirect.
+    Scene glossy = exampleScene("glossy");
+    for (Shader& shader : glossy.shaders)
+        if (shader.name == "red" || shader.name == "green" || shader.name == "blue") shader.diffuseBounce = true;
+    const std::size_t deep = study::countPixels(study::findRegions(glossy, prepareCpuScene(glossy), o).indirect);
+    RenderOptions shallowOptions = o;
+    shallowOptions.maxDepth = 1;
+    const std::size_t shallow = study::countPixels(study::findRegions(glossy, prepareCpuScene(glossy), shallowOptions).indirect);
+    EXPECT_GT(shallow, 0u);
+    EXPECT_GT(deep, shallow);
+
+    const study::RegionMasks back = study::masksFromImage(study::masksToImage(d));
+    EXPECT_EQ(back.indirect, d.indirect);
+    EXPECT_EQ(back.emitter, d.emitter);
+    EXPECT_EQ(back.penumbra, d.penumbra);
 }
 
 }  // namespace

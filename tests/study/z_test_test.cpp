@@ -99,6 +99,8 @@ TEST(ErrorMetrics, RmseRelMseAndMaskedRegions) {
     masks.gloss = {0, 0, 0, 0};
     masks.defocus = {1, 1, 0, 0};
     masks.motion = {0, 0, 0, 1};
+    masks.indirect = {1, 0, 0, 1};
+    masks.emitter = {0, 0, 0, 0};
     const study::ErrorMetrics e = study::measureError(image, reference, masks);
     EXPECT_NEAR(e.rmse, std::sqrt(0.09 / 12.0), 1e-7);
     EXPECT_NEAR(e.rmseEdge, std::sqrt(0.09 / 3.0), 1e-7);
@@ -106,6 +108,8 @@ TEST(ErrorMetrics, RmseRelMseAndMaskedRegions) {
     EXPECT_TRUE(std::isnan(e.rmseGloss));
     EXPECT_NEAR(e.rmseDefocus, std::sqrt(0.09 / 6.0), 1e-7);
     EXPECT_EQ(e.rmseMotion, 0.0);
+    EXPECT_NEAR(e.rmseIndirect, std::sqrt(0.09 / 6.0), 1e-7);
+    EXPECT_TRUE(std::isnan(e.rmseEmitter));
     EXPECT_NEAR(e.relMse, 0.09 / (0.25 + study::kRelMseEpsilon) / 12.0, 1e-7);
 }
 
