@@ -26,5 +26,8 @@ bool chargeLoop() {
 // (the C++ side, which has no limiter, defines it empty), so budget.glsl precedes sampling.h.
 void markLoopCutOff() { g_loopCutOff = true; }
 #define VKRT_LOOP_CUT_OFF() markLoopCutOff()
+// A shared header's bounded loop charges its passes through this (the budget's error reports a
+// sample that ran out; the loop itself still ends after its bound).
+#define VKRT_LOOP_CHARGE() chargeLoop()
 
 #endif

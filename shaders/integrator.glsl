@@ -178,7 +178,9 @@ vec3 cameraSampleRadiance(vec3 origin, vec3 dir, SampleKey key) {
         q.hasExtra = false;
         Hit hit;
         if (!traceScene(ray.origin, ray.dir, FLT_MAX, false, hit)) {
-            radiance += ray.weight * (HAS_ENVIRONMENT ? escapedRadiance(ray.dir, ray.bouncePdf) : background);
+            // The general kernel has HAS_ENVIRONMENT for every scene: a face size of 0 says none.
+            bool mapped = HAS_ENVIRONMENT && frameEnvironmentFaceSize() > 0u;
+            radiance += ray.weight * (mapped ? escapedRadiance(ray.dir, ray.bouncePdf) : background);
         } else {
             Surface s = surfaceAt(ray.origin, ray.dir, hit);
             Material m = loadMaterial(s.material);
@@ -210,7 +212,8 @@ vec3 cameraSampleRadiance(vec3 origin, vec3 dir, SampleKey key) {
                 vec3 local = vec3(0.0);
                 if (type != SHADER_MIRROR && (!diffuseSurface || bounces)) {
                     local = directLighting(s, N, V, type, kd, ks, materialPhongExponent(m), ray.depth, key);
-                    if (HAS_ENVIRONMENT && bounces) local += environmentLighting(s, N, kd, ray.depth, key);
+                    if (HAS_ENVIRONMENT && bounces && frameEnvironmentFaceSize() > 0u)
+                        local += environmentLighting(s, N, kd, ray.depth, key);
                 }
                 // The shares of local shading and of reflection: mirror 0 and 1, glaze 1 and m,
                 // mirrored Blinn-Phong 1 - m and m, the others 1 and none (RENDERING.md §5). One

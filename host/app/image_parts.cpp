@@ -48,6 +48,9 @@ ImageAttributes partAttributes(const CommandLine& cl, const std::string& device)
     if (cl.aperture) render << "; aperture " << *cl.aperture;
     if (r.shutter) render << "; shutter " << r.shutter->x << "," << r.shutter->y;
     if (cl.general) render << "; general kernel";
+    // Every estimator has the same expectation, but not the same samples: parts must share one.
+    render << "; estimator " << estimatorName(r.estimator);
+    if (!r.environment) render << "; no environment";
     // The CPU reference and a GPU agree to rounding, not bit for bit: parts must share a device kind.
     render << "; device " << (device.rfind("cpu", 0) == 0 ? std::string("cpu") : "gpu " + device.substr(0, device.find(" [")));
     const glm::ivec2 rows = rowsOf(r);

@@ -41,7 +41,7 @@ RenderContext makeRenderContext(const Scene& scene, const SceneAccel& accel, con
     ctx.camera = makeCameraFrame(scene.cameras[options.camera], options.width, options.height);
     ctx.lights = makeLightSources(scene);
     ctx.emitters = buildEmitterTable(scene);
-    ctx.environment = borderedEnvironment(scene.environment);
+    if (options.environment) ctx.environment = borderedEnvironment(scene.environment);
     ctx.environmentLights = environmentDistribution(ctx.environment);
     ctx.estimator = options.estimator;
     ctx.background = options.background ? *options.background : scene.background;

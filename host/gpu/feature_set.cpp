@@ -134,7 +134,7 @@ FeatureSet deriveFeatureSet(const Scene& scene, const SceneAccel& accel, const R
         f.diffuse |= s.diffuseBounce;
     }
     f.emitters = !scene.emitters.empty();
-    f.environment = scene.environment.faceSize > 0;
+    f.environment = scene.environment.faceSize > 0 && options.environment;
     // The estimator matters only where a Diffuse surface meets emitters or the environment; other
     // scenes share one kernel whatever --estimator says.
     f.estimator = f.diffuse ? static_cast<std::uint32_t>(options.estimator) : gpu::ESTIMATOR_BOUNCE;

@@ -74,7 +74,7 @@ gpu::FrameParams makeFrameParams(const Scene& scene, const SceneAccel& accel, co
     const glm::vec2 shutter = shutterOf(options);  // read only by a kernel built with HAS_MOTION
     f.shutter = glm::vec4(shutter.x, shutter.y, 0.0f, 0.0f);
     // The environment's face size and its distribution's cells (environment_distribution.h: C = min(N, 64)).
-    const auto faceSize = static_cast<std::uint32_t>(scene.environment.faceSize);
+    const auto faceSize = options.environment ? static_cast<std::uint32_t>(scene.environment.faceSize) : 0u;
     f.lighting = glm::uvec4(static_cast<std::uint32_t>(scene.emitters.size()), static_cast<std::uint32_t>(options.estimator),
                             faceSize, std::min(faceSize, kMaxEnvironmentCells));
     return f;

@@ -50,6 +50,9 @@ struct RenderOptions {
     // samples, or both weighted by multiple importance sampling). Scenes without Diffuse ignore it.
     Estimator estimator = Estimator::MisPower;
     std::optional<glm::vec3> background;  // overrides the scene's bgColor
+    // false: rays that leave the scene see the background colour even when the scene has an
+    // environment map, as in the course's own ray tracers (none sampled one) and its reference renders.
+    bool environment = true;
     int camera = 0;              // index into Scene::cameras
     // Motion blur: the shutter's open and close in the instances' motion time (0: <transform>,
     // 1: <transformEnd>); absent, the whole motion [0, 1]. A scene without motion ignores it.

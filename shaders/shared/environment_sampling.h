@@ -39,9 +39,15 @@ using namespace vkrt::cubemap;
 #define VKRT_ENV_TABLE_PARAM const float *envTable,
 #define VKRT_ENV_TABLE_ARG envTable,
 #define VKRT_ENV_CDF(i) envTable[i]
+#ifndef VKRT_LOOP_CHARGE
+#define VKRT_LOOP_CHARGE() ((void)0)  // the CPU has no loop limiter (sampling.h)
+#endif
 #else
 #ifndef VKRT_ENV_CDF
 #error "define VKRT_ENV_CDF(i) (the environment's CDF table, a float) before including environment_sampling.h"
+#endif
+#ifndef VKRT_LOOP_CHARGE
+#error "include budget.glsl (or define VKRT_LOOP_CHARGE) before environment_sampling.h"
 #endif
 #define VKRT_ENV_TABLE_PARAM
 #define VKRT_ENV_TABLE_ARG
@@ -62,6 +68,7 @@ VKRT_FN uint envFindInterval(VKRT_ENV_TABLE_PARAM uint first, uint n, float u) {
     uint lo = 0u;
     uint hi = n;
     for (uint step = 0u; step < 32u && hi - lo > 1u; ++step) {
+        VKRT_LOOP_CHARGE();  // the kernel's loop budget counts every loop's passes (budget.glsl)
         uint mid = (lo + hi) >> 1u;
         if (VKRT_ENV_CDF(first + mid) <= u) {
             lo = mid;

@@ -37,6 +37,7 @@ using gpu::SAMPLER_SOBOL;
 // (shaders/budget.glsl, included first); the CPU has no limiter.
 #ifndef VKRT_LOOP_CUT_OFF
 #ifdef __cplusplus
+#define VKRT_LOOP_CHARGE() ((void)0)
 #define VKRT_LOOP_CUT_OFF() ((void)0)
 #else
 #error "include budget.glsl (or define VKRT_LOOP_CUT_OFF) before sampling.h"

@@ -66,6 +66,11 @@ DeviceImages renderBoth(const Scene& scene, RenderOptions options, KernelVariant
 
 Agreement renderBothAndCompare(const Scene& scene, const std::string& label, RenderOptions options,
                                KernelVariant variant) {
+    return measureAgreement(scene, label, options, variant, true);
+}
+
+Agreement measureAgreement(const Scene& scene, const std::string& label, RenderOptions options, KernelVariant variant,
+                           bool required) {
     const DeviceImages images = renderBoth(scene, options, variant);
     Agreement a;
     a.diff = compareImages(images.cpu, images.gpu);
@@ -75,7 +80,7 @@ Agreement renderBothAndCompare(const Scene& scene, const std::string& label, Ren
                 name.c_str(), options.width, options.height, options.samplesPerPixel, a.diff.maxAbs * 255.0,
                 a.diff.meanAbs * 255.0, 100.0 * a.diff.fractionOver2, images.gpuStats.renderSeconds,
                 images.gpuStats.features.c_str());
-    if (!a.ok) {
+    if (!a.ok && required) {
         const std::string heat = artifactDir() + "/agreement_" + name + "_heat.png";
         writeImage(a.diff.heatMap, heat);
         writeImage(images.cpu, artifactDir() + "/agreement_" + name + "_cpu.png");

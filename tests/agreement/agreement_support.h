@@ -48,6 +48,10 @@ struct Agreement {
     bool ok = false;
 };
 
+// renderBoth, then the rule above; prints one "[agreement]" line and, with `required`, fails the
+// test and keeps the heat map when the rule does not hold.
+Agreement measureAgreement(const Scene& scene, const std::string& name, RenderOptions options,
+                           KernelVariant variant = KernelVariant::Specialised, bool required = true);
 // renderBoth, then the rule above; prints one "[agreement]" line and keeps the heat map on failure.
 // `name` names the case in the output and the artefacts.
 Agreement renderBothAndCompare(const Scene& scene, const std::string& name, RenderOptions options,

@@ -5,6 +5,7 @@ layout(local_size_x = 64) in;
 layout(binding = 0, r32ui) uniform readonly uimageBuffer envCdf;
 layout(binding = 1, std430) buffer Out { vec4 o[]; };
 #define VKRT_ENV_CDF(i) uintBitsToFloat(imageLoad(envCdf, int(i)).x)
+#define VKRT_LOOP_CHARGE()  // the kernels charge their loop budget here (budget.glsl)
 #include "environment_sampling.h"
 void main() {
     uint i = gl_GlobalInvocationID.x;
