@@ -46,6 +46,7 @@ std::string describe(const ReferenceSpec& spec) {
       << "lens " << hexFloat(spec.lens.x) << "," << hexFloat(spec.lens.y) << "\n"
       << "shutter " << hexFloat(shutterOf(o).x) << "," << hexFloat(shutterOf(o).y) << "\n"
       << "background " << (o.background ? hexFloat(o.background->r) + "," + hexFloat(o.background->g) + "," + hexFloat(o.background->b) : "scene") << "\n"
+      << "environment " << (o.environment ? "scene" : "off") << "\n"
       << "rpp " << spec.rpp << " as two halves with seeds " << kReferenceSeedA << ", " << kReferenceSeedB << "\n"
       << "sampler " << samplerName(spec.sampler) << "\n"
       << "device " << deviceName(spec.device) << "\n";

@@ -59,10 +59,11 @@ void checkSameDevices(WorkSharing& ranks, const std::vector<Device>& devices, De
 }
 
 // The estimators weigh the light that a Diffuse surface can both hit and sample: shape emitters and
-// the environment map. Without those (or without Diffuse) they compute the same image.
-bool estimatorsDiffer(const Scene& scene) {
+// the environment map (unless --no-environment). Without those (or without Diffuse) they compute
+// the same image.
+bool estimatorsDiffer(const Scene& scene, const RenderOptions& options) {
     const bool diffuse = std::any_of(scene.shaders.begin(), scene.shaders.end(), [](const Shader& s) { return s.diffuseBounce; });
-    return diffuse && (!scene.emitters.empty() || scene.environment.faceSize > 0);
+    return diffuse && (!scene.emitters.empty() || (options.environment && scene.environment.faceSize > 0));
 }
 
 std::string joined(const std::vector<int>& values) {
@@ -161,7 +162,7 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
         return result;
     }
 
-    if (options.estimators.size() > 1 && !estimatorsDiffer(scene))
+    if (options.estimators.size() > 1 && !estimatorsDiffer(scene, options.render))
         log << "note: every estimator renders the same image of " << options.scenePath.string()
             << ": it has no Diffuse surface, or nothing but the bounce finds its light (no shape emitter or environment "
                "map; docs/RENDERING.md §5); their times still differ\n";

@@ -278,6 +278,7 @@ TEST(Sweep, CacheKeyChangesWithTheSceneAndTheImageOptionsOnly) {
     EXPECT_NE(changed([](study::ReferenceSpec& s) { s.lens = glm::vec2(8.0f, 0.3f); }), key);
     EXPECT_NE(changed([](study::ReferenceSpec& s) { s.options.shutter = glm::vec2(0.0f, 0.5f); }), key);
     EXPECT_EQ(changed([](study::ReferenceSpec& s) { s.options.shutter = glm::vec2(0.0f, 1.0f); }), key);  // the default
+    EXPECT_NE(changed([](study::ReferenceSpec& s) { s.options.environment = false; }), key);  // --no-environment
     // Every estimator has the same expectation: one reference serves them all.
     for (Estimator e : {Estimator::Bounce, Estimator::Nee, Estimator::MisBalance, Estimator::MisPower})
         EXPECT_EQ(changed([e](study::ReferenceSpec& s) { s.options.estimator = e; }), key) << estimatorName(e);
