@@ -78,7 +78,8 @@ public:
           probe_(probe),
           shutter_(shutterOf(options)),
           maxDepth_(options.maxDepth),
-          moving_(!accel.bvh.motions.empty()) {}
+          moving_(!accel.bvh.motions.empty()),
+          pathTracing_(std::any_of(scene.shaders.begin(), scene.shaders.end(), pathTraced)) {}
 
     // Every mask's entry of pixel (i, j).
     PixelFlags probe(int i, int j) const {
@@ -97,7 +98,7 @@ public:
             ray.time = shutter_.x;
             if (frame_.thinLens && !flags.defocus) flags.defocus = defocused(i, j, offset);
             if (moving_ && !flags.motion) flags.motion = moves(ray);
-            if (!(flags.indirect && flags.emitter)) findDiffuse(ray, 0, 1.0f, flags);
+            if (pathTracing_ && !(flags.indirect && flags.emitter)) findDiffuse(ray, 0, 1.0f, flags);
             bvh::Hit hit;
             ObjectId id;
             glm::vec3 normal(0.0f);
@@ -323,6 +324,7 @@ private:
     glm::vec2 shutter_;
     int maxDepth_;
     bool moving_;
+    bool pathTracing_;  // the scene has a Diffuse shader: the indirect and emitter regions can be non-empty
 };
 
 }  // namespace
