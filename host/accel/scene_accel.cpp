@@ -120,6 +120,7 @@ SceneAccel buildSceneAccel(const Scene& scene, const bvh::BuildOptions& options)
         accel.instanceEmitter[instances.size() - scene.emitters.size() + e] = static_cast<int>(e);
 
     accel.bvh = bvh::buildSceneBvh(groups, instances, options);
+    accel.lighting = std::make_shared<const SceneLighting>(buildSceneLighting(scene));
     return accel;
 }
 

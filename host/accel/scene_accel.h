@@ -11,7 +11,10 @@
 #include <cstdint>
 #include <vector>
 
+#include <memory>
+
 #include "bvh.h"
+#include "scene_lighting.h"
 #include "scene.h"
 
 namespace vkrt {
@@ -27,6 +30,9 @@ struct SceneAccel {
     std::vector<std::vector<PrimOrigin>> groupPrims;  // per group, per input primitive
     std::vector<int> instanceOrigin;                  // per BVH instance: index into Scene::instances, or -1
     std::vector<int> instanceEmitter;                 // per BVH instance: index into Scene::emitters, or -1
+    // What the renderers sample emitters and the environment by, built with the tree (shared:
+    // copies of a prepared scene share it). Null in hand-made accels: renderers then build it.
+    std::shared_ptr<const SceneLighting> lighting;
 
     // The primitive a hit refers to.
     const PrimOrigin& origin(std::uint32_t instance, std::uint32_t flatPrim) const {

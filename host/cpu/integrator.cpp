@@ -29,20 +29,6 @@ glm::vec3 textured(const Scene& scene, glm::vec3 colour, int texture, glm::vec2 
     return texture == kNoTexture ? colour : colour * sampleTexture(scene.textures[texture], uv);
 }
 
-// A point of emitter record r seen from x, for the 2D light sample u (emitter_sampling.h).
-emitters::EmitterSample sampleEmitter(const EmitterTable& table, const gpu::EmitterRecord& r, const glm::vec3& x,
-                                      glm::vec2 u) {
-    switch (gpu::emitterKind(r)) {
-    case gpu::EMITTER_SPHERE: return emitters::sampleSphereEmitter(x, glm::vec3(r.sphere), r.sphere.w, u);
-    case gpu::EMITTER_ELLIPSOID: return emitters::sampleEllipsoidEmitter(r, x, u);
-    default: break;
-    }
-    if (gpu::emitterTriangleCount(r) == 0) return emitters::EmitterSample{glm::vec3(0.0f), glm::vec3(0.0f), 0.0f};
-    const std::uint32_t i = pickEmitterTriangle(table, r, u.x);
-    const float previous = i > gpu::emitterFirstTriangle(r) ? gpu::emitterTriangleCdf(table.triangles[i - 1]) : 0.0f;
-    return emitters::sampleEmitterTriangle(table.triangles[i], previous, gpu::emitterAreaPdf(r), x, u);
-}
-
 }  // namespace
 
 glm::vec3 Integrator::cameraRadiance(const bvh::Ray& ray, SampleKey key) {
@@ -59,11 +45,11 @@ glm::vec3 Integrator::trace(const bvh::Ray& ray, int depth, glm::vec3 weight, Sa
 }
 
 glm::vec3 Integrator::escaped(const glm::vec3& dir, float bouncePdf) const {
-    if (ctx_.environment.faceSize == 0) return ctx_.background;  // never light-sampled: always seen in full
-    const glm::vec3 radiance = environmentRadiance(ctx_.environment, dir);
+    if (!ctx_.environment) return ctx_.background;  // never light-sampled: always seen in full
+    const glm::vec3 radiance = environmentRadiance(ctx_.lighting->environment, dir);
     if (!(bouncePdf > 0.0f)) return radiance;
     if (!diffuseWeighs()) return glm::vec3(0.0f);  // next-event estimation counted it already
-    const float lightPdf = static_cast<float>(ctx_.lightSamples) * vkrt::environmentPdf(ctx_.environmentLights, dir);
+    const float lightPdf = static_cast<float>(ctx_.lightSamples) * vkrt::environmentPdf(ctx_.lighting->environmentLights, dir);
     return radiance * emitters::misWeight(bouncePdf, lightPdf, ctx_.estimator == Estimator::MisPower);
 }
 
@@ -76,7 +62,7 @@ glm::vec3 Integrator::environmentLight(const SurfacePoint& sp, const glm::vec3& 
     for (std::uint32_t j = 0; j < ctx_.lightSamples; ++j) {
         const glm::vec2 u = sampling::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel, key.sample * ctx_.lightSamples + j,
                                                dim, ctx_.seed);
-        const EnvironmentSample s = sampleEnvironment(ctx_.environmentLights, u);
+        const EnvironmentSample s = sampleEnvironment(ctx_.lighting->environmentLights, u);
         const float cosine = glm::dot(n, s.direction);
         // No light from inside the surface, as for the bounce.
         if (cosine <= 0.0f || glm::dot(s.direction, ng) <= 0.0f) continue;
@@ -90,26 +76,17 @@ glm::vec3 Integrator::environmentLight(const SurfacePoint& sp, const glm::vec3& 
         shadow.dir = s.direction;
         shadow.time = key.time;
         if (bvh::intersectAny(ctx_.accel->bvh, shadow)) continue;
-        sum += environmentRadiance(ctx_.environment, s.direction) * (w * cosine * emitters::EMITTER_INV_PI / s.pdf);
+        sum += environmentRadiance(ctx_.lighting->environment, s.direction) * (w * cosine * emitters::EMITTER_INV_PI / s.pdf);
     }
     return sum / k;
 }
 
-float Integrator::emitterPdf(int e, const glm::vec3& x, const glm::vec3& q, const glm::vec3& nq) const {
-    const gpu::EmitterRecord& r = ctx_.emitters.records[static_cast<std::size_t>(e)];
-    switch (gpu::emitterKind(r)) {
-    case gpu::EMITTER_SPHERE: return emitters::sphereEmitterPdf(x, glm::vec3(r.sphere), r.sphere.w, q, nq);
-    case gpu::EMITTER_ELLIPSOID: return emitters::ellipsoidEmitterPdf(r, x, q, nq);
-    default: break;
-    }
-    return gpu::emitterTriangleCount(r) == 0 ? 0.0f : emitters::solidAnglePdf(gpu::emitterAreaPdf(r), x, q, nq);
-}
-
 glm::vec3 Integrator::emitted(const bvh::Ray& ray, const SurfacePoint& sp, float bouncePdf) const {
-    const glm::vec3 radiance = glm::vec3(ctx_.emitters.records[static_cast<std::size_t>(sp.emitter)].radiance);
+    const glm::vec3 radiance = glm::vec3(ctx_.lighting->emitters.records[static_cast<std::size_t>(sp.emitter)].radiance);
     if (!(bouncePdf > 0.0f)) return radiance;  // not a Diffuse bounce that sampled lights: seen in full
     if (!diffuseWeighs()) return glm::vec3(0.0f);  // next-event estimation counted it already
-    const float lightPdf = static_cast<float>(ctx_.lightSamples) * emitterPdf(sp.emitter, ray.origin, sp.position, sp.geometricNormal);
+    const float lightPdf = static_cast<float>(ctx_.lightSamples) * emitterPdf(ctx_.lighting->emitters.records[static_cast<std::size_t>(sp.emitter)], ray.origin,
+                                                                                     sp.position, sp.geometricNormal);
     return radiance * emitters::misWeight(bouncePdf, lightPdf, ctx_.estimator == Estimator::MisPower);
 }
 
@@ -204,17 +181,17 @@ glm::vec3 Integrator::directLight(const Shader& shader, const SurfacePoint& sp, 
     // steradian) stands for intensity L / (pi p), so a Lambertian receiver gets kd / pi times the
     // integral of L cos over the emitter's solid angle: what a Diffuse bounce that hits it sees.
     const bool isDiffuse = shader.diffuseBounce;
-    if (ctx_.emitters.records.empty() || (isDiffuse && !diffuseSamplesLights())) return sum;
+    if (ctx_.lighting->emitters.records.empty() || (isDiffuse && !diffuseSamplesLights())) return sum;
     const bool weighs = isDiffuse && diffuseWeighs();
     const float k = static_cast<float>(ctx_.lightSamples);
-    for (const gpu::EmitterRecord& r : ctx_.emitters.records) {
+    for (const gpu::EmitterRecord& r : ctx_.lighting->emitters.records) {
         const glm::vec3 radiance(r.radiance);
         const std::uint32_t dim = sampling::dimLight(static_cast<std::uint32_t>(depth), gpu::emitterLightOrdinal(r));
         glm::vec3 emitterSum(0.0f);
         for (std::uint32_t j = 0; j < ctx_.lightSamples; ++j) {
             const glm::vec2 u = sampling::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel,
                                                    key.sample * ctx_.lightSamples + j, dim, ctx_.seed);
-            const emitters::EmitterSample s = sampleEmitter(ctx_.emitters, r, sp.position, u);
+            const emitters::EmitterSample s = sampleEmitter(ctx_.lighting->emitters, r, sp.position, u);
             if (!(s.pdf > 0.0f) || !std::isfinite(s.pdf)) continue;
             float w = 1.0f;
             if (weighs) {
@@ -237,7 +214,7 @@ glm::vec3 Integrator::diffuse(const Shader& shader, const SurfacePoint& sp, cons
     // maximum depth (so -k 0 shows emitters and the environment only).
     if (depth >= ctx_.maxDepth) return glm::vec3(0.0f);
     glm::vec3 radiance = directLight(shader, sp, n, ng, n, kd, glm::vec3(0.0f), depth, key);
-    if (ctx_.environment.faceSize > 0 && diffuseSamplesLights()) radiance += kd * environmentLight(sp, n, ng, depth, key);
+    if (ctx_.environment && diffuseSamplesLights()) radiance += kd * environmentLight(sp, n, ng, depth, key);
 
     // One cosine-weighted bounce per pixel sample: f cos / pdf = (kd / pi) cos / (cos / pi) = kd.
     const glm::vec2 u = sampling::sample2D(ctx_.sampler, ctx_.pixelGrid, key.pixel, key.sample,

@@ -71,8 +71,6 @@ private:
     glm::vec3 escaped(const glm::vec3& dir, float bouncePdf) const;
     // A Diffuse surface's k light samples of the environment map, drawn by luminance.
     glm::vec3 environmentLight(const SurfacePoint& sp, const glm::vec3& n, const glm::vec3& ng, int depth, SampleKey key);
-    // The solid-angle density with which emitter e's light samples from x reach its point q.
-    float emitterPdf(int e, const glm::vec3& x, const glm::vec3& q, const glm::vec3& nq) const;
     // The (possibly glossy) reflection seen from a surface with shading normal n and geometric normal ng
     // (both facing the incoming ray).
     glm::vec3 reflection(const bvh::Ray& ray, const SurfacePoint& sp, const glm::vec3& n, const glm::vec3& ng,

@@ -40,9 +40,8 @@ RenderContext makeRenderContext(const Scene& scene, const SceneAccel& accel, con
     ctx.accel = &accel;
     ctx.camera = makeCameraFrame(scene.cameras[options.camera], options.width, options.height);
     ctx.lights = makeLightSources(scene);
-    ctx.emitters = buildEmitterTable(scene);
-    if (options.environment) ctx.environment = borderedEnvironment(scene.environment);
-    ctx.environmentLights = environmentDistribution(ctx.environment);
+    ctx.lighting = accel.lighting ? accel.lighting : std::make_shared<const SceneLighting>(buildSceneLighting(scene));
+    ctx.environment = options.environment && ctx.lighting->environment.faceSize > 0;
     ctx.estimator = options.estimator;
     ctx.background = options.background ? *options.background : scene.background;
     ctx.sampler = static_cast<unsigned>(options.sampler);

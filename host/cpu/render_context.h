@@ -7,9 +7,9 @@
 #include <glm/glm.hpp>
 
 #include "camera.h"
-#include "emitter_table.h"
-#include "environment_distribution.h"
-#include "environment_map.h"
+#include <memory>
+
+#include "scene_lighting.h"
 #include "lights.h"
 #include "render_options.h"
 #include "scene.h"
@@ -22,9 +22,8 @@ struct RenderContext {
     const SceneAccel* accel = nullptr;
     CameraFrame camera;
     std::vector<LightSource> lights;
-    EmitterTable emitters;             // the shape emitters' sampling records (emitter_table.h)
-    EnvironmentTexels environment;     // the environment map's bordered faces (faceSize 0: none)
-    EnvironmentDistribution environmentLights;  // its luminance distribution, for light samples
+    std::shared_ptr<const SceneLighting> lighting;  // emitters and environment map (scene_lighting.h)
+    bool environment = false;          // rays that leave see the map (it exists, RenderOptions::environment)
     Estimator estimator = Estimator::MisPower;  // Diffuse: how emitters and the environment are found
     glm::vec3 background{0.0f};
     unsigned sampler = 0;              // gpu::SAMPLER_*

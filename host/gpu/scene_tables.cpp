@@ -1,7 +1,8 @@
 #include "scene_tables.h"
 
-#include "environment_distribution.h"
-#include "environment_map.h"
+#include <memory>
+
+#include "scene_lighting.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -93,10 +94,11 @@ SceneTables buildSceneTables(const Scene& scene, const SceneAccel& accel) {
         m.ids = glm::uvec4(gpu::SHADER_EMITTER, gpu::TEXTURE_NONE, gpu::TEXTURE_NONE, static_cast<std::uint32_t>(e));
         t.materials.push_back(m);
     }
-    t.emitters = buildEmitterTable(scene);
-    EnvironmentTexels environment = borderedEnvironment(scene.environment);
-    t.environmentCdf = environmentDistribution(environment).table;
-    t.environmentTexels = std::move(environment.texels);
+    const std::shared_ptr<const SceneLighting> lighting =
+        accel.lighting ? accel.lighting : std::make_shared<const SceneLighting>(buildSceneLighting(scene));
+    t.emitters = lighting->emitters;
+    t.environmentTexels = lighting->environment.texels;
+    t.environmentCdf = lighting->environmentLights.table;
 
     std::uint32_t areaLights = 0;
     for (const Light& l : scene.lights)

@@ -129,6 +129,28 @@ EmitterTable buildEmitterTable(const Scene& scene) {
     return table;
 }
 
+emitters::EmitterSample sampleEmitter(const EmitterTable& table, const gpu::EmitterRecord& r, const glm::vec3& x,
+                                      glm::vec2 u) {
+    switch (gpu::emitterKind(r)) {
+    case gpu::EMITTER_SPHERE: return emitters::sampleSphereEmitter(x, glm::vec3(r.sphere), r.sphere.w, u);
+    case gpu::EMITTER_ELLIPSOID: return emitters::sampleEllipsoidEmitter(r, x, u);
+    default: break;
+    }
+    if (gpu::emitterTriangleCount(r) == 0) return emitters::EmitterSample{x, glm::vec3(0.0f, 0.0f, 1.0f), 0.0f};
+    const std::uint32_t i = pickEmitterTriangle(table, r, u.x);
+    const float previous = i > gpu::emitterFirstTriangle(r) ? gpu::emitterTriangleCdf(table.triangles[i - 1]) : 0.0f;
+    return emitters::sampleEmitterTriangle(table.triangles[i], previous, gpu::emitterAreaPdf(r), x, u);
+}
+
+float emitterPdf(const gpu::EmitterRecord& r, const glm::vec3& x, const glm::vec3& q, const glm::vec3& nq) {
+    switch (gpu::emitterKind(r)) {
+    case gpu::EMITTER_SPHERE: return emitters::sphereEmitterPdf(x, glm::vec3(r.sphere), r.sphere.w, q, nq);
+    case gpu::EMITTER_ELLIPSOID: return emitters::ellipsoidEmitterPdf(r, x, q, nq);
+    default: break;
+    }
+    return gpu::emitterTriangleCount(r) == 0 ? 0.0f : emitters::solidAnglePdf(gpu::emitterAreaPdf(r), x, q, nq);
+}
+
 std::uint32_t pickEmitterTriangle(const EmitterTable& table, const gpu::EmitterRecord& record, float u) {
     const auto first = table.triangles.begin() + gpu::emitterFirstTriangle(record);
     const auto last = first + gpu::emitterTriangleCount(record);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "device_host.h"
+#include "emitter_sampling.h"
 #include "scene.h"
 
 namespace vkrt {
@@ -26,5 +27,12 @@ EmitterTable buildEmitterTable(const Scene& scene);
 // The index of the triangle an EMITTER_TRIANGLES sample u.x picks: the first whose cumulative
 // share exceeds u (the GLSL kernel's search is the same: the same triangle on both devices).
 std::uint32_t pickEmitterTriangle(const EmitterTable& table, const gpu::EmitterRecord& record, float u);
+
+// A point of `record` seen from x for the 2D light sample u, by its kind's rule (emitter_sampling.h;
+// the kernel's sampleEmitter in shaders/emitters.glsl is the same dispatch). pdf 0: no point.
+emitters::EmitterSample sampleEmitter(const EmitterTable& table, const gpu::EmitterRecord& record, const glm::vec3& x,
+                                      glm::vec2 u);
+// The solid-angle density at x with which sampleEmitter reaches the record's point q (normal nq).
+float emitterPdf(const gpu::EmitterRecord& record, const glm::vec3& x, const glm::vec3& q, const glm::vec3& nq);
 
 }  // namespace vkrt

@@ -74,7 +74,7 @@ public:
           accel_(accel),
           frame_(cpu::makeCameraFrame(scene.cameras.at(options.camera), options.width, options.height)),
           lights_(cpu::makeLightSources(scene)),
-          emitters_(buildEmitterTable(scene)),
+          emitters_(accel.lighting ? accel.lighting->emitters : buildEmitterTable(scene)),
           probe_(probe),
           shutter_(shutterOf(options)),
           maxDepth_(options.maxDepth),
@@ -209,17 +209,7 @@ private:
         const gpu::EmitterRecord& r = emitters_.records[l - lights_.size()];
         const float k = static_cast<float>(s) + 0.5f;
         const glm::vec2 u(k / static_cast<float>(m * m), k * 0.618034f - std::floor(k * 0.618034f));
-        emitters::EmitterSample sample;
-        switch (gpu::emitterKind(r)) {
-        case gpu::EMITTER_SPHERE: sample = emitters::sampleSphereEmitter(x, glm::vec3(r.sphere), r.sphere.w, u); break;
-        case gpu::EMITTER_ELLIPSOID: sample = emitters::sampleEllipsoidEmitter(r, x, u); break;
-        default: {
-            if (gpu::emitterTriangleCount(r) == 0) return std::nullopt;
-            const std::uint32_t t = pickEmitterTriangle(emitters_, r, u.x);
-            const float previous = t > gpu::emitterFirstTriangle(r) ? gpu::emitterTriangleCdf(emitters_.triangles[t - 1]) : 0.0f;
-            sample = emitters::sampleEmitterTriangle(emitters_.triangles[t], previous, gpu::emitterAreaPdf(r), x, u);
-        }
-        }
+        const emitters::EmitterSample sample = sampleEmitter(emitters_, r, x, u);
         if (!(sample.pdf > 0.0f) || !std::isfinite(sample.pdf)) return std::nullopt;
         return sample.point;
     }
