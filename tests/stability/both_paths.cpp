@@ -14,9 +14,9 @@
 
 namespace vkrt::stability {
 
-BothImages renderBoth(const Scene& scene, const RenderOptions& options) {
+BothImages renderBoth(const Scene& scene, const RenderOptions& options, Image* cpuSampleVariance) {
     BothImages out;
-    out.cpu = renderCpu(scene, prepareCpuScene(scene), options, &out.cpuStats);
+    out.cpu = renderCpu(scene, prepareCpuScene(scene), options, &out.cpuStats, cpuSampleVariance);
     GpuRenderer& gpu = sharedGpu();
     const std::size_t messagesBefore = gpu.validationLog()->count();
     // Each device from the scene it prepares itself, as `vkrt` renders it.

@@ -20,8 +20,9 @@ struct BothImages {
 
 // Builds the BVH, renders on the CPU and on the shared GPU renderer, and checks (non-fatally, so a
 // test can report more) that neither path replaced a non-finite sample, that no pixel is NaN or
-// Inf, and that the validation layers stayed silent.
-BothImages renderBoth(const Scene& scene, const RenderOptions& options);
+// Inf, and that the validation layers stayed silent. cpuSampleVariance (optional): the CPU's
+// per-pixel sample variance (renderCpu's), for tolerances derived from the noise.
+BothImages renderBoth(const Scene& scene, const RenderOptions& options, Image* cpuSampleVariance = nullptr);
 
 // A feature's code costs a scene that does not use it nothing but time: the general kernel (every
 // feature compiled in, `feature` named in its summary) renders `scene` bit for bit as the

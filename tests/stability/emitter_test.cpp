@@ -1,0 +1,232 @@
+// Shape emitters (issue 20, docs/RENDERING.md §4) lighting a plane, on both devices, against the
+// closed forms of radiometry computed here (path_tracing_support.h), never against the renderers:
+//   - a sphere of radius r and radiance L wholly above a Lambertian plane gives kd L (r/d)^2 cos
+//     per pixel, and so does a Diffuse plane at max depth 1 under a black sky, under every
+//     estimator; a sphere of radius 1e-3 with L r^2 kept is the same falloff point source;
+//   - the same sphere as a world sphere, as an instance of the unit sphere (uniform scale and
+//     translation) and mirrored (negative scale) lights the plane alike; an ellipsoid (non-uniform
+//     scale) lights it as Lambert's integral over its silhouette says, by light samples (Nanson's
+//     area density) and by bounces alike;
+//   - a quad of two triangles (world space, non-uniformly scaled and tilted, mirrored) lights it
+//     as Lambert's polygon formula says, from either side (emission is two-sided);
+//   - the two devices agree by the project's rule on every image.
+// The plane is the top face of a box, seen from a camera below every emitter (top view at height
+// 0.5, every emitter above), so no pixel sees an emitter and every pixel is the receiver.
+#include <cmath>
+#include <numbers>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+#include "both_paths.h"
+#include "path_tracing_support.h"
+#include "scene_building.h"
+
+namespace vkrt::stability {
+namespace {
+
+constexpr int kSize = 24;          // pixels across the 3 x 3 square of plane seen
+constexpr float kHalf = 1.5f;
+constexpr float kCameraHeight = 0.5f;
+const glm::vec3 kKd(0.8f, 0.6f, 0.4f);
+// Each render is one family of 24 x 24 x 3 values; a false failure anywhere in it has probability
+// 1e-3 (Sidak), |z| ~ 5.0.
+const double kZ = zLimitFor(kSize * kSize * 3, 1e-3);
+// Relative floor of the per-pixel tolerance: the renderers' float arithmetic (a light sample's
+// direction and density to ~1e-6 relative, 256 samples summed in float: ~1e-5) and the closed
+// forms' quadrature (< 1e-5); a wrong convention (a missing cosine, pi, or falloff) is > 10%.
+constexpr double kFloor = 1e-4;
+
+const Estimator kAllEstimators[] = {Estimator::Bounce, Estimator::Nee, Estimator::MisBalance, Estimator::MisPower};
+
+// The plane y = 0 under the camera, its shader `receiver`, a black sky: add emitters.
+Scene plane(const Shader& receiver) {
+    Scene scene;
+    scene.path = "a plane under shape emitters (built in code)";
+    scene.background = glm::vec3(0.0f);
+    scene.cameras.push_back(topView(kHalf, kCameraHeight));
+    scene.shapes.push_back(box({-6.0f, -1.0f, -6.0f}, {6.0f, 0.0f, 6.0f}, add(scene, receiver)));
+    return scene;
+}
+
+// kd L / pi times an emitter's cosine integral at each plane point: the reflected radiance.
+PlaneRadiance reflected(glm::vec3 radiance, const std::function<double(glm::dvec3)>& cosineIntegral) {
+    return [=](glm::dvec3 p) { return glm::dvec3(kKd) * glm::dvec3(radiance) * cosineIntegral(p) / std::numbers::pi; };
+}
+
+struct Rendered {
+    BothImages images;
+    Image variance;  // the CPU's per-pixel sample variance
+    int rpp = 0;
+};
+
+Rendered render(const Scene& scene, const RenderOptions& options) {
+    Rendered r;
+    r.images = renderBoth(scene, options, &r.variance);
+    r.rpp = options.samplesPerPixel;
+    return r;
+}
+
+// Both devices' images against the exact image, per pixel (block 1) or per block, and the whole
+// region's mean; then the devices against each other by the project's rule.
+void expectMatches(const Rendered& r, const Image& expected, const std::string& what, int block = 1) {
+    const double z = block == 1 ? kZ : zLimitFor((kSize / block) * (kSize / block) * 3, 1e-3);
+    for (const auto& [device, image] : {std::pair{"CPU", &r.images.cpu}, std::pair{"GPU", &r.images.gpu}}) {
+        const NoiseComparison c = compareWithNoise({image, &r.variance, r.rpp}, {&expected}, block, z, kFloor);
+        recordNote(what + " (" + device + ")", c.describe());
+        EXPECT_EQ(c.failing, 0) << what << ", " << device << ": " << c.describe();
+        // The whole region's mean: a bias of a few tenths of a percent shows here.
+        EXPECT_LT(std::fabs(c.meanZ), zLimitFor(1, 1e-3)) << what << ", " << device << ": " << c.describe();
+    }
+    const Distance d = distance(r.images.gpu, r.images.cpu);
+    recordRow(what, d);
+    EXPECT_TRUE(agrees(d)) << what << ": GPU vs CPU " << d.describe();
+}
+
+// The receivers a closed form is checked on: a Lambertian plane (light samples of the emitter,
+// never weighted: §5), and a Diffuse plane at max depth 1 under a black sky (its bounce finds only
+// the emitter, so it reflects exactly the same light) under each estimator. The bounce estimator
+// finds a small emitter with a few samples per pixel ((r/d)^2 cos, ~7% at the centre and 0.5% at
+// the corners here), so it gets 4x the samples and is judged over 4 x 4 pixel blocks, where 4,096
+// samples hold 20 hits or more even at the corners.
+void expectEveryReceiverMatches(const Scene& lambertianScene, const Scene& diffuseScene, const Image& expected,
+                                const std::string& what, int rpp, bool withBounce = true) {
+    expectMatches(render(lambertianScene, pathOptions(kSize, rpp, 4, Estimator::MisPower)), expected, what + ", Lambertian");
+    for (Estimator e : kAllEstimators) {
+        if (e == Estimator::Bounce && !withBounce) continue;
+        const bool bounce = e == Estimator::Bounce;
+        expectMatches(render(diffuseScene, pathOptions(kSize, bounce ? 4 * rpp : rpp, 1, e)), expected,
+                      what + ", Diffuse at depth 1, " + estimatorName(e), bounce ? 4 : 1);
+    }
+}
+
+// ---- a sphere ----
+// Bug targeted: any other falloff or cosine convention (the course's no-falloff point light, a
+// missing receiver cosine, an emitter radiance off by pi), a cone density that is not 1 / solid
+// angle, a bounce that sees the emitter at another radiance than the light samples count.
+const glm::vec3 kCentre(0.2f, 1.1f, -0.1f);
+constexpr float kRadius = 0.3f;
+const glm::vec3 kRadiance(2.0f, 3.0f, 4.0f);
+
+PlaneRadiance sphereLight(glm::vec3 centre, float radius, glm::vec3 radiance) {
+    return reflected(radiance, [=](glm::dvec3 p) { return sphereCosineIntegral(p, {0, 1, 0}, centre, radius); });
+}
+
+TEST(Emitters, ASphereLightsAPlaneAsRSquaredOverDSquaredTimesTheCosine) {
+    Scene lambertianPlane = plane(lambertian(kKd)), diffusePlane = plane(diffuse(kKd));
+    for (Scene* s : {&lambertianPlane, &diffusePlane}) addSphereEmitter(*s, kCentre, kRadius, kRadiance);
+    const Image expected = expectedTopView(kSize, kHalf, sphereLight(kCentre, kRadius, kRadiance));
+    expectEveryReceiverMatches(lambertianPlane, diffusePlane, expected, "sphere r 0.3 at height 1.1", 64);
+}
+
+// The 0-radius limit (§4): a sphere of radius 1e-3 with L r^2 kept is a point source of intensity
+// pi r^2 L with inverse-square falloff, so the same formula holds. Its cone is 1e-3 rad wide:
+// 1 - cos(alpha) ~ 5e-7 is 8 float steps below 1, so a solid angle computed as 2 pi (1 - cos)
+// from a float cosine is off by ~10%. The bounce estimator cannot find it (a hit per 10^6
+// samples) and is not asked to.
+TEST(Emitters, ATinySphereIsAPointSourceWithInverseSquareFalloff) {
+    constexpr float tiny = 1e-3f;
+    const glm::vec3 radiance = kRadiance * (kRadius / tiny) * (kRadius / tiny);
+    Scene lambertianPlane = plane(lambertian(kKd)), diffusePlane = plane(diffuse(kKd));
+    for (Scene* s : {&lambertianPlane, &diffusePlane}) addSphereEmitter(*s, kCentre, tiny, radiance);
+    const Image expected = expectedTopView(kSize, kHalf, sphereLight(kCentre, tiny, radiance));
+    expectEveryReceiverMatches(lambertianPlane, diffusePlane, expected, "sphere r 1e-3 at height 1.1", 16, false);
+}
+
+// ---- the sphere under transforms ----
+// Bug targeted: a cone or density computed from the object-space radius (the prototype's 1) or
+// from a signed scale (a mirroring transform's det < 0, a negative radius), a similarity taken for
+// an ellipsoid or the reverse.
+TEST(Emitters, AnInstancedOrMirroredUnitSphereLightsAsTheWorldSphere) {
+    const glm::mat4 place = glm::translate(glm::mat4(1.0f), kCentre);
+    struct Case {
+        const char* name;
+        glm::mat4 toWorld;
+    };
+    const Image expected = expectedTopView(kSize, kHalf, sphereLight(kCentre, kRadius, kRadiance));
+    for (const Case& k : {Case{"unit sphere scaled by 0.3", glm::scale(place, glm::vec3(kRadius))},
+                          Case{"unit sphere scaled by -0.3", glm::scale(place, glm::vec3(-kRadius))},
+                          Case{"unit sphere turned and scaled by (0.3, -0.3, 0.3)",
+                               glm::scale(glm::rotate(place, 0.7f, glm::vec3(1, 2, 3)), glm::vec3(kRadius, -kRadius, kRadius))}}) {
+        SCOPED_TRACE(k.name);
+        Scene lambertianPlane = plane(lambertian(kKd)), diffusePlane = plane(diffuse(kKd));
+        for (Scene* s : {&lambertianPlane, &diffusePlane}) addPlacedEmitter(*s, sphere({0, 0, 0}, 1.0f, -1), k.toWorld, kRadiance);
+        expectMatches(render(lambertianPlane, pathOptions(kSize, 64, 4, Estimator::MisPower)), expected,
+                      std::string(k.name) + ", Lambertian");
+        expectMatches(render(diffusePlane, pathOptions(kSize, 64, 1, Estimator::MisPower)), expected,
+                      std::string(k.name) + ", Diffuse at depth 1, mis");
+    }
+}
+
+// An ellipsoid: sampled by area with Nanson's density (§4), found by bounces as geometry; both
+// must give Lambert's integral over its silhouette (512 corners: the inscribed polygon misses
+// 2.5e-5 of it), and so each other. Its lowest point is above the camera (height >= 0.75).
+TEST(Emitters, AnEllipsoidLightsAsLambertsIntegralOverItsSilhouette) {
+    const glm::mat4 turned = glm::rotate(glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(0.1f, 1.2f, 0.1f)), 0.5f,
+                                                     glm::vec3(0, 1, 0)),
+                                         0.4f, glm::vec3(1, 0, 0));
+    for (const glm::vec3 scale : {glm::vec3(0.45f, 0.15f, 0.3f), glm::vec3(-0.45f, 0.15f, 0.3f)}) {
+        const glm::mat4 toWorld = glm::scale(turned, scale);
+        const std::string name = "ellipsoid scaled by (" + std::to_string(scale.x).substr(0, 5) + ", 0.15, 0.3)";
+        SCOPED_TRACE(name);
+        const glm::dmat4 m(toWorld);
+        const Image expected = expectedTopView(
+            kSize, kHalf,
+            reflected(kRadiance, [&](glm::dvec3 p) { return polygonCosineIntegral(p, {0, 1, 0}, ellipsoidSilhouette(p, m, 512)); }),
+            4);
+        Scene lambertianPlane = plane(lambertian(kKd)), diffusePlane = plane(diffuse(kKd));
+        for (Scene* s : {&lambertianPlane, &diffusePlane}) addPlacedEmitter(*s, sphere({0, 0, 0}, 1.0f, -1), toWorld, kRadiance);
+        expectEveryReceiverMatches(lambertianPlane, diffusePlane, expected, name, 64);
+        // Light samples against bounces directly, over 4 x 4 blocks: they must agree in
+        // expectation whatever the closed form says.
+        const Rendered nee = render(diffusePlane, pathOptions(kSize, 64, 1, Estimator::Nee));
+        const Rendered bounce = render(diffusePlane, pathOptions(kSize, 256, 1, Estimator::Bounce));
+        for (const auto& [device, a, b] : {std::tuple{"CPU", &nee.images.cpu, &bounce.images.cpu},
+                                           std::tuple{"GPU", &nee.images.gpu, &bounce.images.gpu}}) {
+            const NoiseComparison c = compareWithNoise({a, &nee.variance, nee.rpp}, {b, &bounce.variance, bounce.rpp}, 4,
+                                                       zLimitFor(36 * 3, 1e-3), kFloor);
+            recordNote(name + ", nee against bounce (" + device + ")", c.describe());
+            EXPECT_EQ(c.failing, 0) << device << ": " << c.describe();
+        }
+    }
+}
+
+// ---- a quad of two triangles ----
+// Bug targeted: one-sided emission (the world quad's triangles face up, away from the plane),
+// a triangle density from object-space areas (a non-uniform scale changes the area), a mirrored
+// mesh's flipped winding taken for a flipped side.
+TEST(Emitters, AQuadMeshLightsAsLambertsPolygonFormulaSays) {
+    const glm::mat4 lifted = glm::translate(glm::mat4(1.0f), glm::vec3(-0.1f, 1.1f, 0.15f));
+    struct Case {
+        const char* name;
+        glm::mat4 toWorld;
+    };
+    for (const Case& k : {Case{"quad 0.8 x 0.6 facing away from the plane", glm::scale(lifted, glm::vec3(0.8f, 1.0f, 0.6f))},
+                          Case{"quad tilted 30 degrees, scaled by (1.2, 2, 0.5)",
+                               glm::scale(glm::rotate(lifted, 0.52f, glm::vec3(1, 0, 0.3f)), glm::vec3(1.2f, 2.0f, 0.5f))},
+                          Case{"quad mirrored, scaled by (-0.9, 1, 0.7)", glm::scale(lifted, glm::vec3(-0.9f, 1.0f, 0.7f))}}) {
+        SCOPED_TRACE(k.name);
+        std::vector<glm::dvec3> corners;
+        for (const glm::vec3& c : unitQuad().positions) corners.push_back(glm::dvec3(k.toWorld * glm::vec4(c, 1.0f)));
+        for (const glm::dvec3& c : corners) ASSERT_GT(c.y, kCameraHeight) << "the camera would see the emitter";
+        const Image expected = expectedTopView(
+            kSize, kHalf, reflected(kRadiance, [&](glm::dvec3 p) { return polygonCosineIntegral(p, {0, 1, 0}, corners); }));
+        Scene lambertianPlane = plane(lambertian(kKd)), diffusePlane = plane(diffuse(kKd));
+        for (Scene* s : {&lambertianPlane, &diffusePlane}) addPlacedEmitter(*s, meshShape(addMesh(*s, unitQuad())), k.toWorld, kRadiance);
+        expectEveryReceiverMatches(lambertianPlane, diffusePlane, expected, k.name, 64);
+    }
+}
+
+// The closed forms' own check: Lambert's polygon integral over a sphere's silhouette (an
+// ellipsoid that is a sphere) is the sphere's pi (r/d)^2 cos, at points near and far.
+TEST(Emitters, TheSilhouetteIntegralOfASphereIsItsClosedForm) {
+    const glm::dmat4 m = glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(kCentre)), glm::dvec3(kRadius));
+    for (const glm::dvec3 p : {glm::dvec3(0, 0, 0), glm::dvec3(1.4, 0, -1.5), glm::dvec3(-1.5, 0, 1.5)}) {
+        const double exact = sphereCosineIntegral(p, {0, 1, 0}, glm::dvec3(kCentre), kRadius);
+        const double polygon = polygonCosineIntegral(p, {0, 1, 0}, ellipsoidSilhouette(p, m, 512));
+        EXPECT_NEAR(polygon / exact, 1.0, 5e-5) << p.x << ", " << p.z;
+    }
+}
+
+}  // namespace
+}  // namespace vkrt::stability
