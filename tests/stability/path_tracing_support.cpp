@@ -138,7 +138,7 @@ std::string NoiseComparison::describe() const {
 }
 
 NoiseComparison compareWithNoise(const Estimate& a, const Estimate& b, int block, double zLimit, double floor,
-                                 const std::function<bool(int x, int y)>& use) {
+                                 const std::function<bool(int x, int y)>& use, double absoluteFloor) {
     const Image& ma = *a.mean;
     const Image& mb = *b.mean;
     auto varianceOfMean = [](const Estimate& e, int x, int y, int c) {
@@ -164,7 +164,7 @@ NoiseComparison compareWithNoise(const Estimate& a, const Estimate& b, int block
                 sumB += sb;
                 sumVar += var;
                 const double diff = (sa - sb) / count, meanB = sb / count;
-                const double variance = var / (double(count) * count) + (floor * meanB) * (floor * meanB);
+                const double variance = var / (double(count) * count) + (floor * meanB) * (floor * meanB) + absoluteFloor * absoluteFloor;
                 const double z = variance > 0.0 ? std::fabs(diff) / std::sqrt(variance) : (diff == 0.0 ? 0.0 : INFINITY);
                 ++r.values;
                 r.worstZ = std::max(r.worstZ, z);

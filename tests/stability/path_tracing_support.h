@@ -86,9 +86,11 @@ struct NoiseComparison {
     std::string first;          // the first failing value: block, channel, both means, z
     std::string describe() const;
 };
-// `use` (optional) picks the pixels compared; a block with none is skipped.
+// `use` (optional) picks the pixels compared; a block with none is skipped. `absoluteFloor` (added
+// to the standard deviation like `floor * mean_b`) keeps differences far below an 8-bit step from
+// failing where an estimator's few hits leave it no variance to judge by.
 NoiseComparison compareWithNoise(const Estimate& a, const Estimate& b, int block, double zLimit, double floor,
-                                 const std::function<bool(int x, int y)>& use = {});
+                                 const std::function<bool(int x, int y)>& use = {}, double absoluteFloor = 0.0);
 
 // The |z| that n independent two-sided tests exceed with a family-wise probability alpha (Sidak).
 double zLimitFor(int tests, double alpha);
