@@ -61,7 +61,9 @@ Conversion convertScene(const std::string& input, const std::string& output, Dia
     const Scene scene = [&] {
         // Nothing is written before this load ends, so Ctrl-C inside it may end the process.
         const ExitAtOnceOnInterrupt scope;
-        return loadScene(input, LoadOptions{diagnostics.strict()}, diagnostics);
+        LoadOptions options{diagnostics.strict()};
+        options.environmentTexels = false;  // convert writes the map's names, never its texels
+        return loadScene(input, options, diagnostics);
     }();
     checkCancel();
 
@@ -82,7 +84,9 @@ Conversion convertScene(const std::string& input, const std::string& output, Dia
         Diagnostics reloadWarnings;  // the input's warnings were reported; the result may repeat some
         Scene reloaded;
         try {
-            reloaded = loadScene(temporary, LoadOptions{}, reloadWarnings);
+            LoadOptions reload;
+            reload.environmentTexels = false;
+            reloaded = loadScene(temporary, reload, reloadWarnings);
         } catch (const SceneError& e) {
             throw std::runtime_error(output + ": not written: the converted scene does not load (please report this): " +
                                      e.what());

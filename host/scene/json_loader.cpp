@@ -47,8 +47,8 @@ enum class ShapeRole { Loose, Prototype, Emitter };
 //   2. cameras, lights (shape lights included), shapes and instances, background.
 class JsonSceneBuilder {
 public:
-    JsonSceneBuilder(const JsonContext& context, Scene& scene, NegZRule negZ)
-        : context_(context), scene_(scene), meshes_(scene.meshes), negZ_(negZ) {}
+    JsonSceneBuilder(const JsonContext& context, Scene& scene, NegZRule negZ, bool environmentTexels)
+        : context_(context), scene_(scene), meshes_(scene.meshes), negZ_(negZ), environmentTexels_(environmentTexels) {}
 
     void build(const JsonNode& root) {
         requireObject(context_, root);
@@ -638,9 +638,11 @@ private:
         const JsonNode* named = &prefix;
         if (!texts[0].empty()) {
             if (!texts[1].empty()) context_.warn(cross, kIgnoredVertCross, texts[1]);
+            if (!environmentTexels_) return;
             environment = loadCubeFaceEnvironment(scene_.envMapPrefix, negZ_, problem);
         } else if (!texts[1].empty()) {
             named = &cross;
+            if (!environmentTexels_) return;
             environment = loadVerticalCrossEnvironment(scene_.envMapVertCross, problem);
         } else {
             return;
@@ -659,6 +661,7 @@ private:
     std::map<std::string, int> prototypeByName_;    // -1: a skipped (unknown-type) prototype
     FallbackNotes fallbacks_;
     NegZRule negZ_;
+    bool environmentTexels_;  // LoadOptions::environmentTexels
 };
 
 }  // namespace
@@ -668,7 +671,7 @@ Scene loadJsonScene(const std::string& path, const std::string& text, const Load
     const JsonContext context{source, diagnostics, options.strict, std::filesystem::path(path).parent_path(), options.localOrigin};
     Scene scene;
     scene.path = path;
-    JsonSceneBuilder(context, scene, options.environmentNegZ).build(JsonNode{&source.root(), ""});
+    JsonSceneBuilder(context, scene, options.environmentNegZ, options.environmentTexels).build(JsonNode{&source.root(), ""});
     return scene;
 }
 

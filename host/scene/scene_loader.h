@@ -22,6 +22,10 @@ struct LoadOptions {
     // How an environment map's -Z cube face file is read: by default whichever way joins its
     // neighbours with the smaller seam error (environment_loading.h, docs/RENDERING.md §10.2).
     NegZRule environmentNegZ = NegZRule::Measure;
+    // false: an environment map's files are named (Scene::envMapPrefix / envMapVertCross resolved)
+    // but not read, and Scene::environment stays empty: what `vkrt convert` and the writers' tests
+    // need (they write the names), without decoding six 1024^2 faces per load.
+    bool environmentTexels = true;
 };
 
 Scene loadScene(const std::string& path, const LoadOptions& options, Diagnostics& diagnostics);

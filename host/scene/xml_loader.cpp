@@ -37,8 +37,8 @@ bool isElement(pugi::xml_node node, std::string_view name) {
 //      origin, local_origin.h), lights, then shapes and instances, then scene parameters.
 class SceneBuilder {
 public:
-    SceneBuilder(const ParseContext& context, Scene& scene, NegZRule negZ)
-        : context_(context), scene_(scene), meshes_(scene.meshes), negZ_(negZ) {}
+    SceneBuilder(const ParseContext& context, Scene& scene, NegZRule negZ, bool environmentTexels)
+        : context_(context), scene_(scene), meshes_(scene.meshes), negZ_(negZ), environmentTexels_(environmentTexels) {}
 
     void build(pugi::xml_node root) {
         checkAttributes(context_, root, {"bgColor", "envmapPrefix", "envMapPrefix"});
@@ -327,9 +327,11 @@ private:
         pugi::xml_node named = prefixNode;
         if (!prefix.empty()) {
             if (!cross.empty()) context_.warn(crossNode, kIgnoredVertCross, cross);
+            if (!environmentTexels_) return;
             environment = loadCubeFaceEnvironment(scene_.envMapPrefix, negZ_, problem);
         } else if (!cross.empty()) {
             named = crossNode;
+            if (!environmentTexels_) return;
             environment = loadVerticalCrossEnvironment(scene_.envMapVertCross, problem);
         } else {
             return;
@@ -356,6 +358,7 @@ private:
     std::map<std::string, int> prototypeByName_; // -1: a skipped (unknown-type) prototype
     FallbackNotes fallbacks_;
     NegZRule negZ_;
+    bool environmentTexels_;  // LoadOptions::environmentTexels
 };
 
 }  // namespace
@@ -369,7 +372,7 @@ Scene loadXmlScene(const std::string& path, const std::string& text, const LoadO
 
     Scene scene;
     scene.path = path;
-    SceneBuilder(context, scene, options.environmentNegZ).build(root);
+    SceneBuilder(context, scene, options.environmentNegZ, options.environmentTexels).build(root);
     return scene;
 }
 

@@ -132,6 +132,22 @@ TEST_F(EnvironmentLoading, AMissingFaceIsAnErrorAtTheElementNamingTheFile) {
     EXPECT_EQ(errorOf(xmlScene).element, "envMapPrefix");
 }
 
+// LoadOptions::environmentTexels = false (vkrt convert): the names are resolved and kept, nothing
+// is read, so a scene converts without decoding its faces (and converts even where they are gone).
+TEST_F(EnvironmentLoading, WithoutTexelsTheNamesAreKeptAndNoFileIsRead) {
+    writeCubeFaces((dir / "sky/f_").string(), 4, kGrey);
+    std::filesystem::remove(dir / "sky/f_negY.png");
+    LoadOptions options;
+    options.environmentTexels = false;
+    for (const std::string& scene : {json("\"envMapPrefix\": \"sky/f_\""), xml("<envMapPrefix>sky/f_</envMapPrefix>")}) {
+        Diagnostics diagnostics;
+        const Scene loaded = loadScene(scene, options, diagnostics);
+        EXPECT_EQ(loaded.envMapPrefix, (dir / "sky/f_").string());
+        EXPECT_EQ(loaded.environment.faceSize, 0);
+        EXPECT_TRUE(diagnostics.warnings().empty());
+    }
+}
+
 TEST_F(EnvironmentLoading, FacesOfTheWrongSizeAreErrorsNamingTheFace) {
     writeCubeFaces((dir / "a_").string(), 4, kGrey);
     writePng((dir / "a_posZ.png").string(), 8, 8, [](int, int) { return glm::u8vec3(9); });  // larger than the others
