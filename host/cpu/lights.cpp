@@ -14,7 +14,6 @@ std::vector<LightSource> makeLightSources(const Scene& scene) {
     std::vector<LightSource> out;
     unsigned areaCount = 0;
     for (const Light& l : scene.lights) {
-        if (l.emitterStandIn >= 0) continue;  // a shape light: the emitter itself lights (emitter_table.h)
         LightSource s;
         s.type = l.type;
         s.position = l.position;

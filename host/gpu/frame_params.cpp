@@ -64,10 +64,8 @@ gpu::FrameParams makeFrameParams(const Scene& scene, const SceneAccel& accel, co
     f.image = glm::uvec4(static_cast<std::uint32_t>(options.width), static_cast<std::uint32_t>(options.height),
                          camera.type == CameraType::Orthographic ? gpu::CAMERA_ORTHOGRAPHIC : gpu::CAMERA_PERSPECTIVE, 0u);
     f.sampling = glm::uvec4(static_cast<std::uint32_t>(options.sampler), rpp, lightSamples, glossSamples);
-    // Shape lights are in Scene::lights only to keep the file's order (their emitters light).
-    const auto lightCount = static_cast<std::uint32_t>(
-        std::count_if(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.emitterStandIn < 0; }));
-    f.scene = glm::uvec4(options.seed, static_cast<std::uint32_t>(options.maxDepth), lightCount, accel.bvh.topRoot);
+    f.scene = glm::uvec4(options.seed, static_cast<std::uint32_t>(options.maxDepth), static_cast<std::uint32_t>(scene.lights.size()),
+                         accel.bvh.topRoot);
     f.pixelGrid = sampling::makeSampleGrid(rpp);
     f.lightGrid = sampling::makeSampleGrid(rpp * lightSamples);
     f.glossGrid = sampling::makeSampleGrid(rpp * glossSamples);

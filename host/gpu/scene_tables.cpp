@@ -1,9 +1,5 @@
 #include "scene_tables.h"
 
-#include <memory>
-
-#include "scene_lighting.h"
-
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -94,15 +90,10 @@ SceneTables buildSceneTables(const Scene& scene, const SceneAccel& accel) {
         m.ids = glm::uvec4(gpu::SHADER_EMITTER, gpu::TEXTURE_NONE, gpu::TEXTURE_NONE, static_cast<std::uint32_t>(e));
         t.materials.push_back(m);
     }
-    const std::shared_ptr<const SceneLighting> lighting =
-        accel.lighting ? accel.lighting : std::make_shared<const SceneLighting>(buildSceneLighting(scene));
-    t.emitters = lighting->emitters;
-    t.environmentTexels = lighting->environment.texels;
-    t.environmentCdf = lighting->environmentLights.table;
+    t.lighting = accel.lighting ? accel.lighting : std::make_shared<const SceneLighting>(buildSceneLighting(scene));
 
     std::uint32_t areaLights = 0;
-    for (const Light& l : scene.lights)
-        if (l.emitterStandIn < 0) t.lights.push_back(toGpuLight(l, l.type == LightType::Area ? areaLights++ : 0u));
+    for (const Light& l : scene.lights) t.lights.push_back(toGpuLight(l, l.type == LightType::Area ? areaLights++ : 0u));
 
     const std::vector<std::uint32_t> attribBase = appendVertexAttribs(scene, t.vertexAttribs);
 

@@ -6,7 +6,9 @@
 #include <vector>
 
 #include "device_host.h"
-#include "emitter_table.h"
+#include <memory>
+
+#include "scene_lighting.h"
 #include "scene.h"
 #include "scene_accel.h"
 
@@ -16,9 +18,9 @@ struct SceneTables {
     std::vector<gpu::Material> materials;        // one per Scene::shaders, same order, then one per
                                                  // Scene::emitters (emitterMaterial, scene_accel.h)
     std::vector<gpu::Light> lights;              // one per Scene::lights but shape lights, same order
-    EmitterTable emitters;                       // the shape emitters' sampling records
-    std::vector<std::uint32_t> environmentTexels;// the environment map's bordered faces (RGBA8), or empty
-    std::vector<float> environmentCdf;           // its luminance distribution, or empty
+    // The emitter records and the environment's faces and distribution, as they are uploaded:
+    // the prepared scene's (SceneAccel::lighting), shared, not copied (the reef faces are 25 MB).
+    std::shared_ptr<const SceneLighting> lighting = std::make_shared<const SceneLighting>();
     std::vector<gpu::PrimInfo> primInfos;        // parallel to SceneAccel::bvh.prims
     std::vector<gpu::VertexAttrib> vertexAttribs;// every mesh's vertices, mesh after mesh
     std::vector<gpu::TextureInfo> textures;      // one per Scene::textures

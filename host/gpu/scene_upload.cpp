@@ -56,11 +56,12 @@ std::vector<BufferPlan> planSceneBuffers(const SceneTables& tables, const bvh::S
     plan[gpu::BINDING_ACCUM] = {"accumulation (one vec4 per pixel)", BufferKind::StorageTexel,
                                 texels(std::max<std::uint64_t>(1, pixels) * sizeof(glm::vec4))};
     plan[gpu::BINDING_STATUS] = {"render status", BufferKind::Storage, sizeof(gpu::RenderStatus)};
-    plan[gpu::BINDING_EMITTERS] = {"emitters", BufferKind::StorageTexel, texels(bytesOf(tables.emitters.records))};
-    plan[gpu::BINDING_EMITTER_TRIANGLES] = {"emitter triangles", BufferKind::StorageTexel, texels(bytesOf(tables.emitters.triangles))};
-    plan[gpu::BINDING_ENVIRONMENT] = {"environment map", BufferKind::StorageTexel, texels(bytesOf(tables.environmentTexels)), 4};
+    const SceneLighting& lighting = *tables.lighting;
+    plan[gpu::BINDING_EMITTERS] = {"emitters", BufferKind::StorageTexel, texels(bytesOf(lighting.emitters.records))};
+    plan[gpu::BINDING_EMITTER_TRIANGLES] = {"emitter triangles", BufferKind::StorageTexel, texels(bytesOf(lighting.emitters.triangles))};
+    plan[gpu::BINDING_ENVIRONMENT] = {"environment map", BufferKind::StorageTexel, texels(bytesOf(lighting.environment.texels)), 4};
     plan[gpu::BINDING_ENVIRONMENT_CDF] = {"environment distribution", BufferKind::StorageTexel,
-                                          texels(bytesOf(tables.environmentCdf)), 4};
+                                          texels(bytesOf(lighting.environmentLights.table)), 4};
     return plan;
 }
 
@@ -106,10 +107,10 @@ SceneUpload::SceneUpload(const Context& context, Transfers& transfers, const Ker
     upload(gpu::BINDING_TEXTURES, tables.textures);
     upload(gpu::BINDING_TEXELS, tables.texels);
     upload(gpu::BINDING_FRAME, std::vector<gpu::FrameParams>{frame});
-    upload(gpu::BINDING_EMITTERS, tables.emitters.records);
-    upload(gpu::BINDING_EMITTER_TRIANGLES, tables.emitters.triangles);
-    upload(gpu::BINDING_ENVIRONMENT, tables.environmentTexels);
-    upload(gpu::BINDING_ENVIRONMENT_CDF, tables.environmentCdf);
+    upload(gpu::BINDING_EMITTERS, tables.lighting->emitters.records);
+    upload(gpu::BINDING_EMITTER_TRIANGLES, tables.lighting->emitters.triangles);
+    upload(gpu::BINDING_ENVIRONMENT, tables.lighting->environment.texels);
+    upload(gpu::BINDING_ENVIRONMENT_CDF, tables.lighting->environmentLights.table);
     transfers.zero(buffers_[gpu::BINDING_ACCUM]);
     transfers.zero(buffers_[gpu::BINDING_STATUS]);
 

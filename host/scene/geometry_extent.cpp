@@ -143,7 +143,6 @@ void warnGeometryBeyondFloat(const Scene& scene, bool strict, Diagnostics& diagn
         if (const auto p = r.shapeProblem(shape, emitter.objectToWorld)) r.warn(emitter.where, "light '" + emitter.name + "'", *p);
     }
     for (const Light& light : scene.lights) {
-        if (light.emitterStandIn >= 0) continue;  // its emitter was checked
         const double size = light.type == LightType::Area ? std::max(light.width, light.length) : 0.0;
         const double reach = maxAbs(dvec3(light.position) - r.eye) + size;
         if (reach > kQuadricReach)

@@ -515,7 +515,7 @@ private:
     }
 
     // {"_type": "shape", "intensity": c, "shape": {any shape, an instance with its xform included}}
-    // (§3.2); rendered for now as a stand-in point light (§6).
+    // (§3.2); an emitter, rendered as emitting geometry (docs/RENDERING.md §4).
     void placeShapeLight(const JsonNode& node) {
         checkKeys(context_, node, {"intensity", "shape"}, {"name", "type"});
         Emitter emitter;
@@ -549,8 +549,8 @@ private:
             emitter.steps = std::move(placement.steps);
             emitter.objectToWorld = placement.objectToWorld;
         }
+        emitter.lightsBefore = static_cast<int>(scene_.lights.size());
         scene_.emitters.push_back(emitter);
-        scene_.lights.push_back(emitterStandInLight(scene_, static_cast<int>(scene_.emitters.size()) - 1));
     }
 
     // The prototype an instance's `_id` names; nullopt (after a warning) for a skipped one.

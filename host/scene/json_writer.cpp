@@ -34,7 +34,8 @@ public:
         Json s = Json::object();
         s["camera"] = list(scene_.cameras, [&](const Camera& c) { return camera(c); });
         Json lights = Json::array();
-        for (const Light& light : scene_.lights) lights.push_back(this->light(light));
+        writing::forEachLightInFileOrder(
+            scene_, [&](const Light& l) { lights.push_back(light(l)); }, [&](const Emitter& e) { lights.push_back(emitter(e)); });
         s["light"] = lights;
         if (!scene_.textures.empty())
             s["texture"] = list(scene_.textures, [&](const Texture& t) {
@@ -79,7 +80,6 @@ private:
     }
 
     Json light(const Light& l) const {
-        if (l.emitterStandIn >= 0) return emitter(scene_.emitters.at(static_cast<std::size_t>(l.emitterStandIn)));
         Json out = Json::object();
         out["_type"] = l.type == LightType::Area ? "area" : "point";
         out["position"] = vec3(l.position);
@@ -92,8 +92,6 @@ private:
         return out;
     }
 
-    // A shape light stands where its stand-in point light is in Scene::lights, so the loader puts
-    // that light back at the same index.
     Json emitter(const Emitter& e) const {
         Json shapeObject;
         if (e.prototype >= 0) {

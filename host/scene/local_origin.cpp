@@ -6,7 +6,6 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render_fallbacks.h"
 #include "scene_rules.h"
 
 namespace vkrt::rules {
@@ -52,10 +51,6 @@ void rebaseWorldMeshes(Scene& scene) {
     for (Emitter& emitter : scene.emitters)
         if (emitter.prototype < 0 && emitter.steps.empty() && emitter.shape.type == ShapeType::Mesh)
             emitter.shape.mesh = worldCopy(emitter.shape.mesh);
-    // A stand-in light sits at its emitter's centre, which the loader took from the mesh before it
-    // moved.
-    for (Light& light : scene.lights)
-        if (light.emitterStandIn >= 0) light.position = emitterStandInLight(scene, light.emitterStandIn).position;
 }
 
 }  // namespace vkrt::rules

@@ -1,7 +1,7 @@
 // JSON-era features the renderers do not show as the file means them, what they show instead,
 // and the warning that says so: today only the `Emitter` shader (J26; no course file uses one),
 // rendered as black Lambertian. Each loader warns once per scene, at the first thing that needs
-// a fallback. Also here: the marker light that keeps a shape light's place among the lights.
+// a fallback.
 #pragma once
 
 #include <array>
@@ -25,10 +25,5 @@ private:
     std::array<bool, 1> seen_{};
 };
 
-// The marker for scene.emitters[index] in Scene::lights (Light::emitterStandIn): a point light at
-// the centre of the emitter's world-space bounds with intensity = its radiance, so the writers put
-// the shape light back in its place among the lights. Renderers skip it: the emitter itself is
-// geometry that lights the scene (docs/RENDERING.md §4, host/lighting/emitter_table.h).
-Light emitterStandInLight(const Scene& scene, int index);
 
 }  // namespace vkrt

@@ -46,10 +46,6 @@ struct Light {
     glm::vec3 normal{0.0f, -1.0f, 0.0f};  // area only; unit length
     float width = 0.0f;                   // area only; along the tangent (docs/RENDERING.md §4)
     float length = 0.0f;                  // area only; along the bitangent
-    // >= 0: not a light of its own but the place of Scene::emitters[emitterStandIn] in the file's
-    // order of lights, for the writers; renderers skip it (render_fallbacks.h). -1 for every light
-    // the file gives.
-    int emitterStandIn = -1;
     SourceLocation where;
 };
 
@@ -163,6 +159,9 @@ struct Emitter {
     int prototype = -1;               // index into Scene::prototypes, or -1
     std::vector<TransformStep> steps; // as Instance::steps
     glm::mat4 objectToWorld{1.0f};    // rules::composeTransform(steps)
+    // Where the file lists it among its lights: after this many of Scene::lights (the writers put
+    // it back there: writing::forEachLightInFileOrder). Non-decreasing over Scene::emitters.
+    int lightsBefore = 0;
     SourceLocation where;
 };
 

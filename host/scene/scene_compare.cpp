@@ -146,7 +146,6 @@ SceneDifferences compareScenes(const Scene& a, const Scene& b, std::size_t limit
         d.check(f + ".normal", x.normal, y.normal);
         d.check(f + ".width", x.width, y.width);
         d.check(f + ".length", x.length, y.length);
-        d.check(f + ".emitterStandIn", x.emitterStandIn, y.emitterStandIn);
     });
     d.each("shaders", a.shaders, b.shaders, [&](const std::string& f, const Shader& x, const Shader& y) {
         d.check(f + ".name", x.name, y.name);
@@ -199,6 +198,7 @@ SceneDifferences compareScenes(const Scene& a, const Scene& b, std::size_t limit
         d.check(f + ".prototype", x.prototype, y.prototype);
         compareSteps(d, f + ".steps", x.steps, y.steps);
         d.check(f + ".objectToWorld", x.objectToWorld, y.objectToWorld);
+        d.check(f + ".lightsBefore", x.lightsBefore, y.lightsBefore);
     });
     return d.result;
 }

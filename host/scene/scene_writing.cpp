@@ -166,4 +166,14 @@ std::vector<ShapeSlot> shapeOrder(const Scene& scene) {
     return order;
 }
 
+void forEachLightInFileOrder(const Scene& scene, const std::function<void(const Light&)>& light,
+                             const std::function<void(const Emitter&)>& emitter) {
+    std::size_t e = 0;
+    for (std::size_t l = 0; l <= scene.lights.size(); ++l) {
+        for (; e < scene.emitters.size() && static_cast<std::size_t>(scene.emitters[e].lightsBefore) <= l; ++e)
+            emitter(scene.emitters[e]);
+        if (l < scene.lights.size()) light(scene.lights[l]);
+    }
+}
+
 }  // namespace vkrt::writing

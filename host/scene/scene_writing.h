@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -58,5 +59,10 @@ struct ShapeSlot {
     std::size_t index = 0;
 };
 std::vector<ShapeSlot> shapeOrder(const Scene& scene);
+
+// Scene::lights and the shape lights (Scene::emitters) in the order the file listed them
+// (Emitter::lightsBefore), so a written scene loads back with the same indices.
+void forEachLightInFileOrder(const Scene& scene, const std::function<void(const Light&)>& light,
+                             const std::function<void(const Emitter&)>& emitter);
 
 }  // namespace vkrt::writing

@@ -283,8 +283,8 @@ private:
             emitter.steps = std::move(placement.steps);
             emitter.objectToWorld = placement.objectToWorld;
         }
+        emitter.lightsBefore = static_cast<int>(scene_.lights.size());
         scene_.emitters.push_back(emitter);
-        scene_.lights.push_back(emitterStandInLight(scene_, static_cast<int>(scene_.emitters.size()) - 1));
     }
 
     // Background and environment map: <sceneParameters> children win over the root attributes

@@ -20,7 +20,9 @@ public:
     void write(pugi::xml_node root) const {
         writeParameters(root.append_child("sceneParameters"));
         for (const Camera& c : scene_.cameras) writeCamera(root.append_child("camera"), c);
-        for (const Light& l : scene_.lights) writeLight(root.append_child("light"), l);
+        writing::forEachLightInFileOrder(
+            scene_, [&](const Light& l) { writeLight(root.append_child("light"), l); },
+            [&](const Emitter& e) { writeEmitter(root.append_child("light"), e); });
         for (const Texture& t : scene_.textures) {
             pugi::xml_node node = root.append_child("texture");
             node.append_attribute("name") = t.name.c_str();
@@ -65,9 +67,7 @@ private:
         if (c.aperture != 0.0f) scalar(node, "aperture", c.aperture);
     }
 
-    // A shape light stands where its stand-in point light is in Scene::lights.
     void writeLight(pugi::xml_node node, const Light& l) const {
-        if (l.emitterStandIn >= 0) return writeEmitter(node, scene_.emitters.at(static_cast<std::size_t>(l.emitterStandIn)));
         node.append_attribute("type") = l.type == LightType::Area ? "area" : "point";
         vec3(node, "position", l.position);
         vec3(node, "intensity", l.intensity);

@@ -214,7 +214,7 @@ TEST_F(LightParsing, UnknownLightTypeWarnsAndIsSkipped) {
 
 // vkrt's addition (docs/XML_FORMAT.md §3.4), the JSON shape light in XML so that vkrt convert
 // keeps it: an emitter from any shape, an instance with its transform included; the shape's
-// shader is optional. A marker light keeps its place among the lights (Light::emitterStandIn).
+// shader is optional. Emitter::lightsBefore keeps its place among the lights.
 TEST_F(LightParsing, ShapeLightsAreEmittersAsInJson) {
     const std::string xml = sceneWith(
         "<shader name=\"grey\" type=\"Lambertian\"><diffuse>0.5 0.5 0.5</diffuse></shader>\n"
@@ -232,9 +232,9 @@ TEST_F(LightParsing, ShapeLightsAreEmittersAsInJson) {
     EXPECT_EQ(scene.emitters[1].name, "lamp");
     ASSERT_EQ(scene.emitters[1].shape.shader, 1);  // the inline (nameless) definition, registered in pass 1
     EXPECT_EQ(scene.shaders[1].diffuse, glm::vec3(1.0f));
-    ASSERT_EQ(scene.lights.size(), 2u);
-    EXPECT_EQ(scene.lights[1].position, glm::vec3(11, 1, 1));  // the box's centre, moved
-    EXPECT_EQ(scene.lights[1].emitterStandIn, 1);
+    EXPECT_TRUE(scene.lights.empty());  // a shape light is an emitter only
+    EXPECT_EQ(scene.emitters[0].lightsBefore, 0);
+    EXPECT_EQ(scene.emitters[1].lightsBefore, 0);
     EXPECT_TRUE(diagnostics.warnings().empty());  // rendered as what it is: no fallback warning
 
     const std::string noShape = sceneWith("<light type=\"shape\"><intensity>1 1 1</intensity></light>");

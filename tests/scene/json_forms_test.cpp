@@ -340,12 +340,13 @@ TEST_F(JsonForms, DiffuseAndEmitterShadersKeepTheirMeaningAndTheEmitterShaderWar
     expectJsonIssueAt(diagnostics.warnings()[0], json, "\"Emitter\"", "scene.shader[2]._type", "lamp");
 }
 
-// A shape light is an emitter (rendered as geometry, docs/RENDERING.md §4); its place among the
-// lights is kept by a marker light (Light::emitterStandIn) for the writers, at the shape's centre.
-TEST_F(JsonForms, ShapeLightsBecomeEmittersWithAMarkerInTheLightOrder) {
+// A shape light is an emitter (rendered as geometry, docs/RENDERING.md §4), not a light; its place
+// among the lights is kept for the writers (Emitter::lightsBefore).
+TEST_F(JsonForms, ShapeLightsBecomeEmittersThatKeepTheirPlaceAmongTheLights) {
     const std::string json = jsonWith(kGrey + ",\n" +
         R"("instance": [{"_name": "box", "_type": "box", "minPt": "0 0 0", "maxPt": "2 2 2", "shader": {"_ref": "nowhere"}}],)" "\n"
         R"("light": [{"_type": "shape", "intensity": "1 0.5 0", "shape": {"_type": "sphere", "center": "1 2 3", "radius": 0.5}},)" "\n"
+        R"({"_type": "point", "position": "0 9 0", "intensity": "1 1 1"},)" "\n"
         R"({"_type": "shape", "intensity": [0, 0, 2], "shape": {"_type": "instance", "_id": "box", "xform": [{"type": "translate", "amount": "10 0 0"}]}}])");
     Diagnostics diagnostics;
     const Scene scene = loadJson(json, diagnostics);
@@ -353,11 +354,12 @@ TEST_F(JsonForms, ShapeLightsBecomeEmittersWithAMarkerInTheLightOrder) {
     EXPECT_EQ(scene.emitters[0].shape.center, glm::vec3(1, 2, 3));
     EXPECT_EQ(scene.emitters[0].shape.shader, -1);  // optional: the radiance replaces it
     EXPECT_EQ(scene.emitters[1].prototype, 0);
-    ASSERT_EQ(scene.lights.size(), 2u);
-    EXPECT_EQ(scene.lights[0].position, glm::vec3(1, 2, 3));
-    EXPECT_EQ(scene.lights[0].intensity, glm::vec3(1, 0.5f, 0));
-    EXPECT_EQ(scene.lights[1].position, glm::vec3(11, 1, 1));  // the box's centre, moved
-    EXPECT_EQ(scene.lights[1].emitterStandIn, 1);
+    EXPECT_EQ(scene.emitters[0].radiance, glm::vec3(1, 0.5f, 0));
+    EXPECT_EQ(glm::vec3(scene.emitters[1].objectToWorld[3]), glm::vec3(10, 0, 0));
+    ASSERT_EQ(scene.lights.size(), 1u);  // the point light only
+    EXPECT_EQ(scene.lights[0].position, glm::vec3(0, 9, 0));
+    EXPECT_EQ(scene.emitters[0].lightsBefore, 0);  // listed before the point light
+    EXPECT_EQ(scene.emitters[1].lightsBefore, 1);  // after it
     EXPECT_TRUE(scene.shapes.empty() && scene.instances.empty());  // an emitter is neither
     ASSERT_EQ(diagnostics.warnings().size(), 1u);  // the prototype's dangling shader only
 }

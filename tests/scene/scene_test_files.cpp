@@ -61,13 +61,12 @@ void expectConsistent(const Scene& scene) {
         EXPECT_LT(emitter.prototype, static_cast<int>(scene.prototypes.size()));
         if (emitter.prototype < 0) checkShape(emitter.shape, false);
     }
-    int standIns = 0;
-    for (const Light& light : scene.lights) {
-        EXPECT_GE(light.emitterStandIn, -1);
-        EXPECT_LT(light.emitterStandIn, static_cast<int>(scene.emitters.size()));
-        standIns += light.emitterStandIn >= 0;
+    int lightsBefore = 0;  // the emitters' places among the lights: in range, in file order
+    for (const Emitter& emitter : scene.emitters) {
+        EXPECT_GE(emitter.lightsBefore, lightsBefore);
+        EXPECT_LE(emitter.lightsBefore, static_cast<int>(scene.lights.size()));
+        lightsBefore = emitter.lightsBefore;
     }
-    EXPECT_EQ(standIns, static_cast<int>(scene.emitters.size()));  // one stand-in per emitter
     for (const Shader& shader : scene.shaders) {
         EXPECT_GE(shader.diffuseTexture, kNoTexture);
         EXPECT_LT(shader.diffuseTexture, static_cast<int>(scene.textures.size()));

@@ -19,9 +19,9 @@ Shader diffuse(glm::vec3 kd) {
 
 namespace {
 
-void addEmitter(Scene& scene, const Emitter& emitter) {
+void addEmitter(Scene& scene, Emitter emitter) {
+    emitter.lightsBefore = static_cast<int>(scene.lights.size());  // listed after the lights so far
     scene.emitters.push_back(emitter);
-    scene.lights.push_back(emitterStandInLight(scene, static_cast<int>(scene.emitters.size()) - 1));
 }
 
 }  // namespace

@@ -19,10 +19,9 @@ namespace vkrt::stability {
 // The course's Diffuse: a Lambertian that also gathers the light other surfaces send it.
 Shader diffuse(glm::vec3 kd);
 
-// Shape emitters as the loaders add them: the emitter, then the stand-in marker light each loader
-// pushes beside it (Light::emitterStandIn; the renderers skip it), so a scene built here is the
-// scene a file would give. A world sphere; a world shape; a shape placed by `toWorld` (a prototype of its own,
-// as a JSON instance emitter is); a mesh placed by `toWorld`.
+// Shape emitters as the loaders add them (after the lights added so far), so a scene built here is
+// the scene a file would give. A world sphere; a world shape; a shape placed by `toWorld` (a
+// prototype of its own, as a JSON instance emitter is); a mesh placed by `toWorld`.
 void addSphereEmitter(Scene& scene, glm::vec3 centre, float radius, glm::vec3 radiance);
 void addWorldEmitter(Scene& scene, const Shape& shape, glm::vec3 radiance);
 void addPlacedEmitter(Scene& scene, Shape prototype, const glm::mat4& toWorld, glm::vec3 radiance);

@@ -12,7 +12,6 @@
 //   - the four estimators agree in expectation under near emitters (where the MIS weights are far
 //     from 0 and 1) and small ones, with 1 and 3 light samples, and MIS beats the plain bounce
 //     against a reference under small emitters; shaders other than Diffuse ignore the estimator;
-//   - the stand-in marker lights the loaders push beside emitters light nothing;
 //   - the two devices agree by the project's rule on every image.
 // Emitters' closed forms (spheres, ellipsoids, meshes under transforms) are in emitter_test.cpp.
 #include <algorithm>
@@ -518,20 +517,6 @@ TEST(PathTracing, OnlyDiffuseSurfacesDependOnTheEstimator) {
         EXPECT_EQ(differingPixels(other.gpu, first.gpu), 0) << "GPU, " << estimatorName(e);
     }
     expectDevicesAgree(first, "non-Diffuse receivers under an emitter");
-}
-
-// The loaders push a stand-in point light beside every emitter (render_fallbacks.h); the
-// renderers must skip it: the scene without the markers renders bit for bit alike.
-TEST(PathTracing, TheEmittersStandInMarkersLightNothing) {
-    Scene withMarkers = estimatorScene(false);
-    Scene without = withMarkers;
-    std::erase_if(without.lights, [](const Light& l) { return l.emitterStandIn >= 0; });
-    ASSERT_EQ(withMarkers.lights.size(), 2u);
-    ASSERT_TRUE(without.lights.empty());
-    const RenderOptions options = pathOptions(24, 8, 2, Estimator::MisPower);
-    const BothImages a = renderBoth(withMarkers, options), b = renderBoth(without, options);
-    EXPECT_EQ(differingPixels(a.cpu, b.cpu), 0);
-    EXPECT_EQ(differingPixels(a.gpu, b.gpu), 0);
 }
 
 }  // namespace
