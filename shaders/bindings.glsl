@@ -29,6 +29,7 @@ layout(constant_id = SPEC_HAS_DIFFUSE) const bool HAS_DIFFUSE = true;  // the pa
 layout(constant_id = SPEC_HAS_EMITTERS) const bool HAS_EMITTERS = true;  // shape emitters: emitters.glsl
 layout(constant_id = SPEC_HAS_ENVIRONMENT) const bool HAS_ENVIRONMENT = true;  // environment.glsl
 layout(constant_id = SPEC_ESTIMATOR) const uint ESTIMATOR_KIND = ESTIMATOR_FROM_FRAME;  // device_host.h
+layout(constant_id = SPEC_UNIFORM_INDEX_FROM_GROUPS) const bool UNIFORM_INDEX_FROM_GROUPS = true;  // VKRT_UNIFORM_INDEX
 // 0: nothing in the scene pushes (feature_set.cpp), and the path stack's code is compiled out.
 const bool HAS_PATH_STACK = PATH_STACK_SIZE > 0u;
 const uint PATH_STACK_ENTRIES = HAS_PATH_STACK ? PATH_STACK_SIZE : 1u;  // an array needs one
@@ -57,7 +58,9 @@ layout(set = 0, binding = BINDING_ENVIRONMENT_CDF, r32ui) uniform readonly uimag
 // each was a full LLVM compile (host/gpu/README.md, fact 7). The inliner only follows loads at
 // constant offsets; an index it cannot fold leaves one compile per pipeline.
 // Every dispatch is (n, 1, 1) workgroups (host/gpu/submission_recorder), so gl_NumWorkGroups.z - 1 is 0.
-#define VKRT_UNIFORM_INDEX (gl_NumWorkGroups.z - 1u)
+// Only lavapipe needs this: the host sets UNIFORM_INDEX_FROM_GROUPS from the driver
+// (kernel_cache.cpp), so every other driver compiles a constant 0 and plain uniform loads.
+#define VKRT_UNIFORM_INDEX (UNIFORM_INDEX_FROM_GROUPS ? gl_NumWorkGroups.z - 1u : 0u)
 layout(std140, set = 0, binding = BINDING_FRAME) uniform FrameBuffer { FrameParams frames[1]; };
 #define frame frames[VKRT_UNIFORM_INDEX]
 // FrameParams' lanes by name (device_host.h), each read straight from the block: a function taking

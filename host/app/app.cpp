@@ -65,13 +65,15 @@ int asMpiRank(Body body) {
     return 0;
 }
 
-// Each rank on its own GPU, by local rank, when several exist and --gpu is not given.
+// Each rank on a device of the best type present, by local rank, unless --gpu is given
+// (deviceForLocalRank). Without a usable device the rank renders as --device says.
 void pickGpuByLocalRank(CommandLine& cl, int localRank) {
     if (cl.gpuIndex >= 0 || cl.device == DeviceChoice::Cpu) return;
-    std::vector<int> usable;
-    for (const DeviceInfo& d : listDevices())
-        if (d.usable) usable.push_back(d.index);
-    if (usable.size() > 1) cl.gpuIndex = usable[static_cast<std::size_t>(localRank) % usable.size()];
+    try {
+        cl.gpuIndex = deviceForLocalRank(listDevices(), localRank);
+    } catch (const VulkanUnavailable&) {
+        // no loader: openGpu says so, or falls back to the CPU
+    }
 }
 
 // Rank r renders part r + 1 of N; rank 0 gathers the rows in rank order, which is the image's row

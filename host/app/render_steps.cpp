@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <iostream>
 #include <stdexcept>
 #include <string>
@@ -49,6 +50,7 @@ GpuRendererOptions gpuOptions(const CommandLine& cl) {
     GpuRendererOptions options;
     options.gpu = cl.gpuIndex;
     options.validation = cl.validate;
+    options.fallBack = cl.device != DeviceChoice::Gpu;
     if (!cl.shaderDir.empty()) options.shaderDir = cl.shaderDir;
     return options;
 }
@@ -85,8 +87,11 @@ DeviceRender renderPreparedOnGpu(GpuRenderer& gpu, const GpuSceneData& data, con
         std::cerr << "warning: " << log->count() << " Vulkan validation message(s):\n" << log->joined();
     // The kernel variant that ran: what the scene needed (feature_set.h), and the samples each
     // invocation computed (sample_batching.h), for shader developers.
+    // And the device's own time for the submissions (timestamps), where the queue writes them.
+    char deviceTime[48] = "";
+    if (stats.kernelSeconds >= 0.0) std::snprintf(deviceTime, sizeof deviceTime, "; device time %.3fs", stats.kernelSeconds);
     const std::string kernel = (stats.generalKernel ? "general kernel, " + stats.features : "kernel: " + stats.features) +
-                               "; samples/dispatch=" + std::to_string(stats.samplesPerDispatch);
+                               "; samples/dispatch=" + std::to_string(stats.samplesPerDispatch) + deviceTime;
     return {std::move(image), stats.device + " [" + kernel + "]", 0.0, stats.renderSeconds + stats.readbackSeconds,
             stats.pipelineSeconds + stats.warmUpSeconds};
 }

@@ -6,6 +6,7 @@ ContextOptions contextOptions(const GpuRendererOptions& options, const GpuTestHo
     ContextOptions c;
     c.gpu = options.gpu;
     c.validation = options.validation;
+    c.fallBack = options.fallBack;
     c.maxBufferBytes = hooks.maxBufferBytes;
     c.forceStaging = hooks.forceStaging;
     return c;

@@ -17,6 +17,8 @@ namespace vkrt {
 struct GpuRendererOptions {
     int gpu = -1;             // --gpu N (index of listDevices()); -1 chooses discrete > integrated > cpu
     bool validation = false;  // --validate: Khronos validation layers, messages in validationLog()
+    bool fallBack = true;     // --device auto: a device that fails to open gives way to the next
+                              // (with a note); --device gpu: it is an error
     std::optional<std::filesystem::path> shaderDir;  // --shader-dir: compile DIR/<kernel>.comp at run time
 };
 

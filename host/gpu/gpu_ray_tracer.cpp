@@ -187,6 +187,7 @@ std::vector<gpu::TraceHitOutput> GpuRayTracer::trace(std::span<const gpu::TraceR
             commands.dispatch((count + kLocalSize - 1) / kLocalSize, 1, 1);
             computeToHostBarrier(commands);
         });
+        if (m.runner.lastDeviceSeconds() >= 0.0) stats.kernelSeconds = std::max(stats.kernelSeconds, 0.0) + m.runner.lastDeviceSeconds();
         ++stats.submissions;
         m.transfers.download(m.hits, std::as_writable_bytes(std::span(words).first(std::size_t{count} * wordsPerRay)));
         // The kernel reports failures per ray in its words (trace_rays.comp), not through atomics,
@@ -210,13 +211,14 @@ std::vector<gpu::TraceHitOutput> GpuRayTracer::trace(std::span<const gpu::TraceR
                                 std::to_string(o.x) + ", " + std::to_string(o.y) + ", " + std::to_string(o.z) + ", direction " +
                                 std::to_string(d.x) + ", " + std::to_string(d.y) + ", " + std::to_string(d.z) + ")";
         if (failures & gpu::STATUS_LOOP_BUDGET_EXCEEDED)
-            throw GpuKernelError(ray + " needed more than " + std::to_string(gpu::LOOP_BUDGET) +
-                                 " traversal steps (the kernel's loop budget; lavapipe before Mesa 25 cuts loops off silently "
-                                 "at 65,535 passes)");
+            throw GpuKernelError(ray + " needed more than " + std::to_string(gpu::LOOP_BUDGET) + " traversal steps (the kernel's loop budget" +
+                                 (m.context.info().loopLimiter ? "; lavapipe before Mesa 25 cuts loops off silently at 65,535 passes)" : ")"));
         if (failures & gpu::STATUS_LOOP_CUT_OFF)
             throw GpuKernelError("the traversal of " + ray +
-                                 " was cut off by the driver's loop limiter (lavapipe before Mesa 25 ends every loop "
-                                 "silently after 65,535 passes per group of 8 lanes)");
+                                 (m.context.info().loopLimiter
+                                      ? " was cut off by the driver's loop limiter (lavapipe before Mesa 25 ends every loop "
+                                        "silently after 65,535 passes per group of 8 lanes)"
+                                      : " ended before it finished, which this driver is not known to do: please report it"));
         if (failures & gpu::STATUS_RAY_STACK_OVERFLOW)
             throw GpuKernelError("the BVH traversal stack (" + std::to_string(gpu::TRAVERSAL_STACK_SIZE) + " entries) overflowed on " + ray);
         throw GpuKernelError("unknown failure flags " + std::to_string(failures) + " on " + ray);

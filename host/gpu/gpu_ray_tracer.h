@@ -21,7 +21,8 @@ namespace vkrt {
 
 struct GpuTraceStats {
     double pipelineSeconds = 0.0;  // creating the traversal kernel for this BVH (0 when cached)
-    double traceSeconds = 0.0;     // the submissions alone, without ray upload and hit readback
+    double traceSeconds = 0.0;     // the submissions alone, without ray upload and hit readback (wall clock)
+    double kernelSeconds = -1.0;   // the same submissions by the device's timestamps; -1 without them
     std::uint32_t submissions = 0;
 };
 

@@ -14,6 +14,7 @@
 #include <memory>
 #include <string>
 
+#include "device_list.h"
 #include "gpu_options.h"
 #include "image.h"
 #include "kernel_error.h"
@@ -40,8 +41,10 @@ struct GpuRenderStats {
     double pipelineSeconds = 0.0; // creating the kernel variant (0 when it was cached)
     double warmUpSeconds = 0.0;   // an empty dispatch: lavapipe's LLVM compile of the variant happens
                                   // here (~0.1-1 s) the first time it meets these resources
-    double uploadSeconds = 0.0;   // the prepared scene's arrays into device buffers
-    double renderSeconds = 0.0;   // all submissions, first to last
+    double uploadSeconds = 0.0;   // the prepared scene's arrays into device buffers (or only the frame)
+    bool sceneUploaded = false;   // the tables were uploaded by this render (else kept from the last)
+    double renderSeconds = 0.0;   // all submissions, first to last (wall clock)
+    double kernelSeconds = -1.0;  // the submissions' device time, by timestamps; -1 without them
     double readbackSeconds = 0.0;
     std::uint32_t submissions = 0;
     std::uint32_t dispatches = 0;
@@ -72,6 +75,8 @@ public:
     double reloadKernel();
 
     std::string deviceName() const;
+    // The device's description (device_list.h): its driver, whether it is lavapipe, its limits.
+    const DeviceInfo& deviceInfo() const;
     // nullptr unless validation is on; stays readable after the renderer is destroyed.
     std::shared_ptr<const ValidationLog> validationLog() const;
     // Kernel variants created so far (one per distinct feature set).

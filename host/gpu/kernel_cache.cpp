@@ -44,7 +44,8 @@ const vk::raii::Pipeline& KernelCache::pipeline(const FeatureSet& features, std:
     if (auto found = pipelines_.find(key); found != pipelines_.end()) return found->second;
 
     const auto start = std::chrono::steady_clock::now();
-    const auto values = features.specializationValues(samplesPerDispatch);
+    auto values = features.specializationValues(samplesPerDispatch);
+    values[gpu::SPEC_UNIFORM_INDEX_FROM_GROUPS] = context_.info().lavapipe ? 1u : 0u;  // a device's, not a scene's
     std::vector<SpecConstant> constants;
     for (std::uint32_t id = 0; id < values.size(); ++id) constants.push_back({id, values[id]});
     vk::raii::Pipeline created = makeComputePipeline(context_, &cache_, layout_.pipelineLayout(), *module_, constants,

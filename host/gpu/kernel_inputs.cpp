@@ -1,6 +1,7 @@
 #include "kernel_inputs.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 
 #include "frame_params.h"
@@ -36,11 +37,13 @@ GpuSceneData prepareGpuScene(const Scene& scene, SceneAccel accel) {
     data.tables = buildSceneTables(scene, data.accel);
     data.nodes = gpuNodes(data.accel.bvh);
     data.packSeconds = secondsSince(start);
+    static std::atomic<std::uint64_t> prepared{0};
+    data.uploadKey = ++prepared;
     return data;
 }
 
 KernelInputs makeKernelInputs(const GpuSceneData& data, const RenderOptions& options, KernelVariant variant,
-                              std::uint32_t forcedSamplesPerDispatch) {
+                              std::uint32_t forcedSamplesPerDispatch, std::uint64_t lockstepFactor) {
     const Scene& scene = *data.scene;
     const bvh::SceneBvh& bvh = data.accel.bvh;
     KernelInputs in;
@@ -53,7 +56,7 @@ KernelInputs makeKernelInputs(const GpuSceneData& data, const RenderOptions& opt
     if (in.features.instances != needsTopLevel(bvh)) checkTraversalStack(bvh, in.features.instances);
     const auto samples = static_cast<std::uint32_t>(options.samplesPerPixel);
     in.batching = {samples, samplesPerDispatch(sampleLoopBound(scene, bvh, in.features, options), samples,
-                                               forcedSamplesPerDispatch)};
+                                               forcedSamplesPerDispatch, lockstepFactor)};
     // A progressive render needs a pass boundary at each of its checkpoints: at most rpp / N
     // samples per dispatch (the image does not depend on k: sample_batching.h).
     if (options.checkpoints > 1 && forcedSamplesPerDispatch == 0)

@@ -27,6 +27,10 @@ struct GpuSceneData {
     GpuNodes nodes;      // accel's BVH nodes as the kernel reads them
     double buildSeconds = 0.0;  // building accel
     double packSeconds = 0.0;   // the tables and the node packing
+    // Unique to each prepare (copies share it): GpuRenderer keeps the device buffers of the last
+    // prepared scene it rendered and uploads again only for another key. A prepared scene is not
+    // to be changed after prepare.
+    std::uint64_t uploadKey = 0;
 };
 
 // Builds the GPU's tree, then the tables and nodes. Throws DeviceLimitExceeded when the tree could
@@ -53,6 +57,6 @@ struct KernelInputs {
 // forcedSamplesPerDispatch: 0 lets the scene's loop bound choose (sample_batching.h); tests force one.
 KernelInputs makeKernelInputs(const GpuSceneData& data, const RenderOptions& options,
                               KernelVariant variant = KernelVariant::Specialised,
-                              std::uint32_t forcedSamplesPerDispatch = 0);
+                              std::uint32_t forcedSamplesPerDispatch = 0, std::uint64_t lockstepFactor = kLockstepFactor);
 
 }  // namespace vkrt

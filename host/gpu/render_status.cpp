@@ -7,7 +7,7 @@
 
 namespace vkrt {
 
-void throwIfKernelFailed(const gpu::RenderStatus& status, std::uint32_t imageWidth) {
+void throwIfKernelFailed(const gpu::RenderStatus& status, std::uint32_t imageWidth, bool loopLimiter) {
     const std::uint32_t flags = gpu::statusFailures(status);
     if (flags == 0) return;
     std::string where = "(the kernel did not record the pixel)";
@@ -18,15 +18,20 @@ void throwIfKernelFailed(const gpu::RenderStatus& status, std::uint32_t imageWid
     }
     std::string message = "the GPU kernel could not compute the image correctly " + where + ":";
     if (flags & gpu::STATUS_LOOP_BUDGET_EXCEEDED)
-        message += " one sample needed more than " + std::to_string(gpu::LOOP_BUDGET) +
-                   " loop iterations (the kernel stops there because lavapipe before Mesa 25 silently cuts every "
-                   "invocation off at 65,535); reduce --max-depth, --gloss-samples or --light-samples, or the scene's "
-                   "geometry overlap;";
+        message += " one sample needed more than " + std::to_string(gpu::LOOP_BUDGET) + " loop iterations (" +
+                   (loopLimiter ? "the kernel stops there because lavapipe before Mesa 25 silently cuts every invocation "
+                                  "off at 65,535"
+                                : "the kernel's budget per sample, which turns a runaway loop into this error instead of a hang") +
+                   "); reduce --max-depth, --gloss-samples or --light-samples, or the scene's geometry overlap;";
     if (flags & gpu::STATUS_LOOP_CUT_OFF)
-        message += " a loop of the kernel was cut off before it finished: this driver ends loops silently after "
-                   "65,535 passes per group of 8 lanes (lavapipe before Mesa 25), and one sample of this scene needs "
-                   "more (many lights, deep reflection, heavy overlap); reduce the number of lights, --light-samples, "
-                   "--gloss-samples or --max-depth, or render with --device cpu;";
+        message += loopLimiter
+                       ? " a loop of the kernel was cut off before it finished: this driver ends loops silently after "
+                         "65,535 passes per group of 8 lanes (lavapipe before Mesa 25), and one sample of this scene needs "
+                         "more (many lights, deep reflection, heavy overlap); reduce the number of lights, --light-samples, "
+                         "--gloss-samples or --max-depth, or render with --device cpu;"
+                       : " a loop of the kernel ended before it finished its work, which this driver is not known to do "
+                         "(only lavapipe before Mesa 25 cuts loops off): please report it with the scene; --device cpu "
+                         "renders it meanwhile;";
     if (flags & gpu::STATUS_RAY_STACK_OVERFLOW)
         message += " a ray stack overflowed (BVH traversal stack of " + std::to_string(gpu::TRAVERSAL_STACK_SIZE) +
                    " entries, or the pending reflection/refraction rays); reduce --max-depth or --gloss-samples;";

@@ -10,6 +10,9 @@ namespace vkrt {
 
 // Throws GpuKernelError when a STATUS_* flag is set, naming the flag's meaning, the first
 // offending pixel (x, y) and sample when the kernel recorded them, and what to reduce.
-void throwIfKernelFailed(const gpu::RenderStatus& status, std::uint32_t imageWidth);
+// `loopLimiter`: the device is lavapipe before Mesa 25 (DeviceInfo::loopLimiter), whose silent
+// loop limit the message then explains; on other drivers a cut-off loop is not expected and the
+// message says so instead of blaming lavapipe.
+void throwIfKernelFailed(const gpu::RenderStatus& status, std::uint32_t imageWidth, bool loopLimiter);
 
 }  // namespace vkrt

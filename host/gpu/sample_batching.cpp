@@ -62,10 +62,11 @@ std::uint64_t sampleLoopBound(const Scene& scene, const bvh::SceneBvh& bvh, cons
     return saturatingSum(saturatingProduct(rays, perRay), 8);
 }
 
-std::uint32_t samplesPerDispatch(std::uint64_t sampleBound, std::uint32_t samplesPerPixel, std::uint32_t forced) {
+std::uint32_t samplesPerDispatch(std::uint64_t sampleBound, std::uint32_t samplesPerPixel, std::uint32_t forced,
+                                 std::uint64_t lockstepFactor) {
     const std::uint32_t most = std::max<std::uint32_t>(1, samplesPerPixel);
     if (forced > 0) return std::min(forced, most);
-    const std::uint64_t fit = gpu::LOOP_BUDGET / (std::max<std::uint64_t>(sampleBound, 1) * kLockstepFactor);
+    const std::uint64_t fit = gpu::LOOP_BUDGET / (std::max<std::uint64_t>(sampleBound, 1) * std::max<std::uint64_t>(lockstepFactor, 1));
     if (fit < kMinSamplesPerDispatch) return 1;
     return static_cast<std::uint32_t>(std::min<std::uint64_t>(fit, std::min(kMaxSamplesPerDispatch, most)));
 }

@@ -30,7 +30,9 @@ constexpr std::uint32_t kMaxSamplesPerDispatch = 8;
 constexpr std::uint32_t kMinSamplesPerDispatch = 4;
 
 // A group of 8 lanes may pass a loop more often than its busiest lane, but each of its passes is
-// a pass (an iteration or the exit) of at least one of its lanes: at most the 8 lanes' sum.
+// a pass (an iteration or the exit) of at least one of its lanes: at most the 8 lanes' sum. Only
+// lavapipe's limiter counts a group's passes (DeviceInfo::loopLimiter); elsewhere the kernel's own
+// budget counts one lane's, and the factor is 1 (gpu_renderer.cpp).
 constexpr std::uint64_t kLockstepFactor = 8;
 
 // An upper bound on the loop passes (every loop of render.comp, budget-charged or not) of one
@@ -44,7 +46,8 @@ std::uint64_t sampleLoopBound(const Scene& scene, const bvh::SceneBvh& bvh, cons
 
 // k for a render: the bound's k (1 below kMinSamplesPerDispatch), or `forced` (tests) when
 // non-zero; never more than the samples.
-std::uint32_t samplesPerDispatch(std::uint64_t sampleBound, std::uint32_t samplesPerPixel, std::uint32_t forced = 0);
+std::uint32_t samplesPerDispatch(std::uint64_t sampleBound, std::uint32_t samplesPerPixel, std::uint32_t forced = 0,
+                                 std::uint64_t lockstepFactor = kLockstepFactor);
 
 // A render's samples in dispatch passes of k: pass p computes samples [first(p), first(p) + count(p)).
 struct SampleBatching {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <span>
 #include <stdexcept>
 
 namespace vkrt {
@@ -90,8 +91,11 @@ SceneUpload::SceneUpload(const Context& context, Transfers& transfers, const Ker
         buffers_.emplace_back(context, p.name, p.bytes, usageOf(p.kind), use);
         bytes_ += p.bytes;
     }
+    // Every table in one batch of staging copies (Transfers::uploadAll), each padded with zeros to
+    // its planned size (empty tables, the texel buffers' stable sizes).
+    std::vector<Transfers::Upload> uploads;
     auto upload = [&](std::uint32_t binding, const auto& items) {
-        transfers.upload(buffers_[binding], padded(items, plan[binding].bytes));
+        uploads.push_back({&buffers_[binding], std::as_bytes(std::span(items)), plan[binding].bytes});
     };
     upload(gpu::BINDING_NODES, nodes.texels);
     upload(gpu::BINDING_PRIMS, bvh.prims);
@@ -101,16 +105,18 @@ SceneUpload::SceneUpload(const Context& context, Transfers& transfers, const Ker
     if (!bvh.motions.empty())
         std::memcpy(instanceTable.data() + bvh.instances.size() * sizeof(gpu::Instance), bvh.motions.data(),
                     bvh.motions.size() * sizeof(gpu::InstanceMotion));
-    transfers.upload(buffers_[gpu::BINDING_INSTANCES], instanceTable);
+    upload(gpu::BINDING_INSTANCES, instanceTable);
     upload(gpu::BINDING_SHADERS, tables.materials);
     upload(gpu::BINDING_LIGHTS, tables.lights);
     upload(gpu::BINDING_TEXTURES, tables.textures);
     upload(gpu::BINDING_TEXELS, tables.texels);
-    upload(gpu::BINDING_FRAME, std::vector<gpu::FrameParams>{frame});
+    const std::array<gpu::FrameParams, 1> frames = {frame};
+    upload(gpu::BINDING_FRAME, frames);
     upload(gpu::BINDING_EMITTERS, tables.lighting->emitters.records);
     upload(gpu::BINDING_EMITTER_TRIANGLES, tables.lighting->emitters.triangles);
     upload(gpu::BINDING_ENVIRONMENT, tables.lighting->environment.texels);
     upload(gpu::BINDING_ENVIRONMENT_CDF, tables.lighting->environmentLights.table);
+    transfers.uploadAll(uploads);
     transfers.zero(buffers_[gpu::BINDING_ACCUM]);
     transfers.zero(buffers_[gpu::BINDING_STATUS]);
 
@@ -151,6 +157,27 @@ SceneUpload::SceneUpload(const Context& context, Transfers& transfers, const Ker
         writes.push_back(write);
     }
     context.device().updateDescriptorSets(writes, {});
+}
+
+void SceneUpload::beginRender(const Context& context, Transfers& transfers, const gpu::FrameParams& frame) {
+    const std::uint64_t pixels = static_cast<std::uint64_t>(gpu::frameWidth(frame)) * gpu::frameHeight(frame);
+    const BufferPlan accum = planSceneBuffers(SceneTables{}, bvh::SceneBvh{}, 16, pixels)[gpu::BINDING_ACCUM];
+    if (accum.bytes > buffers_[gpu::BINDING_ACCUM].size()) {
+        checkBufferFits(context.limits(), accum.name, accum.kind, accum.bytes, accum.texelBytes);
+        bytes_ -= buffers_[gpu::BINDING_ACCUM].size();
+        context.device().waitIdle();  // the old buffer may not be in use when it is replaced
+        buffers_[gpu::BINDING_ACCUM] = Buffer(context, accum.name, accum.bytes, usageOf(accum.kind), MemoryUse::Device);
+        bytes_ += accum.bytes;
+        views_[gpu::BINDING_ACCUM] = makeTexelView(context, buffers_[gpu::BINDING_ACCUM], accum.texelBytes);
+        const vk::BufferView view = *views_[gpu::BINDING_ACCUM];
+        vk::WriteDescriptorSet write(*set_, gpu::BINDING_ACCUM, 0, 1, vk::DescriptorType::eStorageTexelBuffer);
+        write.pTexelBufferView = &view;
+        context.device().updateDescriptorSets(write, {});
+    }
+    const std::array<gpu::FrameParams, 1> frames = {frame};
+    transfers.upload(buffers_[gpu::BINDING_FRAME], std::as_bytes(std::span(frames)));
+    transfers.zero(buffers_[gpu::BINDING_ACCUM]);
+    transfers.zero(buffers_[gpu::BINDING_STATUS]);
 }
 
 }  // namespace vkrt

@@ -1,4 +1,4 @@
-// One render's device data: the prepared scene's arrays and the render's frame (kernel_inputs.h)
+// A prepared scene's device data: its arrays and the current render's frame (kernel_inputs.h)
 // uploaded into the buffers of device_host.h's bindings, the accumulation and status buffers, and
 // the descriptor set binding them all. Every buffer is checked against the device limits before
 // anything is allocated.
@@ -42,6 +42,11 @@ public:
     SceneUpload(const Context& context, Transfers& transfers, const KernelLayout& layout, const GpuSceneData& data,
                 const gpu::FrameParams& frame);
 
+    // Another render of the same prepared scene: its frame uploaded, the accumulation buffer grown
+    // when the image has more pixels (checked against the limits first), the sums and the status
+    // zeroed. The scene's tables stay as they are.
+    void beginRender(const Context& context, Transfers& transfers, const gpu::FrameParams& frame);
+
     vk::DescriptorSet descriptorSet() const { return *set_; }
     const Buffer& accum() const { return buffers_[gpu::BINDING_ACCUM]; }
     // Mapped: the host reads it after every submission.
@@ -49,6 +54,7 @@ public:
     std::uint64_t bytes() const { return bytes_; }
 
 private:
+
     std::vector<Buffer> buffers_;  // indexed by binding
     std::vector<vk::raii::BufferView> views_;  // indexed by binding: the texel buffers' views, else null
     vk::raii::DescriptorPool pool_ = nullptr;

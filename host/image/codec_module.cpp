@@ -7,7 +7,7 @@
 namespace vkrt {
 
 const oiio::Codec& oiioCodec() {
-    return moduleTable<oiio::Codec>({"libvkrt_oiio.so", "VKRT_OIIO_MODULE", VKRT_OIIO_MODULE_PATH, "vkrt_oiio_codec", RTLD_LOCAL},
+    return moduleTable<oiio::Codec>({"libvkrt_oiio.so", "VKRT_OIIO_MODULE", "vkrt_oiio_codec", RTLD_LOCAL},
                                     oiio::kCodecVersion, "OpenImageIO image I/O: reading images, writing .exr and .jpg");
 }
 

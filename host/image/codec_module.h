@@ -7,7 +7,7 @@
 namespace vkrt {
 
 // The module's table. Looked for at $VKRT_OIIO_MODULE when it is set (only there), else beside
-// the running executable, then where the build put it; throws std::runtime_error naming every
+// the running executable, then the folders above it (module_loader.h); throws std::runtime_error naming every
 // place tried (and dlerror's reason).
 const oiio::Codec& oiioCodec();
 

@@ -1,6 +1,5 @@
 #include "module_loader.h"
 
-#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
@@ -18,10 +17,13 @@ const void* loadModule(const ModuleSearch& search, const std::function<std::stri
         candidates.push_back(env);  // the user's choice, and only it
     } else {
         const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-        if (!ec) candidates.push_back((exe.parent_path() / search.file).string());
-        // The build tree is often also the executable's folder.
-        if (!search.builtPath.empty() && std::find(candidates.begin(), candidates.end(), search.builtPath) == candidates.end())
-            candidates.push_back(search.builtPath);
+        if (!ec) {
+            std::filesystem::path dir = exe.parent_path();
+            for (int level = 0; level <= kModuleSearchLevels && !dir.empty(); ++level, dir = dir.parent_path()) {
+                candidates.push_back((dir / search.file).string());
+                if (dir == dir.root_path()) break;
+            }
+        }
     }
     std::string tried;
     for (const std::string& path : candidates) {

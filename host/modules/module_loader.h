@@ -10,16 +10,19 @@
 
 namespace vkrt {
 
+inline constexpr int kModuleSearchLevels = 3;
+
 struct ModuleSearch {
     std::string file;          // "libvkrt_oiio.so"
     std::string envVariable;   // names the module's path; when set, only that path is tried
-    std::string builtPath;     // where the build put it (tests run from their own folders); may be empty
     std::string entry;         // the extern "C" function returning the module's table
     int dlopenFlags = 0;       // RTLD_LOCAL or RTLD_GLOBAL, or-ed with RTLD_NOW
 };
 
 // The first loadable candidate's table: $envVariable when set, else beside the running
-// executable, then builtPath. `open` gets the entry point's address, calls it as the module's own
+// executable, then in the folders above it, up to kModuleSearchLevels (a test binary in
+// build/tests/<area>/ finds the build's modules in build/). Never a path compiled into the
+// binary: a bundle moved to another machine must not load, or silently miss, a build tree's. `open` gets the entry point's address, calls it as the module's own
 // function type (a call through another type is undefined: UBSan's -fsanitize=function says so)
 // and returns "" with `table` set, or why it refuses the module. Throws std::runtime_error with
 // `what` and every candidate tried, each with its reason.

@@ -16,7 +16,7 @@ bool launchedAsMpiRank() {
 
 const mpi::Api& mpiApi() {
     // RTLD_GLOBAL: OpenMPI's own plugins resolve libmpi's symbols from the global scope.
-    return moduleTable<mpi::Api>({"libvkrt_mpi.so", "VKRT_MPI_MODULE", VKRT_MPI_MODULE_PATH, "vkrt_mpi_api", RTLD_GLOBAL},
+    return moduleTable<mpi::Api>({"libvkrt_mpi.so", "VKRT_MPI_MODULE", "vkrt_mpi_api", RTLD_GLOBAL},
                                  mpi::kApiVersion, "started by mpirun: the MPI ranks' module");
 }
 

@@ -10,7 +10,7 @@ bool launchedAsMpiRank();
 
 // libvkrt_mpi.so's table, loaded with RTLD_GLOBAL (OpenMPI's own plugins resolve libmpi's symbols
 // from the global scope). Looked for at $VKRT_MPI_MODULE when set (only there), else beside the
-// executable, then where the build put it; throws std::runtime_error naming what was tried.
+// executable, then the folders above it (module_loader.h); throws std::runtime_error naming what was tried.
 const mpi::Api& mpiApi();
 
 }  // namespace vkrt

@@ -11,8 +11,7 @@ namespace vkrt {
 namespace {
 
 const preview::Api& previewApi() {
-    return moduleTable<preview::Api>({"libvkrt_preview.so", "VKRT_PREVIEW_MODULE", VKRT_PREVIEW_MODULE_PATH,
-                                      "vkrt_preview_api", RTLD_LOCAL},
+    return moduleTable<preview::Api>({"libvkrt_preview.so", "VKRT_PREVIEW_MODULE", "vkrt_preview_api", RTLD_LOCAL},
                                      preview::kApiVersion, "--preview: the preview page's HTTP server");
 }
 

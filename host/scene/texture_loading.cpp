@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "codec_module.h"
+#include "png_reader.h"
 #include "scene_rules.h"
 
 namespace vkrt {
@@ -18,10 +19,14 @@ std::optional<Texture> loadTextureImage(const std::string& path, std::string& er
     oiio::Pixels image;
     std::string detail;
     oiio::ReadResult result = oiio::ReadResult::CannotOpen;
-    try {
-        result = oiioCodec().readBytes(path, kMaxTextureTexels, image, detail);
-    } catch (const std::runtime_error& e) {  // the module itself is missing
-        detail = e.what();
+    if (isPngFile(path)) {
+        result = readPng8(path, kMaxTextureTexels, image, detail);  // no module needed (png_reader.h)
+    } else {
+        try {
+            result = oiioCodec().readBytes(path, kMaxTextureTexels, image, detail);
+        } catch (const std::runtime_error& e) {  // the module itself is missing
+            detail = e.what();
+        }
     }
     switch (result) {
         case oiio::ReadResult::Ok: break;

@@ -1,4 +1,5 @@
-// Image files -> Texture::rgba8 through OpenImageIO (the module host/image/oiio_codec.h loads).
+// Image files -> Texture::rgba8: PNG through libpng (png_reader.h), any other format through
+// OpenImageIO (the module host/image/oiio_codec.h loads).
 #pragma once
 
 #include <cstddef>
@@ -14,7 +15,7 @@ namespace vkrt {
 // 2048 x 2048, 1/8 of it).
 inline constexpr std::size_t kMaxTextureTexels = std::size_t(1) << 25;
 
-// Reads any image OpenImageIO can read (PNG, JPEG, EXR, ...): 1 channel is grey, 2 grey+alpha,
+// Reads a PNG natively, any other image OpenImageIO can read (JPEG, EXR, ...) through its module: 1 channel is grey, 2 grey+alpha,
 // 3 RGB, 4+ RGBA (extra channels dropped); alpha defaults to opaque. Values are converted to 8
 // bits by OpenImageIO (no colour-space change: textures are used linearly, as the course did).
 // Returns nullopt and sets `error` when the file is missing, unreadable, empty or claims more

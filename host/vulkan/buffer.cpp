@@ -1,6 +1,8 @@
 #include "buffer.h"
 
+#include <algorithm>
 #include <cstring>
+#include <vector>
 #include <stdexcept>
 
 namespace vkrt {
@@ -121,6 +123,51 @@ void Transfers::upload(const Buffer& destination, std::span<const std::byte> dat
         commands.copyBuffer(staging.handle(), destination.handle(), vk::BufferCopy(0, 0, data.size()));
         afterTransfer(commands);
     });
+}
+
+void Transfers::uploadAll(std::span<const Upload> uploads) {
+    constexpr std::uint64_t kAlign = 16;  // copy offsets: optimalBufferCopyOffsetAlignment is at most this in practice
+    const auto sizeOf = [](const Upload& u) { return std::max<std::uint64_t>(u.bytes, u.data.size()); };
+    // Mapped buffers are written in place; the others go through staging, in batches.
+    std::vector<const Upload*> staged;
+    for (const Upload& u : uploads) {
+        checkSize(*u.destination, sizeOf(u), "upload");
+        if (sizeOf(u) == 0) continue;
+        if (std::byte* to = u.destination->mapped()) {
+            std::memcpy(to, u.data.data(), u.data.size());
+            std::memset(to + u.data.size(), 0, sizeOf(u) - u.data.size());
+        } else {
+            staged.push_back(&u);
+        }
+    }
+    std::size_t first = 0;
+    while (first < staged.size()) {
+        std::uint64_t bytes = 0;  // one batch: the uploads that fit kStagingBatchBytes together (at least one)
+        std::size_t end = first;
+        for (; end < staged.size(); ++end) {
+            const std::uint64_t size = (sizeOf(*staged[end]) + kAlign - 1) / kAlign * kAlign;
+            if (bytes > 0 && bytes + size > kStagingBatchBytes) break;
+            bytes += size;
+        }
+        Buffer staging(context_, "uploads (staging)", bytes, kStagingUsage, MemoryUse::Staging);
+        std::vector<std::uint64_t> offsets;
+        std::uint64_t offset = 0;
+        for (std::size_t i = first; i < end; ++i) {
+            const Upload& u = *staged[i];
+            std::memcpy(staging.mapped() + offset, u.data.data(), u.data.size());
+            std::memset(staging.mapped() + offset + u.data.size(), 0, sizeOf(u) - u.data.size());
+            offsets.push_back(offset);
+            offset += (sizeOf(u) + kAlign - 1) / kAlign * kAlign;
+        }
+        runner_.run([&](const vk::raii::CommandBuffer& commands) {
+            beforeTransfer(commands);
+            for (std::size_t i = first; i < end; ++i)
+                commands.copyBuffer(staging.handle(), staged[i]->destination->handle(),
+                                    vk::BufferCopy(offsets[i - first], 0, sizeOf(*staged[i])));
+            afterTransfer(commands);
+        });
+        first = end;
+    }
 }
 
 void Transfers::download(const Buffer& source, std::span<std::byte> out) {

@@ -64,6 +64,16 @@ public:
     Transfers(const Context& context, CommandRunner& runner) : context_(context), runner_(runner) {}
 
     void upload(const Buffer& destination, std::span<const std::byte> data);
+    // Several uploads through one staging buffer and one submission per kStagingBatchBytes (a
+    // scene's dozen tables: one wait for the device instead of a dozen). Each buffer's bytes as
+    // upload() would write them.
+    struct Upload {
+        const Buffer* destination;
+        std::span<const std::byte> data;
+        std::uint64_t bytes = 0;  // bytes written: data, then zeros up to this (0: data.size())
+    };
+    void uploadAll(std::span<const Upload> uploads);
+    static constexpr std::uint64_t kStagingBatchBytes = std::uint64_t(256) << 20;
     void download(const Buffer& source, std::span<std::byte> out);
     void zero(const Buffer& buffer);
 

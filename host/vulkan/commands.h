@@ -21,11 +21,18 @@ public:
     double run(const std::function<void(const vk::raii::CommandBuffer&)>& record,
                std::chrono::milliseconds timeout = std::chrono::seconds(120));
 
+    // The device's own time for the last run(): from a timestamp written before the recorded
+    // commands to one written after them (vkCmdWriteTimestamp), so submission and fence latency
+    // are not in it. Negative when the queue cannot write timestamps (timestampValidBits 0).
+    double lastDeviceSeconds() const { return lastDeviceSeconds_; }
+
 private:
     const Context& context_;
     vk::raii::CommandPool pool_;
     vk::raii::CommandBuffer commands_;
     vk::raii::Fence fence_;
+    vk::raii::QueryPool timestamps_ = nullptr;  // two queries; null without timestamp support
+    double lastDeviceSeconds_ = -1.0;
 };
 
 // A memory barrier making compute-shader writes visible to later compute reads and writes

@@ -1,6 +1,7 @@
 #include "context.h"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "vulkan_errors.h"
 
@@ -29,11 +30,17 @@ Context::Context(const ContextOptions& options) : log_(makeLog(options.validatio
     std::vector<DeviceInfo> devices;
     for (std::size_t i = 0; i < physical.size(); ++i) devices.push_back(describePhysicalDevice(physical[i], static_cast<int>(i)));
 
-    // A driver may list a device and then fail to open it; without --gpu the next one is tried.
+    // A driver may list a device and then fail to open it. With fallBack (--device auto) the next
+    // one is tried and stderr says so; without it (--device gpu) the best device must open: a user
+    // who asked for the GPU must not get lavapipe silently.
     std::string failures;
     for (const int candidate : deviceCandidates(devices, options.gpu)) {
+        if (!failures.empty() && !options.fallBack) break;
         try {
             openDevice(std::move(physical[candidate]), devices[candidate]);
+            if (!failures.empty())
+                std::fprintf(stderr, "note: could not open a Vulkan device (%s ); using %s\n", failures.c_str(),
+                             devices[candidate].name.c_str());
             break;
         } catch (const vk::SystemError& e) {
             failures += " " + devices[candidate].name + ": " + e.what() + ";";

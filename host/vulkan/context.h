@@ -18,6 +18,8 @@ namespace vkrt {
 struct ContextOptions {
     int gpu = -1;             // index from listDevices() (--gpu N); -1 chooses (discrete first)
     bool validation = false;  // VK_LAYER_KHRONOS_validation; messages go to validationLog()
+    // When the chosen device fails to open, try the next best (saying so on stderr); false: throw.
+    bool fallBack = true;
     // Caps every per-buffer limit (tests of both sides of a limit); VKRT_MAX_BUFFER_BYTES in the
     // environment does the same, and the smaller of the two wins.
     std::optional<std::uint64_t> maxBufferBytes;
@@ -47,6 +49,8 @@ public:
     // nullptr when validation is off. Shared so that a test can still read the messages sent
     // while this context is destroyed.
     std::shared_ptr<const ValidationLog> validationLog() const { return log_; }
+    // Whether the validation layer runs (it may be absent under VKRT_VALIDATION=if-present).
+    bool validating() const { return instance_.validating(); }
 
 private:
     void openDevice(vk::raii::PhysicalDevice physical, const DeviceInfo& info);

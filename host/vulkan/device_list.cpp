@@ -55,7 +55,12 @@ std::string formatDeviceList(const std::vector<DeviceInfo>& devices) {
             << "   maxStorageBufferRange " << mib(d.maxStorageBufferRange) << ", maxTexelBufferElements "
             << d.maxTexelBufferElements << ", maxMemoryAllocationSize " << mib(d.maxMemoryAllocationSize) << "\n"
             << "   device-local heap " << mib(d.deviceLocalHeapBytes) << ", maxComputeWorkGroupCount[0] "
-            << d.maxWorkGroupCountX << "\n";
+            << d.maxWorkGroupCountX << "\n"
+            << "   queue family " << d.queueFamily << (d.computeOnlyQueue ? " (compute only)" : " (graphics and compute)")
+            << ", timestamps " << (d.timestampValidBits > 0 ? std::to_string(d.timestampValidBits) + " bits, " +
+                                                                  std::to_string(d.timestampPeriodNs) + " ns per tick"
+                                                            : std::string("none"))
+            << "\n";
     }
     return out.str();
 }
@@ -96,6 +101,18 @@ std::vector<int> deviceCandidates(const std::vector<DeviceInfo>& devices, int re
         if (devices[i].usable) order.push_back(static_cast<int>(i));
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return typeRank(devices[a].type) < typeRank(devices[b].type); });
     return order;
+}
+
+int deviceForLocalRank(const std::vector<DeviceInfo>& devices, int localRank) {
+    std::vector<int> best;
+    for (const DeviceInfo& d : devices) {
+        if (!d.usable) continue;
+        if (!best.empty() && typeRank(d.type) > typeRank(devices[best.front()].type)) continue;
+        if (!best.empty() && typeRank(d.type) < typeRank(devices[best.front()].type)) best.clear();
+        best.push_back(d.index);
+    }
+    if (best.empty()) return -1;
+    return best[static_cast<std::size_t>(std::max(localRank, 0)) % best.size()];
 }
 
 }  // namespace vkrt

@@ -25,6 +25,12 @@ struct DeviceInfo {
     // What a VkPipelineCache's data belongs to (its header): pipeline_cache_file.h keys files by them.
     std::uint32_t vendorId = 0, deviceId = 0, driverVersion = 0;
     std::array<std::uint8_t, 16> pipelineCacheUuid{};
+    bool lavapipe = false;         // Mesa's llvmpipe driver (VkDriverId): its workarounds key on this
+    bool loopLimiter = false;      // lavapipe before Mesa 25: loops end silently after 65,535 passes
+    std::uint32_t queueFamily = 0; // the family vkrt submits to (computeQueueFamily)
+    bool computeOnlyQueue = false; // that family has no graphics
+    std::uint32_t timestampValidBits = 0;  // 0: the family cannot write timestamps
+    float timestampPeriodNs = 0.0f;        // nanoseconds per timestamp tick
     bool usable = false;           // Vulkan 1.2 with a compute queue
     std::string unusableReason;    // why not, when !usable
 };
@@ -46,5 +52,10 @@ int chooseDevice(const std::vector<DeviceInfo>& devices, int requested);
 // Every usable device in that order of preference (only `requested` when it is >= 0): the
 // candidates to try when creating a device fails on the first choice.
 std::vector<int> deviceCandidates(const std::vector<DeviceInfo>& devices, int requested);
+
+// The device of MPI rank `localRank` on its node: round robin over the usable devices of the best
+// type present (discrete > integrated > virtual > cpu), so a node with one GPU and Mesa's lavapipe
+// puts every rank on the GPU, never one on the CPU. -1 when no device is usable.
+int deviceForLocalRank(const std::vector<DeviceInfo>& devices, int localRank);
 
 }  // namespace vkrt

@@ -1,6 +1,8 @@
 #include "instance.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 
@@ -63,6 +65,11 @@ bool layerHasExtension(const vk::raii::Context& context, const char* layer, cons
 
 }  // namespace
 
+bool validationMayBeAbsent() {
+    const char* mode = std::getenv("VKRT_VALIDATION");
+    return mode && std::strcmp(mode, "if-present") == 0;
+}
+
 VulkanInstance::VulkanInstance(ValidationLog* log) : context_(loadVulkan()) {
     if (context_.enumerateInstanceVersion() < VK_API_VERSION_1_2)
         throw VulkanUnavailable("the Vulkan loader supports only API " + apiVersionString(context_.enumerateInstanceVersion()) +
@@ -79,10 +86,17 @@ VulkanInstance::VulkanInstance(ValidationLog* log) : context_(loadVulkan()) {
     features.setEnabledValidationFeatures(enables);
 
     vk::InstanceCreateInfo info({}, &app);
-    if (log) {
-        if (!hasLayer(context_, kValidationLayer))
+    if (log && !hasLayer(context_, kValidationLayer)) {
+        if (!validationMayBeAbsent())
             throw std::runtime_error(std::string("validation was requested but ") + kValidationLayer +
-                                     " is not installed (Debian package vulkan-validationlayers)");
+                                     " is not installed (Debian package vulkan-validationlayers; a bundle carries it, "
+                                     "tools/bundle.sh; VKRT_VALIDATION=if-present runs without it)");
+        std::fprintf(stderr, "note: %s is not installed: running without validation (VKRT_VALIDATION=if-present)\n",
+                     kValidationLayer);
+        log = nullptr;
+    }
+    validating_ = log != nullptr;
+    if (log) {
         layers.push_back(kValidationLayer);
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
         // Chained into instance creation too, so messages from vkCreateInstance and
@@ -115,9 +129,16 @@ std::vector<vk::raii::PhysicalDevice> VulkanInstance::physicalDevices() const {
 
 int computeQueueFamily(const vk::raii::PhysicalDevice& device) {
     const auto families = device.getQueueFamilyProperties();
-    for (std::size_t i = 0; i < families.size(); ++i)
-        if (families[i].queueFlags & vk::QueueFlagBits::eCompute) return static_cast<int>(i);
-    return -1;
+    // A compute-only family first: on a discrete GPU it is the async-compute engine, which the
+    // display and graphics work never share; else the first family with compute.
+    int any = -1;
+    for (std::size_t i = 0; i < families.size(); ++i) {
+        const vk::QueueFlags flags = families[i].queueFlags;
+        if (!(flags & vk::QueueFlagBits::eCompute)) continue;
+        if (!(flags & vk::QueueFlagBits::eGraphics)) return static_cast<int>(i);
+        if (any < 0) any = static_cast<int>(i);
+    }
+    return any;
 }
 
 namespace {
@@ -160,6 +181,11 @@ DeviceInfo describePhysicalDevice(const vk::raii::PhysicalDevice& device, int in
                                              vk::PhysicalDeviceDriverProperties, vk::PhysicalDeviceSubgroupProperties>();
     const auto& driver = chain.get<vk::PhysicalDeviceDriverProperties>();
     info.driver = std::string(driver.driverName.data()) + " (" + driver.driverInfo.data() + ")";
+    info.lavapipe = driver.driverID == vk::DriverId::eMesaLlvmpipe;
+    // driverInfo reads "Mesa 22.3.6"; a lavapipe that does not say is taken for an old one.
+    const std::string mesa = driver.driverInfo.data();
+    const std::size_t at = mesa.find("Mesa ");
+    info.loopLimiter = info.lavapipe && (at == std::string::npos || std::atoi(mesa.c_str() + at + 5) < 25);
     info.maxMemoryAllocationSize = chain.get<vk::PhysicalDeviceMaintenance3Properties>().maxMemoryAllocationSize;
     info.subgroupSize = chain.get<vk::PhysicalDeviceSubgroupProperties>().subgroupSize;
 
@@ -168,10 +194,16 @@ DeviceInfo describePhysicalDevice(const vk::raii::PhysicalDevice& device, int in
         if (memory.memoryHeaps[h].flags & vk::MemoryHeapFlagBits::eDeviceLocal)
             info.deviceLocalHeapBytes = std::max<std::uint64_t>(info.deviceLocalHeapBytes, memory.memoryHeaps[h].size);
 
-    if (computeQueueFamily(device) < 0) {
+    const int family = computeQueueFamily(device);
+    if (family < 0) {
         info.unusableReason = "has no compute queue";
         return info;
     }
+    const vk::QueueFamilyProperties queues = device.getQueueFamilyProperties()[static_cast<std::size_t>(family)];
+    info.queueFamily = static_cast<std::uint32_t>(family);
+    info.computeOnlyQueue = !(queues.queueFlags & vk::QueueFlagBits::eGraphics);
+    info.timestampValidBits = queues.timestampValidBits;
+    info.timestampPeriodNs = props.limits.timestampPeriod;
     info.usable = true;
     return info;
 }

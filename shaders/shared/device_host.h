@@ -425,7 +425,8 @@ VKRT_CONST uint SPEC_HAS_DIFFUSE = 19;      // a used shader is the course's pat
 VKRT_CONST uint SPEC_HAS_EMITTERS = 20;     // the scene has shape emitters (EmitterRecord)
 VKRT_CONST uint SPEC_HAS_ENVIRONMENT = 21;  // the scene has an environment map
 VKRT_CONST uint SPEC_ESTIMATOR = 22;        // ESTIMATOR_*, or ESTIMATOR_FROM_FRAME
-VKRT_CONST uint SPEC_COUNT = 23;
+VKRT_CONST uint SPEC_UNIFORM_INDEX_FROM_GROUPS = 23;  // lavapipe's recompile workaround (bindings.glsl); set per device
+VKRT_CONST uint SPEC_COUNT = 24;
 
 // Entries of the kernel's BVH traversal stack. The host refuses a BVH whose top-level depth plus
 // deepest bottom-level depth exceeds it, so the stack can never overflow at run time.

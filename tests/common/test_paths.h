@@ -26,13 +26,14 @@ inline bool sharedRequired() {
     const char* v = std::getenv("VKRT_REQUIRE_SHARED");
     return v != nullptr && std::string(v) == "1";
 }
-// ../shared beside the repository, or $VKRT_SHARED when set.
+// $VKRT_SHARED when set, else ../shared beside sourceDir().
 std::string sharedDir();
 // ../shared/scenes/upstream
 std::string upstreamDir();
 // ../shared/scenes/json: the course's JSON scenes (SOURCES.md there)
 std::string jsonSceneDir();
-// The repository root (for scenes/ and shaders/).
+// The repository root, or a bundle's root (for scenes/ and shaders/): $VKRT_SOURCE_DIR when set,
+// else the nearest folder above the test binary that holds shaders/render.comp and scenes/.
 std::string sourceDir();
 // A scratch directory for test outputs (created on demand; kept after a failure as an artefact).
 std::string artifactDir();

@@ -44,6 +44,9 @@ TEST(SampleBatching, KFitsTheLoopBudget) {
     EXPECT_EQ(samplesPerDispatch(1, 5), 5u);  // never more than the pixel's samples
     EXPECT_EQ(samplesPerDispatch(perK * 100, 64, 6), 6u);  // forced (tests)
     EXPECT_EQ(samplesPerDispatch(1, 4, 6), 4u);
+    // Without lavapipe's group-wide limiter (lockstep factor 1) a sample may cost 8x more.
+    EXPECT_EQ(samplesPerDispatch(perK * 8 / 5, 64, 0, 1), 5u);
+    EXPECT_EQ(samplesPerDispatch(perK * 8 / 5, 64), 1u);
 }
 
 TEST(SampleBatching, TheBoundKeepsHeavyScenesAtOneSample) {

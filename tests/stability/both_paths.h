@@ -29,6 +29,13 @@ BothImages renderBoth(const Scene& scene, const RenderOptions& options, Image* c
 // specialised kernel (without `feature`) does. Fatal on the first differing pixel.
 void expectGeneralKernelRendersItBitForBit(const Scene& scene, const RenderOptions& options, const std::string& feature);
 
+// GPU images of one scene from differently compiled kernel variants (samples per dispatch, the
+// specialisation, the Diffuse or estimator code compiled in or out). On lavapipe, where it is
+// measured, they are bit for bit alike; a GPU compiler may contract or reorder float operations
+// differently in each variant, so on other drivers the rule is the CPU/GPU agreement rule
+// (agrees()), and a failure there is a real difference, not an optimiser's rounding.
+void expectSameGpuImage(const Image& a, const Image& b, const std::string& what);
+
 // Small images, few samples: what every test here uses unless it studies the options themselves.
 RenderOptions smallOptions(int width, int height, int samplesPerPixel);
 

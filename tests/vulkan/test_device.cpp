@@ -55,6 +55,25 @@ TEST(DeviceChoice, CandidatesInOrderOfPreference) {
     EXPECT_THROW(deviceCandidates(devices, 2), std::invalid_argument);
 }
 
+// MPI ranks on a node (app.cpp's pickGpuByLocalRank): round robin over the devices of the best
+// type present, never Mesa's lavapipe beside a discrete GPU.
+TEST(DeviceChoice, MpiRanksGoToDevicesOfTheBestTypePresent) {
+    const std::vector<DeviceInfo> nvidiaAndLavapipe = {fakeDevice(0, "discrete", true), fakeDevice(1, "cpu", true)};
+    EXPECT_EQ(deviceForLocalRank(nvidiaAndLavapipe, 0), 0);
+    EXPECT_EQ(deviceForLocalRank(nvidiaAndLavapipe, 1), 0);
+    const std::vector<DeviceInfo> lavapipeFirst = {fakeDevice(0, "cpu", true), fakeDevice(1, "discrete", true)};
+    EXPECT_EQ(deviceForLocalRank(lavapipeFirst, 0), 1);
+    EXPECT_EQ(deviceForLocalRank(lavapipeFirst, 1), 1);
+    const std::vector<DeviceInfo> twoGpus = {fakeDevice(0, "cpu", true), fakeDevice(1, "discrete", true),
+                                             fakeDevice(2, "integrated", true), fakeDevice(3, "discrete", true),
+                                             fakeDevice(4, "discrete", false)};
+    EXPECT_EQ(deviceForLocalRank(twoGpus, 0), 1);
+    EXPECT_EQ(deviceForLocalRank(twoGpus, 1), 3);
+    EXPECT_EQ(deviceForLocalRank(twoGpus, 2), 1);
+    EXPECT_EQ(deviceForLocalRank({fakeDevice(0, "cpu", true)}, 3), 0);  // lavapipe alone: every rank on it
+    EXPECT_EQ(deviceForLocalRank({fakeDevice(0, "discrete", false)}, 0), -1);
+}
+
 // What the CLI falls back to the CPU on: a loader that finds no driver.
 TEST(Context, NoDriverIsVulkanUnavailable) {
     ::setenv("VK_DRIVER_FILES", "/nonexistent/vkrt_icd.json", 1);

@@ -14,9 +14,9 @@ namespace {
 using test::TinyScene;
 using test::VulkanTest;
 
-std::string failure(const gpu::RenderStatus& status, std::uint32_t width) {
+std::string failure(const gpu::RenderStatus& status, std::uint32_t width, bool loopLimiter = true) {
     try {
-        throwIfKernelFailed(status, width);
+        throwIfKernelFailed(status, width, loopLimiter);
     } catch (const GpuKernelError& e) {
         return e.what();
     }
@@ -24,7 +24,7 @@ std::string failure(const gpu::RenderStatus& status, std::uint32_t width) {
 }
 
 TEST(RenderStatus, CleanStatusPasses) {
-    EXPECT_NO_THROW(throwIfKernelFailed(gpu::RenderStatus{glm::uvec4(0u, 0u, 0u, 12u)}, 100));  // NaN count alone is no failure
+    EXPECT_NO_THROW(throwIfKernelFailed(gpu::RenderStatus{glm::uvec4(0u, 0u, 0u, 12u)}, 100, true));  // NaN count alone is no failure
 }
 
 TEST(RenderStatus, LoopBudgetNamesPixelSampleAndRemedy) {
@@ -42,6 +42,18 @@ TEST(RenderStatus, LoopCutOffNamesTheLimiterAndTheWayOut) {
     EXPECT_NE(m.find("65,535"), std::string::npos) << m;
     EXPECT_NE(m.find("--device cpu"), std::string::npos) << m;
     EXPECT_EQ(m.find("unknown status"), std::string::npos) << m;
+}
+
+// On a driver without lavapipe's limiter the same flags must not blame lavapipe.
+TEST(RenderStatus, OtherDriversAreNotToldAboutLavapipe) {
+    const std::string cut = failure({glm::uvec4(gpu::STATUS_LOOP_CUT_OFF, 2u * 64u + 5u + 1u, 0u, 0u)}, 64, false);
+    EXPECT_NE(cut.find("pixel (5, 2), sample 0"), std::string::npos) << cut;
+    EXPECT_NE(cut.find("not known to do"), std::string::npos) << cut;
+    EXPECT_EQ(cut.find("this driver ends loops silently"), std::string::npos) << cut;
+    const std::string budget = failure({glm::uvec4(gpu::STATUS_LOOP_BUDGET_EXCEEDED, 1u, 0u, 0u)}, 64, false);
+    EXPECT_NE(budget.find(std::to_string(gpu::LOOP_BUDGET)), std::string::npos) << budget;
+    EXPECT_NE(budget.find("instead of a hang"), std::string::npos) << budget;
+    EXPECT_EQ(budget.find("lavapipe"), std::string::npos) << budget;
 }
 
 TEST(RenderStatus, StackOverflowWithoutARecordedPixel) {

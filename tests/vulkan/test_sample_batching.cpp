@@ -35,12 +35,12 @@ TEST_F(VulkanTest, SamplesPerDispatchDoNotChangeTheImage) {
         const Image image = gpu.render(tiny.gpu(), options, &stats, batched);
         EXPECT_EQ(stats.samplesPerDispatch, k);
         EXPECT_EQ(stats.dispatches, (10 + k - 1) / k);
-        EXPECT_EQ(image.pixels, reference.pixels) << "k = " << k;
+        test::expectSameGpuImage(gpu, image, reference, "k = " + std::to_string(k));
     }
     // Left to the bound, this cheap scene takes the largest k (10 samples: 8 + 2).
     const Image automatic = gpu.render(tiny.gpu(), options, &stats);
     EXPECT_EQ(stats.samplesPerDispatch, kMaxSamplesPerDispatch);
-    EXPECT_EQ(automatic.pixels, reference.pixels);
+    test::expectSameGpuImage(gpu, automatic, reference, "k chosen by the bound");
 }
 
 // A failure inside a pass of several samples names the sample it happened at (status_probe.comp

@@ -17,8 +17,8 @@ namespace {
 namespace fs = std::filesystem;
 using test::VulkanTest;
 
-const fs::path kKernels = VKRT_TEST_KERNEL_DIR;
-const fs::path kShaders = VKRT_SHADERS_DIR;
+const fs::path kKernels = fs::path(test::sourceDir()) / "tests" / "vulkan" / "kernels";
+const fs::path kShaders = fs::path(test::sourceDir()) / "shaders";
 
 // A scratch shader directory, removed afterwards.
 class ShaderDir {

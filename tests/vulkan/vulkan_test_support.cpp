@@ -1,5 +1,7 @@
 #include "vulkan_test_support.h"
 
+#include "image_compare.h"
+
 #include <stdexcept>
 
 namespace vkrt::test {
@@ -41,6 +43,17 @@ void VulkanTest::TearDown() {
         ASSERT_NE(log, nullptr);
         EXPECT_EQ(log->count(), 0u) << "validation messages:\n" << log->joined();
     }
+}
+
+void expectSameGpuImage(const GpuRenderer& gpu, const Image& a, const Image& b, const std::string& what) {
+    ASSERT_EQ(a.pixels.size(), b.pixels.size()) << what;
+    if (gpu.deviceInfo().lavapipe) {
+        EXPECT_EQ(a.pixels, b.pixels) << what;
+        return;
+    }
+    const ImageDifference d = compareImages(a, b);
+    EXPECT_LE(d.fractionOver2, 0.005) << what << " on " << gpu.deviceName();
+    EXPECT_LE(d.meanAbs, 0.5 / 255.0) << what << " on " << gpu.deviceName();
 }
 
 }  // namespace vkrt::test

@@ -38,4 +38,10 @@ private:
     std::vector<std::shared_ptr<const ValidationLog>> logs_;
 };
 
+// Two GPU images of one scene from differently compiled kernel variants (samples per dispatch,
+// specialisation): bit for bit on lavapipe, where it is measured; on other drivers, whose compilers
+// may round each variant differently, the project's CPU/GPU agreement rule (>= 99.5% of pixels
+// within 2/255, mean difference <= 0.5/255), so a failure there is a real difference.
+void expectSameGpuImage(const GpuRenderer& gpu, const Image& a, const Image& b, const std::string& what);
+
 }  // namespace vkrt::test

@@ -21,6 +21,9 @@ inline glm::vec3 normalised(const glm::vec3& v) { return v * (1.0f / std::sqrt(g
 struct PeerCamera {
     glm::vec3 centre, eye, fwd, right, up, light;
     float radius;
+    // The image plane's half extent at distance 1: the peer's 0.8, or 0.8 / zoom (`vkrt-bench gpu
+    // rays --zoom`, so that a mesh fills the frame: at 0.8 ~90% of the dragon's rays miss).
+    float halfExtent = 0.8f;
     explicit PeerCamera(const BenchMesh& m);
 };
 
@@ -35,7 +38,7 @@ void forEachPrimaryRay(const PeerCamera& cam, int w, int h, int spp, int y, F&& 
             const std::size_t k = (static_cast<std::size_t>(y) * w + x) * spp + s;
             const float px = (x + u(rng)) / w * 2 - 1;
             const float py = 1 - (y + u(rng)) / h * 2;
-            const glm::vec3 d = normalised(cam.fwd + cam.right * (px * 0.8f) + cam.up * (py * 0.8f));
+            const glm::vec3 d = normalised(cam.fwd + cam.right * (px * cam.halfExtent) + cam.up * (py * cam.halfExtent));
             f(k, bvh::Ray{cam.eye, d, 1e30f});
         }
 }
