@@ -14,8 +14,8 @@
 #     --archive  also OUT.tar.gz beside OUT (what a device call carries: under its 64 MiB)
 #
 # Run a bundled binary through its wrapper: OUT/vkrt scene.xml ..., OUT/vkrt-bench gpu rays ...,
-# OUT/gpu_check.sh. The machine needs an x86-64-v3 processor (CMakeLists.txt VKRT_ARCH), glibc as
-# new as this one's (Debian 12: 2.36) and its GPU's Vulkan driver (an ICD manifest); the loader
+# OUT/gpu_check.sh. The machine needs an x86-64-v3 processor (CMakeLists.txt VKRT_ARCH), glibc and
+# libstdc++ as new as this one's (Debian 12: glibc 2.36, GCC 12) and its GPU's Vulkan driver (an ICD manifest); the loader
 # comes from the bundle, so a machine with the driver but no libvulkan.so.1 runs it.
 set -euo pipefail
 out=${1:?usage: tools/bundle.sh OUT [BUILD] [--tests] [--no-oiio] [--archive]}
@@ -56,9 +56,10 @@ if [ "$tests" = 1 ]; then
 fi
 cp "$root/tools/gpu_check.sh" "$out/gpu_check.sh"
 
-# Every library the binaries and modules resolve to, except the C runtime (it must be the
-# machine's own, with its dynamic linker).
-skip='^(linux-vdso|ld-linux|libc\.so|libm\.so|libdl\.so|libpthread\.so|librt\.so)'
+# Every library the binaries and modules resolve to, except the C and C++ runtimes: the machine's
+# own, with its dynamic linker; and its GPU driver, loaded into the same process, may need a newer
+# libstdc++ than this machine's (GCC 12's), which an older one first on the path would refuse.
+skip='^(linux-vdso|ld-linux|libc\.so|libm\.so|libdl\.so|libpthread\.so|librt\.so|libstdc\+\+\.so|libgcc_s\.so)'
 for f in "${binaries[@]}" "${modules[@]}"; do
   ldd "$f" | awk '$2 == "=>" && $3 ~ /^\// {print $3}'
 done | sort -u | while read -r lib; do
