@@ -102,7 +102,11 @@ struct BinMapper {
             const float* lo = reinterpret_cast<const float*>(&r.lo);
             const float* hi = reinterpret_cast<const float*>(&r.hi);
             const float f = ((lo[axis] + hi[axis]) - origin) * scale;
-            return static_cast<int>(std::min(std::max(f, 0.0f), last));
+            // binOf's clamp, operand for operand (maxps/minps return the second operand when the
+            // first is NaN): a NaN from bounds whose lo + hi overflows (inf - inf, inf * 0) goes to
+            // bin 0 in both paths, never to a cast of NaN (issue 38: a bin index of -2^31).
+            const float atLeast0 = f > 0.0f ? f : 0.0f;
+            return static_cast<int>(atLeast0 < last ? atLeast0 : last);
         }
     };
     Axis axis(int a) const { return {lane(origin, a), lane(scale, a), static_cast<float>(bins - 1), a}; }
