@@ -26,7 +26,8 @@ CameraRay cameraRay(uint i, uint j, vec2 subPixel, vec2 lensSample) {
             vec2 disk = concentricDisk(lensSample) * frameLensRadius();
             vec3 offset = disk.x * u + disk.y * v;
             r.origin = r.origin + offset;
-            r.dir = normalize(-frameFocusDistance() * w - offset);
+            float d = frameFocusDistance();
+            r.dir = d >= 1.0 ? normalize(-w - offset / d) : normalize(-d * w - offset);
         }
     } else {
         vec3 q = -frameFocalLength() * w + a * u + b * v;
@@ -36,7 +37,8 @@ CameraRay cameraRay(uint i, uint j, vec2 subPixel, vec2 lensSample) {
             vec2 disk = concentricDisk(lensSample) * frameLensRadius();
             vec3 offset = disk.x * u + disk.y * v;
             r.origin = frame.cameraPosition.xyz + offset;
-            r.dir = normalize(q * (frameFocusDistance() / frameFocalLength()) - offset);
+            float k = frameFocusDistance() / frameFocalLength();  // scaled as host/cpu/camera.cpp says why
+            r.dir = k >= 1.0 ? normalize(q - offset / k) : normalize(q * k - offset);
         }
     }
     return r;

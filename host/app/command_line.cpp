@@ -1,5 +1,7 @@
 #include "command_line.h"
 
+#include <cfloat>
+
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -34,6 +36,20 @@ glm::vec3 parseColour(const std::string& text) {
 }
 
 // The options every command shares (what the image is, which GPU, how to run).
+// A number a float holds: a scene file refuses 1e39 for a lens, so the command line does too
+// (CLI11 would read it as inf).
+const CLI::Validator kFiniteFloat(
+    [](std::string& text) -> std::string {
+        try {
+            const double v = std::stod(text);
+            if (std::isfinite(v) && std::fabs(v) <= FLT_MAX) return "";
+        } catch (const std::exception&) {
+            return "";  // not a number: the option's own conversion says so
+        }
+        return "'" + text + "' is beyond what a float holds (3.4e38)";
+    },
+    "FINITE");
+
 void addImageOptions(CLI::App& app, CommandLine& cl, std::string& bg) {
     app.add_option("scene", cl.scenePath, "Scene file: .xml or .json (the UMD course's formats)");
     app.add_option("-i,--input,--inputfile", cl.scenePath, "Scene file (the course's spelling)");
@@ -157,10 +173,12 @@ void addCourseOptions(CLI::App& app, CommandLine& cl, CourseText& course) {
     app.add_option("-d,--depth,--focus-distance", cl.focusDistance,
                    "Depth of field: the distance along the view direction that is in focus (the course's -d; 0 = "
                    "pinhole). Overrides the camera's focusDistance; needs an aperture (--aperture or the scene's)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(CLI::NonNegativeNumber)
+        ->check(kFiniteFloat);
     app.add_option("--aperture", cl.aperture,
                    "Depth of field: the lens diameter in scene units (0 = pinhole). Overrides the camera's aperture")
-        ->check(CLI::NonNegativeNumber);
+        ->check(CLI::NonNegativeNumber)
+        ->check(kFiniteFloat);
     app.add_option("-s,--split", course.split,
                    "The course's BVH split method: accepted and ignored, vkrt always builds binned-SAH BVHs (docs/BVH.md)");
     app.add_option("-x,--winwidth", course.windowWidth,

@@ -41,7 +41,11 @@ bvh::Ray cameraRay(const CameraFrame& f, int i, int j, glm::vec2 sample, glm::ve
             const glm::vec2 disk = sampling::concentricDisk(lensSample) * f.lensRadius;
             const glm::vec3 offset = disk.x * f.u + disk.y * f.v;
             ray.origin = f.eye + offset;
-            ray.dir = glm::normalize(q * (f.focusDistance / f.focalLength) - offset);
+            // Scaled down to the larger of q and the offset before normalising: q * (D / f) at
+            // D = 1e20 has a squared length past float's range, and normalize() gave a zero
+            // direction (a background image). Either form is a positive multiple of the same vector.
+            const float k = f.focusDistance / f.focalLength;
+            ray.dir = k >= 1.0f ? glm::normalize(q - offset / k) : glm::normalize(q * k - offset);
         }
     } else {
         ray.origin = f.eye + a * f.u + b * f.v;
@@ -50,7 +54,8 @@ bvh::Ray cameraRay(const CameraFrame& f, int i, int j, glm::vec2 sample, glm::ve
             const glm::vec2 disk = sampling::concentricDisk(lensSample) * f.lensRadius;
             const glm::vec3 offset = disk.x * f.u + disk.y * f.v;
             ray.origin = ray.origin + offset;
-            ray.dir = glm::normalize(-f.focusDistance * f.w - offset);
+            const float d = f.focusDistance;
+            ray.dir = d >= 1.0f ? glm::normalize(-f.w - offset / d) : glm::normalize(-d * f.w - offset);
         }
     }
     return ray;

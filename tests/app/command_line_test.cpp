@@ -142,6 +142,10 @@ TEST(CourseCommandLine, DepthOfFieldTakesTheFocusDistanceAndAperture) {
     EXPECT_FALSE(none.aperture.has_value());
     EXPECT_NE(parseRefused({"s.xml", "-d", "-1"}), "");
     EXPECT_NE(parseRefused({"s.xml", "--aperture", "-0.5"}), "");
+    // Issue 38: beyond float, as a scene file's <aperture> refuses it (it was read as inf).
+    EXPECT_NE(parseRefused({"s.xml", "--aperture", "1e39"}).find("beyond what a float holds"), std::string::npos);
+    EXPECT_NE(parseRefused({"s.xml", "-d", "1e300"}).find("beyond what a float holds"), std::string::npos);
+    EXPECT_EQ(parseOk({"s.xml", "-d", "1e30", "--aperture", "3e38"}).aperture, 3e38f);
     EXPECT_NE(parseRefused({"s.xml", "-d"}), "");  // a value is required
     EXPECT_NE(describeSettings(cl).find("focus distance: 5\naperture: 0.25"), std::string::npos) << describeSettings(cl);
 }

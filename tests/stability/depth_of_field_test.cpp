@@ -103,6 +103,32 @@ double discDiameter(const Image& image, double expectedDiameter) {
     return 2.0 * std::sqrt(energy / plateau / 3.14159265358979);
 }
 
+// Issue 38: a focus distance of 1e20 or more overflowed the lens ray's squared length, and both
+// devices rendered background only. Focused that far, a lens 0.001 wide blurs a sphere 5 away by
+// A * 128 / d = 0.03 px: the image is the pinhole's, within the agreement rule, on both devices,
+// perspective and orthographic.
+TEST(DepthOfField, AFocusDistanceAtTheEndOfFloatIsNotABackgroundImage) {
+    const RenderOptions options = smallOptions(32, 32, 4);
+    for (const bool orthographic : {false, true}) {
+        Scene pinholeScene = sphereOffFocus(5.0f, 0.0f, 0.0f, 1.0f);
+        if (orthographic) {
+            pinholeScene.cameras[0].type = CameraType::Orthographic;
+            pinholeScene.cameras[0].imagePlaneWidth = 3.0f;
+        }
+        const BothImages pinhole = renderBoth(pinholeScene, options);
+        ASSERT_GT(distance(pinhole.cpu, Image(32, 32)).maxSteps, 100) << "the sphere is in view";
+        for (const float D : {1e19f, 1e20f, 1e30f, 3e38f}) {
+            SCOPED_TRACE(std::string(orthographic ? "orthographic" : "perspective") + ", focus distance " + std::to_string(D));
+            Scene far = pinholeScene;
+            far.cameras[0].focusDistance = D;
+            far.cameras[0].aperture = 1e-3f;
+            const BothImages lens = renderBoth(far, options);
+            EXPECT_TRUE(agrees(distance(lens.cpu, pinhole.cpu))) << distance(lens.cpu, pinhole.cpu).describe();
+            EXPECT_TRUE(agrees(distance(lens.gpu, pinhole.gpu))) << distance(lens.gpu, pinhole.gpu).describe();
+        }
+    }
+}
+
 TEST(DepthOfField, APointOffTheFocusPlaneBlursIntoTheCircleOfConfusion) {
     // 64 px over an image plane 0.5 wide at focal length 1: a pixel at distance z spans z / 128.
     // Circle of confusion A |d - D| / d at the focus plane, in pixels: A |d - D| / d * 128 / D.
