@@ -1,6 +1,8 @@
 // A linear float RGB image, the common result of both renderers.
 #pragma once
 
+#include <cstddef>
+
 #include <cstdint>
 #include <map>
 #include <string>
@@ -44,8 +46,13 @@ std::vector<std::uint8_t> encodePng(const Image& image);
 // so a long render is not thrown away for a typo in -o.
 void checkImageOutputPath(const std::string& path);
 
-// Reads any format OpenImageIO knows; 8-bit files come back as value/255.
-Image readImage(const std::string& path, ImageAttributes* attributes = nullptr);
+// Images readImage refuses from their header, before allocating: 2^28 pixels (16384 x 16384),
+// 3 GiB as float RGB. A 69-byte PNG may claim 40000 x 40000.
+inline constexpr std::size_t kMaxReadPixels = std::size_t(1) << 28;
+
+// Reads any format OpenImageIO knows; 8-bit files come back as value/255. Throws
+// std::runtime_error naming the file when it cannot be read or claims more than maxPixels.
+Image readImage(const std::string& path, ImageAttributes* attributes = nullptr, std::size_t maxPixels = kMaxReadPixels);
 
 // The number of pixels with a NaN or infinite channel.
 std::size_t countNonFinite(const Image& image);

@@ -80,12 +80,15 @@ void writeImage(const Image& image, const std::string& path, const ImageAttribut
     writeAtomically(path, [&](const std::string& temporary) { writeImageFile(image, path, temporary, attributes); });
 }
 
-Image readImage(const std::string& path, ImageAttributes* attributes) {
+Image readImage(const std::string& path, ImageAttributes* attributes, std::size_t maxPixels) {
     oiio::Pixels data;
     std::string detail;
-    switch (oiioCodec().readFloats(path, data, detail)) {
+    switch (oiioCodec().readFloats(path, maxPixels, data, detail)) {
         case oiio::ReadResult::Ok: break;
         case oiio::ReadResult::Empty: throw std::runtime_error(path + ": the image has no pixels");
+        case oiio::ReadResult::TooLarge:
+            throw std::runtime_error(path + ": the image claims " + std::to_string(data.width) + "x" + std::to_string(data.height) +
+                                     " pixels, more than the " + std::to_string(maxPixels) + " vkrt reads");
         case oiio::ReadResult::CannotDecode: throw std::runtime_error(path + ": read failed: " + detail);
         default: throw std::runtime_error(path + ": cannot read image: " + detail);
     }

@@ -37,13 +37,14 @@ ReadResult readBytes(const std::string& path, std::size_t maxTexels, Pixels& out
     return ReadResult::Ok;
 }
 
-ReadResult readFloats(const std::string& path, Pixels& out, std::string& detail) {
+ReadResult readFloats(const std::string& path, std::size_t maxTexels, Pixels& out, std::string& detail) {
     std::unique_ptr<OIIO::ImageInput> input;
     if (const ReadResult r = open(path, false, input, detail); r != ReadResult::Ok) return r;
     const OIIO::ImageSpec& spec = input->spec();
     out.width = spec.width;
     out.height = spec.height;
     out.channels = spec.nchannels;
+    if (static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) > maxTexels) return ReadResult::TooLarge;
     for (const OIIO::ParamValue& p : spec.extra_attribs)
         if (p.name().string().rfind("vkrt:", 0) == 0 && p.type() == OIIO::TypeDesc::STRING)
             out.attributes.emplace_back(p.name().string(), p.get_string());

@@ -16,7 +16,7 @@
 namespace vkrt::oiio {
 
 // Bump when the table changes: the loader refuses a module of another version.
-inline constexpr int kCodecVersion = 2;
+inline constexpr int kCodecVersion = 3;
 
 struct Pixels {
     int width = 0, height = 0, channels = 0;
@@ -34,8 +34,9 @@ struct Codec {
     // 8-bit values as stored (alpha not premultiplied), every channel; the size is checked against
     // maxTexels from the header, before anything is allocated. `detail`: the library's message.
     ReadResult (*readBytes)(const std::string& path, std::size_t maxTexels, Pixels& out, std::string& detail);
-    // Float values, every channel (8-bit files as value / 255).
-    ReadResult (*readFloats)(const std::string& path, Pixels& out, std::string& detail);
+    // Float values, every channel (8-bit files as value / 255); the size checked against maxTexels
+    // from the header, as readBytes does.
+    ReadResult (*readFloats)(const std::string& path, std::size_t maxTexels, Pixels& out, std::string& detail);
     // Writes RGB `pixels` (floats when isFloat, else bytes) to `target` in the format named by
     // `formatPath`'s extension; false with `detail` on failure.
     bool (*write)(const std::string& formatPath, const std::string& target, const Pixels& pixels, bool isFloat,

@@ -1,0 +1,116 @@
+// vkrt merge against forged and broken parts (issue 38, item 2): each is refused with a message
+// that names the file and what is wrong, quickly and without allocating what the file claims.
+// The honest round trip (parts merge into the whole image's bytes) is tests/app/parts_and_merge.py.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "image.h"
+#include "image_parts.h"
+
+namespace vkrt {
+namespace {
+
+std::string scratch(const std::string& name) {
+    const std::filesystem::path dir = std::filesystem::current_path() / "test_artifacts" / "merge_parts";
+    std::filesystem::create_directories(dir);
+    return (dir / name).string();
+}
+
+const std::string kRender = "scene s.xml; 8x6; rpp 1; device cpu";
+
+// An EXR part of an 8x6 render with the attributes given (vkrt --part writes these three).
+std::string writePart(const std::string& name, const ImageAttributes& attributes, float value = 0.5f) {
+    Image image(8, 6);
+    for (glm::vec3& p : image.pixels) p = glm::vec3(value);
+    const std::string path = scratch(name);
+    writeImage(image, path, attributes);
+    return path;
+}
+
+std::string mergeError(const std::vector<std::string>& paths) {
+    try {
+        mergeParts(paths);
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(MergeRefuses, APartClaimingMorePartsThanRowsAtOnce) {
+    const std::string forged = writePart("forged.exr", {{"vkrt:part", "1/2000000000"}, {"vkrt:rows", "0 0"}, {"vkrt:render", kRender}});
+    const auto start = std::chrono::steady_clock::now();
+    const std::string error = mergeError({forged});
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+    EXPECT_NE(error.find("1/2000000000 of a 6-row image"), std::string::npos) << error;
+}
+
+TEST(MergeRefuses, AShortListOfMissingParts) {
+    const std::string first = writePart("first.exr", {{"vkrt:part", "1/6"}, {"vkrt:rows", "0 1"}, {"vkrt:render", kRender}});
+    const std::string error = mergeError({first});
+    EXPECT_NE(error.find("part(s) 2, 3, 4, 5, 6 of 6 missing"), std::string::npos) << error;
+    // 30 parts of a 30-row image, one given: the first 20 missing are named, the rest counted.
+    Image tall(2, 30);
+    const std::string one = scratch("one_of_30.exr");
+    writeImage(tall, one, {{"vkrt:part", "1/30"}, {"vkrt:rows", "0 1"}, {"vkrt:render", kRender}});
+    const std::string cut = mergeError({one});
+    EXPECT_NE(cut.find("part(s) 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21 and 9 more of 30 missing"),
+              std::string::npos) << cut;
+}
+
+TEST(MergeRefuses, APartWithoutItsRenderAttributeNamingIt) {
+    const std::string part = writePart("no_render.exr", {{"vkrt:part", "1/1"}, {"vkrt:rows", "0 6"}});
+    const std::string error = mergeError({part});
+    EXPECT_NE(error.find("no_render.exr: not a part of a render (no vkrt:render"), std::string::npos) << error;
+    EXPECT_EQ(error.find("map::at"), std::string::npos) << error;
+}
+
+TEST(MergeRefuses, NanPixels) {
+    const std::string part = writePart("nan.exr", {{"vkrt:part", "1/1"}, {"vkrt:rows", "0 6"}, {"vkrt:render", kRender}}, NAN);
+    const std::string error = mergeError({part});
+    EXPECT_NE(error.find("nan.exr: 48 pixel(s) are NaN or Inf"), std::string::npos) << error;
+    const std::string fine = writePart("fine.exr", {{"vkrt:part", "1/1"}, {"vkrt:rows", "0 6"}, {"vkrt:render", kRender}});
+    EXPECT_EQ(mergeParts({fine}).at(3, 2), glm::vec3(0.5f));  // the same file, finite: merged
+}
+
+TEST(MergeRefuses, FilesThatAreNotExrBeforeDecodingThem) {
+    // A PNG header claiming 40000 x 40000 pixels (IHDR patched; the file is 69 bytes long).
+    const std::string small = scratch("tiny.png");
+    writeImage(Image(1, 1), small);
+    std::string bytes;
+    {
+        std::ifstream in(small, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    ASSERT_GT(bytes.size(), 24u);
+    const unsigned char claim[8] = {0, 0, 0x9c, 0x40, 0, 0, 0x9c, 0x40};  // 40000, 40000 big-endian at offset 16
+    for (int i = 0; i < 8; ++i) bytes[16 + i] = static_cast<char>(claim[i]);
+    const std::string bomb = scratch("bomb.png");
+    std::ofstream(bomb, std::ios::binary) << bytes;
+    EXPECT_NE(mergeError({bomb}).find("bomb.png: not an OpenEXR file"), std::string::npos) << mergeError({bomb});
+    // A device that never ends, and a folder: refused before anything is read.
+    EXPECT_NE(mergeError({"/dev/zero"}).find("/dev/zero: not a regular file"), std::string::npos) << mergeError({"/dev/zero"});
+    EXPECT_NE(mergeError({scratch("")}).find("not a regular file"), std::string::npos);
+}
+
+// The same header check guards every image read: a file that claims more pixels than
+// kMaxReadPixels is refused from its header, naming its size.
+TEST(ReadImage, RefusesAClaimedSizeBeyondTheCapBeforeAllocating) {
+    const std::string path = writePart("capped.exr", {});
+    try {
+        readImage(path, nullptr, 47);  // 8 x 6 = 48 pixels
+        FAIL() << "read past the cap";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("claims 8x6 pixels, more than the 47"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(readImage(path, nullptr, 48).width, 8);
+}
+
+}  // namespace
+}  // namespace vkrt
