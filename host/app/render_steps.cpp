@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <stdexcept>
 #include <string>
@@ -13,12 +14,22 @@
 #include "cpu_renderer.h"
 #include "interrupt.h"
 #include "output_file.h"
+#include "scene_inputs.h"
 #include "scene_loader.h"
 
 namespace vkrt {
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void checkNotASceneInput(const std::string& output, const Scene& scene) {
+    for (const SceneInput& input : sceneInputs(scene)) {
+        std::error_code ec;
+        if (std::filesystem::equivalent(output, input.path, ec))
+            throw std::runtime_error(output + ": is " + input.kind + " that " + scene.path + " reads (" + input.path.string() +
+                                     "); choose another output name (-o)");
+    }
 }
 
 // Loads the scene, prints its warnings, and settles which camera renders.
@@ -29,6 +40,9 @@ Scene loadWithWarnings(CommandLine& cl) {
         return loadScene(cl.scenePath, LoadOptions{cl.strict, /*localOrigin=*/true}, diagnostics);
     }();
     for (const std::string& line : diagnostics.messages()) std::cerr << "warning: " << line << "\n";
+    // An image written over a file the scene reads would destroy the scene's own input.
+    for (const std::string& output : {cl.outputPath, cl.heatMapPath})
+        if (!output.empty()) checkNotASceneInput(output, scene);
     cl.render.camera = cl.camera.value_or(scene.defaultCamera);
     if (cl.render.camera >= static_cast<int>(scene.cameras.size()))
         throw std::invalid_argument("--camera " + std::to_string(cl.render.camera) + ": " + cl.scenePath + " has " +

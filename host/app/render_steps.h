@@ -20,6 +20,10 @@ double secondsSince(std::chrono::steady_clock::time_point start);
 // Loads the scene, prints its warnings, settles which camera renders and applies the command
 // line's lens (-d, --aperture) to it.
 Scene loadWithWarnings(CommandLine& cl);
+// Throws std::runtime_error when `output` is a file the loaded scene reads (its scene file, a
+// mesh, a texture, an environment map face: scene_inputs.h), naming which; loadWithWarnings calls it
+// for -o and compare's heat map.
+void checkNotASceneInput(const std::string& output, const Scene& scene);
 
 GpuRendererOptions gpuOptions(const CommandLine& cl);
 

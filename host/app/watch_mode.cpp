@@ -1,5 +1,7 @@
 #include "watch_mode.h"
 
+#include "scene_inputs.h"
+
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -34,14 +36,10 @@ constexpr std::chrono::milliseconds kQuiet{50};
 // The GLSL a --shader-dir kernel is compiled from: render.comp and what it includes.
 const std::set<std::string> kShaderExtensions{".comp", ".glsl", ".h"};
 
-// Every file the scene was read from: the scene, its meshes and textures, its environment map.
+// Every file the scene was read from (scene_inputs.h).
 std::vector<std::filesystem::path> inputFiles(const Scene& scene) {
-    std::vector<std::filesystem::path> files{scene.path};
-    for (const Mesh& mesh : scene.meshes) files.emplace_back(mesh.path);
-    for (const Texture& texture : scene.textures) files.emplace_back(texture.path);
-    for (const char* face : {"posX", "negX", "posY", "negY", "posZ", "negZ"})
-        if (!scene.envMapPrefix.empty()) files.emplace_back(scene.envMapPrefix + face + ".png");
-    if (!scene.envMapVertCross.empty()) files.emplace_back(scene.envMapVertCross);
+    std::vector<std::filesystem::path> files;
+    for (const SceneInput& input : sceneInputs(scene)) files.push_back(input.path);
     return files;
 }
 
