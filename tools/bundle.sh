@@ -18,6 +18,7 @@
 # libstdc++ as new as this one's (Debian 12: glibc 2.36, GCC 12) and its GPU's Vulkan driver (an ICD manifest); the loader
 # comes from the bundle, so a machine with the driver but no libvulkan.so.1 runs it.
 set -euo pipefail
+trap 'echo "bundle: failed at line $LINENO (exit $?)" >&2' ERR
 out=${1:?usage: tools/bundle.sh OUT [BUILD] [--tests] [--no-oiio] [--archive]}
 shift
 build=build
@@ -72,7 +73,8 @@ done
 # The validation layer: the GPU tests run with it (tests/agreement), as here, so that the first run
 # on a real driver reports synchronisation errors lavapipe's in-order execution hides.
 layer_json=/usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json
-layer_lib=$(ldconfig -p | awk '/libVkLayer_khronos_validation.so / {print $NF; exit}')
+# No early exit in awk: under pipefail, ldconfig killed by SIGPIPE would end the script silently.
+layer_lib=$(ldconfig -p | awk '/libVkLayer_khronos_validation.so / && !found {print $NF; found = 1}')
 if [ -f "$layer_json" ] && [ -n "$layer_lib" ]; then
   cp "$layer_json" "$out/share/vulkan/explicit_layer.d/"
   cp -L "$layer_lib" "$out/lib/"
