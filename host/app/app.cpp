@@ -18,6 +18,7 @@
 #include "cpu_renderer.h"
 #include "device_list.h"
 #include "gpu_renderer.h"
+#include "heat_map.h"
 #include "image_compare.h"
 #include "interrupt.h"
 #include "mpi_ranks.h"
@@ -37,12 +38,18 @@ namespace vkrt {
 namespace {
 
 constexpr int kExitFailure = 1;
-constexpr int kExitStatisticallyDifferent = 3;  // compare --stat: the z-test failed
+constexpr int kExitDifferent = 3;  // compare: the agreement rule or (--stat) the z-test failed
 constexpr int kExitInterrupted = 130;
 
 // compare writes its heat map only where -o asks, so that it never litters the working folder.
 void writeHeatMap(const Image& map, const std::string& path) {
-    if (!path.empty()) writeImage(map, path);
+    if (!path.empty()) writeImage(withDifferenceLegend(map), path);
+}
+
+// compare --keep: where the two renders go, beside the heat map (or in the working folder).
+std::string keptRenderPath(const CommandLine& cl, const char* device) {
+    const std::filesystem::path folder = std::filesystem::path(cl.heatMapPath).parent_path();
+    return (folder / (std::filesystem::path(cl.scenePath).stem().string() + "_" + device + ".png")).string();
 }
 std::string heatMapLine(const std::string& path) { return path.empty() ? "not written (-o FILE.png writes it)" : path; }
 
@@ -169,7 +176,7 @@ int runStatisticalCompare(CommandLine& cl) {
     std::printf("values passing   %.3f%% (needs >= 99.75%%)\n", 100.0 * z.passedFraction());
     std::printf("z map            %s\n", heatMapLine(cl.heatMapPath).c_str());
     std::printf("result           %s\n", z.pass ? "PASS: the images agree up to their noise" : "FAIL: the images differ");
-    return z.pass ? 0 : kExitStatisticallyDifferent;
+    return z.pass ? 0 : kExitDifferent;
 }
 
 int runSweep(CommandLine& cl, study::WorkSharing* sharing = nullptr) {
@@ -197,6 +204,11 @@ int runCompare(CommandLine& cl) {
     const DeviceRender onCpu = renderOnCpu(scene, cl.render);
     const ImageDifference diff = compareImages(onGpu.image, onCpu.image);
     writeHeatMap(diff.heatMap, cl.heatMapPath);
+    const bool agree = meetsAgreementRule(diff);
+    if (cl.keepRenders) {
+        writeImage(onGpu.image, keptRenderPath(cl, "gpu"));
+        writeImage(onCpu.image, keptRenderPath(cl, "cpu"));
+    }
     std::printf("scene            %s (%dx%d, %d rpp, seed %u)\n", cl.scenePath.c_str(), cl.render.width,
                 cl.render.height, cl.render.samplesPerPixel, cl.render.seed);
     std::printf("gpu              %s, prepare %.3f s, render %.3f s\n", onGpu.device.c_str(), onGpu.prepareSeconds,
@@ -209,7 +221,11 @@ int runCompare(CommandLine& cl) {
     std::printf("pixels > 2/255   %.3f%%\n", 100.0 * diff.fractionOver2);
     std::printf("psnr             %.2f dB\n", diff.psnr);
     std::printf("heat map         %s\n", heatMapLine(cl.heatMapPath).c_str());
-    return 0;
+    if (cl.keepRenders)
+        std::printf("renders          %s, %s\n", keptRenderPath(cl, "gpu").c_str(), keptRenderPath(cl, "cpu").c_str());
+    std::printf("result           %s\n", agree ? "PASS: the images meet the agreement rule (<= 0.5% of pixels over 2/255, mean <= 0.5/255)"
+                                               : "FAIL: the images differ beyond the agreement rule (<= 0.5% of pixels over 2/255, mean <= 0.5/255)");
+    return agree ? 0 : kExitDifferent;
 }
 
 int runConvert(const CommandLine& cl) {

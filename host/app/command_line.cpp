@@ -354,11 +354,16 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
     bool listDevices = false;
     if (compare) {
         app.add_option("-o,--output", cl.heatMapPath,
-                       "Difference heat map image (with --stat the z map); none is written without -o");
+                       "Difference heat map image with its legend in /255 (with --stat the z map); none is written "
+                       "without -o. Exit code 3 when the images fail the agreement rule (or --stat's z-test)");
         app.add_flag("--stat", cl.statistical,
                      "Statistical comparison: GPU (seed + 1, -r rpp) vs a CPU reference (seed, 16x the rpp, at least "
                      "256) by a per-pixel z-test against the CPU's sample variance (alpha 0.01, Sidak; pass when "
                      ">= 99.75% of values pass; exit code 3 on failure)");
+        app.add_flag("--keep", cl.keepRenders,
+                     "Also write both renders, SCENE_gpu.png and SCENE_cpu.png, beside the heat map (or in the "
+                     "working folder)")
+            ->excludes("--stat");
     } else if (!sweep) {
         app.add_option("-o,--output,--outputfile", cl.outputPath, "Output image: .png, .exr (linear float), .jpg or .ppm");
         app.add_option_function<std::string>(

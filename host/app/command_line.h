@@ -29,6 +29,7 @@ struct CommandLine {
     std::string heatMapPath;      // compare -o: difference heat map; empty: none written
     std::optional<int> camera;    // --camera; default: the scene's <sceneParameters><camera>, else the first
     bool statistical = false;     // compare --stat: z-test of GPU and CPU renders with different seeds
+    bool keepRenders = false;     // compare --keep: write both renders beside the heat map
     study::SweepOptions sweep;    // sweep: everything but the render options above (copied in by the parser)
     bool verbose = false;         // -v: print the settings before running (the course's verbose output)
     // Depth of field (-d/--focus-distance, --aperture): override the rendered camera's values.

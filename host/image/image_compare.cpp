@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "heat_map.h"
+
 namespace vkrt {
 
 void requireSameSize(const Image& a, const Image& b, const char* what) {
@@ -38,9 +40,7 @@ ImageDifference compareImages(const Image& a, const Image& b) {
         maxSteps = std::max(maxSteps, pixelMax);
         over1 += pixelMax > 1;
         over2 += pixelMax > 2;
-        // Heat map: 0 black, 1-2 steps dark red, growing to yellow at 16 steps and beyond.
-        const float s = std::min(pixelMax, 16) / 16.0f;
-        d.heatMap.pixels[i] = pixelMax == 0 ? glm::vec3(0.0f) : glm::vec3(0.25f + 0.75f * std::min(1.0f, 2 * s), std::max(0.0f, 2 * s - 1), 0.0f);
+        d.heatMap.pixels[i] = differenceColour(pixelMax);
     }
     d.maxAbs = maxSteps / 255.0;
     d.meanAbs = sumAbs / (3.0 * n) / 255.0;
@@ -50,5 +50,7 @@ ImageDifference compareImages(const Image& a, const Image& b) {
     d.psnr = mse == 0.0 ? std::numeric_limits<double>::infinity() : 10.0 * std::log10(255.0 * 255.0 / mse);
     return d;
 }
+
+bool meetsAgreementRule(const ImageDifference& d) { return d.fractionOver2 <= 0.005 && d.meanAbs <= 0.5 / 255.0; }
 
 }  // namespace vkrt

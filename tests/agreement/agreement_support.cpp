@@ -74,7 +74,7 @@ Agreement measureAgreement(const Scene& scene, const std::string& label, RenderO
     const DeviceImages images = renderBoth(scene, options, variant);
     Agreement a;
     a.diff = compareImages(images.cpu, images.gpu);
-    a.ok = a.diff.fractionOver2 <= 0.005 && a.diff.meanAbs <= 0.5 / 255.0;
+    a.ok = meetsAgreementRule(a.diff);
     const std::string name = label + (variant == KernelVariant::General ? "_general" : "");
     std::printf("[agreement] %-40s %dx%d %3d rpp: max %3.0f/255, mean %.4f/255, >2/255 %.3f%%, gpu %.2f s (%s)\n",
                 name.c_str(), options.width, options.height, options.samplesPerPixel, a.diff.maxAbs * 255.0,
