@@ -232,17 +232,14 @@ int runConvert(const CommandLine& cl) {
     Diagnostics diagnostics(cl.strict);
     const auto start = std::chrono::steady_clock::now();
     // The input's warnings are printed whether the conversion succeeds or not.
-    const auto printWarnings = [&] {
-        for (const std::string& line : diagnostics.messages()) std::cerr << "warning: " << line << "\n";
-    };
     Conversion conversion;
     try {
         conversion = convertScene(cl.scenePath, cl.outputPath, diagnostics, cl.render.cancel);
     } catch (...) {
-        printWarnings();
+        printWarnings(diagnostics, cl.render.quiet);
         throw;
     }
-    printWarnings();
+    printWarnings(diagnostics, cl.render.quiet);
     if (conversion.renamedShaders > 0)
         std::cerr << "note: " << conversion.renamedShaders
                   << " nameless shader(s) written as 'unnamed shader N' (a shader needs a name to be referred to there)\n";

@@ -92,7 +92,7 @@ void addImageOptions(CLI::App& app, CommandLine& cl, std::string& bg) {
                    "Compile the GLSL kernels from this directory at run time (edit and re-run, no rebuild)")
         ->check(CLI::ExistingDirectory);
     app.add_flag("--strict", cl.strict, "Treat scene warnings as errors");
-    app.add_flag("-q,--quiet", cl.render.quiet, "No progress bar or summary");
+    app.add_flag("-q,--quiet", cl.render.quiet, "No progress bar, summary or warnings (errors are always printed)");
 }
 
 void addRenderOptions(CLI::App& app, CommandLine& cl, std::string& bg, std::string& sampler, std::string& device) {
@@ -281,7 +281,7 @@ ParseResult parseConvert(std::vector<std::string> args) {
     app.add_option("-i,--input,--inputfile", cl.scenePath, "Scene file to read (the course's spelling)");
     app.add_option("-o,--output,--outputfile", cl.outputPath, "Scene file to write: .json or .xml")->required();
     app.add_flag("--strict", cl.strict, "Treat the input's warnings as errors");
-    app.add_flag("-q,--quiet", cl.render.quiet, "No summary line");
+    app.add_flag("-q,--quiet", cl.render.quiet, "No summary line or warnings (errors are always printed)");
     try {
         std::vector<std::string> reversed(args.rbegin(), args.rend());
         app.parse(reversed);

@@ -32,14 +32,26 @@ void checkNotASceneInput(const std::string& output, const Scene& scene) {
     }
 }
 
+void printWarnings(const Diagnostics& diagnostics, bool quiet) {
+    if (quiet) return;
+    for (const std::string& line : diagnostics.summary()) std::cerr << "warning: " << line << "\n";
+}
+
 // Loads the scene, prints its warnings, and settles which camera renders.
 Scene loadWithWarnings(CommandLine& cl) {
     Diagnostics diagnostics(cl.strict);
     Scene scene = [&] {
         const ExitAtOnceOnInterrupt scope;  // a large mesh or texture takes seconds to read
-        return loadScene(cl.scenePath, LoadOptions{cl.strict, /*localOrigin=*/true}, diagnostics);
+        try {
+            return loadScene(cl.scenePath, LoadOptions{cl.strict, /*localOrigin=*/true}, diagnostics);
+        } catch (...) {
+            // The warnings before the error may say why it happened (`tpye="point"`, then
+            // "missing required attribute type").
+            printWarnings(diagnostics, cl.render.quiet);
+            throw;
+        }
     }();
-    for (const std::string& line : diagnostics.messages()) std::cerr << "warning: " << line << "\n";
+    printWarnings(diagnostics, cl.render.quiet);
     // An image written over a file the scene reads would destroy the scene's own input.
     for (const std::string& output : {cl.outputPath, cl.heatMapPath})
         if (!output.empty()) checkNotASceneInput(output, scene);
@@ -51,9 +63,10 @@ Scene loadWithWarnings(CommandLine& cl) {
     Camera& camera = scene.cameras[cl.render.camera];
     if (cl.focusDistance) camera.focusDistance = *cl.focusDistance;
     if (cl.aperture) camera.aperture = *cl.aperture;
-    // Half a lens asked for on the command line is said; `--aperture 0` (the pinhole on purpose) is not.
+    // Half a lens asked for on the command line is said (a warning, so not under -q); `--aperture 0`
+    // (the pinhole on purpose) is not.
     const bool askedForLens = cl.focusDistance.value_or(0.0f) > 0.0f || cl.aperture.value_or(0.0f) > 0.0f;
-    if (askedForLens && (camera.focusDistance > 0.0f) != (camera.aperture > 0.0f))
+    if (!cl.render.quiet && askedForLens && (camera.focusDistance > 0.0f) != (camera.aperture > 0.0f))
         std::cerr << "warning: focus distance " << camera.focusDistance << ", aperture " << camera.aperture
                   << ": depth of field needs both above 0 (-d/--focus-distance and --aperture, or the camera's "
                      "focusDistance and aperture); rendering with a pinhole\n";

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "command_line.h"
+#include "diagnostics.h"
 #include "gpu_renderer.h"
 #include "image.h"
 #include "render_options.h"
@@ -16,6 +17,10 @@
 namespace vkrt {
 
 double secondsSince(std::chrono::steady_clock::time_point start);
+
+// The scene's warnings on stderr, one line per distinct one (Diagnostics::summary); none under -q.
+// Errors are never silenced, and under --strict a warning is an error that never reaches here.
+void printWarnings(const Diagnostics& diagnostics, bool quiet);
 
 // Loads the scene, prints its warnings, settles which camera renders and applies the command
 // line's lens (-d, --aperture) to it.

@@ -3,6 +3,7 @@
 #include <string_view>
 
 #include "local_origin.h"
+#include "name_suggestion.h"
 #include "scene_rules.h"
 #include "value_parsing.h"
 
@@ -18,7 +19,7 @@ Camera parseCamera(const ParseContext& context, pugi::xml_node node, glm::dvec3*
     const std::string_view type = node.attribute("type").value();
     if (!type.empty()) {
         const std::optional<CameraType> known = rules::cameraType(type);
-        if (!known) context.warn(node, rules::kUnknownCameraType, std::string(type));
+        if (!known) context.warn(node, rules::kUnknownCameraType, std::string(type), didYouMean(type, rules::cameraTypeNames()));
         camera.type = known.value_or(CameraType::Perspective);
     }
 

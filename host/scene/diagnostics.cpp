@@ -1,5 +1,9 @@
 #include "diagnostics.h"
 
+#include <algorithm>
+#include <cctype>
+#include <map>
+#include <tuple>
 #include <utility>
 
 namespace vkrt {
@@ -24,6 +28,36 @@ std::string oneLine(const std::string& value, std::size_t kMaxChars) {
     return flat;
 }
 
+// The kind of element a warning is about: a JSON path without its indices
+// ("scene.shape[3].radius" -> "scene.shape[].radius"); an XML element name as it is.
+std::string elementKind(const std::string& element) {
+    std::string kind;
+    bool inIndex = false;
+    for (char c : element) {
+        if (inIndex && std::isdigit(static_cast<unsigned char>(c))) continue;
+        inIndex = c == '[';
+        kind += c;
+    }
+    return kind;
+}
+
+// The warnings summary() folds into the first of their group.
+struct Group {
+    std::size_t first = 0;  // index into the warnings
+    int more = 0;
+    int lowestLine = 0, highestLine = 0;  // of the `more` (0: none has a line)
+};
+
+std::string moreLikeIt(const Group& group) {
+    std::string text = " (and " + std::to_string(group.more) + " more like it";
+    if (group.lowestLine > 0) {
+        text += group.lowestLine == group.highestLine ? ", line " + std::to_string(group.lowestLine)
+                                                      : ", lines " + std::to_string(group.lowestLine) + "-" +
+                                                            std::to_string(group.highestLine);
+    }
+    return text + ")";
+}
+
 }  // namespace
 
 std::string Issue::message() const {
@@ -31,6 +65,7 @@ std::string Issue::message() const {
     if (column > 0) text += ":" + std::to_string(column);
     text += ": " + element + ": " + oneLine(problem, std::string::npos);
     if (!value.empty()) text += " '" + oneLine(value, 240) + "'";
+    if (!hint.empty()) text += "; " + hint;
     return text;
 }
 
@@ -45,6 +80,31 @@ std::vector<std::string> Diagnostics::messages() const {
     std::vector<std::string> lines;
     lines.reserve(warnings_.size());
     for (const Issue& issue : warnings_) lines.push_back(issue.message());
+    return lines;
+}
+
+std::vector<std::string> Diagnostics::summary() const {
+    using Key = std::tuple<std::string, std::string, std::string, std::string>;  // file, kind, problem, hint
+    std::map<Key, std::size_t> groupOf;
+    std::vector<Group> groups;
+    for (std::size_t i = 0; i < warnings_.size(); ++i) {
+        const Issue& issue = warnings_[i];
+        const auto [found, added] = groupOf.emplace(Key{issue.file, elementKind(issue.element), issue.problem, issue.hint},
+                                                    groups.size());
+        if (added) {
+            groups.push_back(Group{i});
+            continue;
+        }
+        Group& group = groups[found->second];
+        ++group.more;
+        if (issue.line <= 0) continue;
+        group.lowestLine = group.lowestLine > 0 ? std::min(group.lowestLine, issue.line) : issue.line;
+        group.highestLine = std::max(group.highestLine, issue.line);
+    }
+    std::vector<std::string> lines;
+    lines.reserve(groups.size());
+    for (const Group& group : groups)
+        lines.push_back(warnings_[group.first].message() + (group.more > 0 ? moreLikeIt(group) : ""));
     return lines;
 }
 

@@ -9,9 +9,9 @@
 namespace vkrt {
 
 // One finding about one element of one file, rendered as
-//   "<file>:<line>: <element>: <problem> '<value>'"            (XML)
-//   "<file>:<line>:<column>: <path>: <problem> '<value>'"      (JSON: column > 0)
-// with the quoted value only when there is one.
+//   "<file>:<line>: <element>: <problem> '<value>'; <hint>"            (XML)
+//   "<file>:<line>:<column>: <path>: <problem> '<value>'; <hint>"      (JSON: column > 0)
+// with the quoted value and the hint only when there are.
 struct Issue {
     std::string file;
     int line = 0;          // 1-based; 0 when no line applies (e.g. the file cannot be opened)
@@ -20,6 +20,7 @@ struct Issue {
     std::string problem;
     std::string value;     // the offending text, quoted in the message when non-empty
     int column = 0;        // 1-based byte column (JSON); 0: the message names the line only
+    std::string hint{};    // what was probably meant ("did you mean 'sphere'?", name_suggestion.h)
 
     std::string message() const;
 };
@@ -45,6 +46,12 @@ public:
     bool strict() const { return strict_; }
     const std::vector<Issue>& warnings() const { return warnings_; }
     std::vector<std::string> messages() const;  // one "file:line: ..." line per warning
+    // One line per distinct warning, in the order they were first found: what vkrt prints. Warnings
+    // of one file with the same problem (and hint) at the same kind of element (a JSON path with its
+    // indices dropped) are one; the first keeps its place and value and says how many more like it
+    // there are and on which lines: "... (and 19 more like it, lines 12-80)". A course file that
+    // repeats one oddity 20 times then says so in one line, and a different problem still shows.
+    std::vector<std::string> summary() const;
 
 private:
     bool strict_;

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "local_origin.h"
+#include "name_suggestion.h"
 #include "number_text.h"
 
 namespace vkrt {
@@ -12,6 +13,16 @@ namespace {
 
 bool listed(const std::vector<std::string_view>& names, std::string_view name) {
     return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// Every spelling checkKeys accepts: the keys, and the attributes plain and underscored.
+std::vector<std::string> knownKeys(const std::vector<std::string_view>& allowed, const std::vector<std::string_view>& attributes) {
+    std::vector<std::string> keys(allowed.begin(), allowed.end());
+    for (std::string_view name : attributes) {
+        keys.emplace_back(name);
+        keys.push_back("_" + std::string(name));
+    }
+    return keys;
 }
 
 }  // namespace
@@ -37,12 +48,16 @@ void JsonContext::warn(Issue issue) const {
     diagnostics.warn(std::move(issue));
 }
 
-void JsonContext::warn(const JsonNode& node, std::string problem, std::string value) const {
-    warn(issueAt(node, std::move(problem), std::move(value)));
+void JsonContext::warn(const JsonNode& node, std::string problem, std::string value, std::string hint) const {
+    Issue issue = issueAt(node, std::move(problem), std::move(value));
+    issue.hint = std::move(hint);
+    warn(std::move(issue));
 }
 
-void JsonContext::warnAtKey(const JsonNode& node, std::string problem, std::string value) const {
-    warn(issueAtKey(node, std::move(problem), std::move(value)));
+void JsonContext::warnAtKey(const JsonNode& node, std::string problem, std::string value, std::string hint) const {
+    Issue issue = issueAtKey(node, std::move(problem), std::move(value));
+    issue.hint = std::move(hint);
+    warn(std::move(issue));
 }
 
 void JsonContext::fail(const JsonNode& node, std::string problem, std::string value) const {
@@ -81,7 +96,9 @@ void checkKeys(const JsonContext& context, const JsonNode& object, const std::ve
         const std::string_view name = key;
         const bool attribute = listed(attributes, name) || (name.size() > 1 && name[0] == '_' && listed(attributes, name.substr(1)));
         if (attribute || listed(allowed, name)) continue;
-        context.warnAtKey(member(object, key), "unknown key, ignored");
+        const std::vector<std::string> known = knownKeys(allowed, attributes);
+        context.warnAtKey(member(object, key), "unknown key, ignored", "",
+                          didYouMean(name, std::vector<std::string_view>(known.begin(), known.end())));
     }
 }
 

@@ -40,8 +40,9 @@ struct JsonContext {
     Issue issueAtOffset(std::ptrdiff_t offset, const std::string& path, std::string problem, std::string value = {}) const;
     Issue issueAt(const JsonNode& node, std::string problem, std::string value = {}) const;
     Issue issueAtKey(const JsonNode& node, std::string problem, std::string value = {}) const;
-    void warn(const JsonNode& node, std::string problem, std::string value = {}) const;
-    void warnAtKey(const JsonNode& node, std::string problem, std::string value = {}) const;
+    // `hint`: Issue::hint.
+    void warn(const JsonNode& node, std::string problem, std::string value = {}, std::string hint = {}) const;
+    void warnAtKey(const JsonNode& node, std::string problem, std::string value = {}, std::string hint = {}) const;
     [[noreturn]] void fail(const JsonNode& node, std::string problem, std::string value = {}) const;
     void warn(Issue issue) const;
     SourceLocation locationOf(const JsonNode& node) const;
@@ -52,7 +53,8 @@ JsonNode member(const JsonNode& object, std::string_view key);
 // The member `name` written plain or with the xml2json underscore ("name" / "_name"); the plain
 // spelling wins, with a warning at the other when both are given (§2).
 JsonNode attributeMember(const JsonContext& context, const JsonNode& object, std::string_view name);
-// Warns about every key not in `allowed` ("unknown key, ignored", at the key). Attribute-like
+// Warns about every key not in `allowed` ("unknown key, ignored", at the key, with the allowed key
+// it is probably a typo of: name_suggestion.h). Attribute-like
 // names are listed once, plain: "name" allows "_name" too.
 void checkKeys(const JsonContext& context, const JsonNode& object, const std::vector<std::string_view>& allowed,
                const std::vector<std::string_view>& attributes = {});

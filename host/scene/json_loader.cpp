@@ -13,6 +13,7 @@
 #include "local_origin.h"
 #include "mesh_library.h"
 #include "missing_shaders.h"
+#include "name_suggestion.h"
 #include "render_fallbacks.h"
 #include "scene_rules.h"
 #include "texture_loading.h"
@@ -82,7 +83,8 @@ private:
         const std::string name = readString(context_, requireAttribute(context_, node, "name"));
         if (const JsonNode type = attributeMember(context_, node, "type")) {
             const std::string typeText = readText(context_, type);
-            if (typeText != "image") context_.warn(type, "unknown texture type, read as an image file", typeText);
+            if (typeText != "image")
+                context_.warn(type, "unknown texture type, read as an image file", typeText, didYouMean(typeText, {"image"}));
         }
         const JsonNode source = requireMember(context_, node, "sourcefile");
         const std::string relative = readString(context_, source);
@@ -105,7 +107,7 @@ private:
         const JsonNode typeNode = requireAttribute(context_, node, "type");
         const std::string typeText = readString(context_, typeNode);
         const std::optional<rules::ShaderTypeName> known = rules::shaderType(typeText);
-        if (!known) context_.warn(typeNode, rules::kUnknownShaderType, typeText);
+        if (!known) context_.warn(typeNode, rules::kUnknownShaderType, typeText, didYouMean(typeText, rules::shaderTypeNames()));
         const rules::ShaderTypeName type = known.value_or(rules::ShaderTypeName{});
 
         Shader shader;
@@ -197,7 +199,8 @@ private:
         const int next = static_cast<int>(scene_.prototypes.size());
         switch (rules::definePrototypeName(prototypeByName_, name, type, next)) {
             case rules::PrototypeDefinition::Duplicate: return context_.warn(node, rules::kDuplicatePrototype, name);
-            case rules::PrototypeDefinition::UnknownType: return context_.warn(typeNode, rules::kUnknownPrototype, typeName);
+            case rules::PrototypeDefinition::UnknownType: return context_.warn(typeNode, rules::kUnknownPrototype, typeName,
+                                                                            didYouMean(typeName, rules::shapeTypeNames(false)));
             case rules::PrototypeDefinition::Added: scene_.prototypes.push_back(parseShape(node, *type, ShapeRole::Prototype));
         }
     }
@@ -352,7 +355,7 @@ private:
                 const float degrees = readScalar(context_, requireMember(context_, step, "amount"));
                 steps.push_back({TransformKind::Rotate, glm::vec3(degrees, 0.0f, 0.0f), axis});
             } else {
-                context_.warn(typeNode, "unknown transform type, ignored", kind);
+                context_.warn(typeNode, "unknown transform type, ignored", kind, didYouMean(kind, {"translate", "scale", "rotation"}));
                 continue;
             }
             exactTranslations.push_back(exact);
@@ -446,7 +449,7 @@ private:
         if (const JsonNode type = attributeMember(context_, node, "type")) {
             const std::string typeText = readText(context_, type);
             const std::optional<CameraType> known = rules::cameraType(typeText);
-            if (!known) context_.warn(type, rules::kUnknownCameraType, typeText);
+            if (!known) context_.warn(type, rules::kUnknownCameraType, typeText, didYouMean(typeText, rules::cameraTypeNames()));
             camera.type = known.value_or(CameraType::Perspective);
         }
         camera.position = readVec3(context_, requireMember(context_, node, "position"), &eye);
@@ -492,7 +495,7 @@ private:
         if (type == "shape") return placeShapeLight(node);
         const std::optional<LightType> known = rules::lightType(type);
         if (!known) {
-            context_.warn(typeNode, rules::kUnknownLightType, type);
+            context_.warn(typeNode, rules::kUnknownLightType, type, didYouMean(type, rules::lightTypeNames()));
             return;
         }
         // A point light's normal, width and length are ignored without a warning, as in XML
@@ -536,7 +539,7 @@ private:
         } else {
             const std::optional<ShapeType> type = rules::shapeType(typeName);
             if (!type) {
-                context_.warn(typeNode, "unknown shape type, skipped", typeName);
+                context_.warn(typeNode, rules::kUnknownShapeType, typeName, didYouMean(typeName, rules::shapeTypeNames(true)));
                 return;
             }
             emitter.shape = parseShape(shape, *type, ShapeRole::Emitter);
@@ -572,7 +575,7 @@ private:
         if (typeName == "instance") return placeInstance(node);
         const std::optional<ShapeType> type = rules::shapeType(typeName);
         if (!type) {
-            context_.warn(typeNode, "unknown shape type, skipped", typeName);
+            context_.warn(typeNode, rules::kUnknownShapeType, typeName, didYouMean(typeName, rules::shapeTypeNames(true)));
             return;
         }
         Shape shape = parseShape(node, *type, ShapeRole::Loose);

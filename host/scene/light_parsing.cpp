@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "name_suggestion.h"
 #include "scene_rules.h"
 #include "value_parsing.h"
 
@@ -23,7 +24,7 @@ std::optional<Light> parseLight(const ParseContext& context, pugi::xml_node node
     light.where = {context.source.path(), context.source.lineOf(node)};
     const std::optional<LightType> known = rules::lightType(type);
     if (!known) {
-        context.warn(node, rules::kUnknownLightType, type);
+        context.warn(node, rules::kUnknownLightType, type, didYouMean(type, rules::lightTypeNames()));
         return std::nullopt;
     }
     light.type = *known;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <set>
 
+#include "name_suggestion.h"
+
 namespace vkrt {
 
 namespace {
@@ -21,8 +23,10 @@ void ParseContext::warn(Issue issue) const {
     diagnostics.warn(std::move(issue));
 }
 
-void ParseContext::warn(pugi::xml_node node, std::string problem, std::string value) const {
-    warn(issueAt(node, std::move(problem), std::move(value)));
+void ParseContext::warn(pugi::xml_node node, std::string problem, std::string value, std::string hint) const {
+    Issue issue = issueAt(node, std::move(problem), std::move(value));
+    issue.hint = std::move(hint);
+    warn(std::move(issue));
 }
 
 void ParseContext::fail(pugi::xml_node node, std::string problem, std::string value) const {
@@ -50,7 +54,9 @@ void checkChildren(const ParseContext& context, pugi::xml_node node, const std::
         const std::string_view name = child.name();
         if (contains(repeatable, name)) continue;
         if (!contains(allowed, name)) {
-            context.warn(child, std::string("unknown element inside <") + node.name() + ">, ignored");
+            std::vector<std::string_view> known = allowed;
+            known.insert(known.end(), repeatable.begin(), repeatable.end());
+            context.warn(child, std::string("unknown element inside <") + node.name() + ">, ignored", "", didYouMean(name, known));
         } else if (!seen.insert(name).second) {
             context.warn(child, std::string("repeated inside <") + node.name() + ">, the first one is used");
         }
@@ -61,7 +67,9 @@ void checkAttributes(const ParseContext& context, pugi::xml_node node, std::init
     for (pugi::xml_attribute attribute : node.attributes()) {
         const std::string_view name = attribute.name();
         if (name == "name" || contains(allowed, name)) continue;
-        context.warn(node, "unknown attribute ignored", attribute.name());
+        std::vector<std::string_view> known = allowed;
+        known.push_back("name");
+        context.warn(node, "unknown attribute ignored", attribute.name(), didYouMean(name, known));
     }
 }
 

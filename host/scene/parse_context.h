@@ -24,9 +24,9 @@ struct ParseContext {
     bool localOrigin = false;             // LoadOptions::localOrigin (local_origin.h)
     glm::dvec3 origin{0.0};               // set once the default camera is known
 
-    // An issue about `node` (its element name and line).
+    // An issue about `node` (its element name and line). `hint`: Issue::hint.
     Issue issueAt(pugi::xml_node node, std::string problem, std::string value = {}) const;
-    void warn(pugi::xml_node node, std::string problem, std::string value = {}) const;
+    void warn(pugi::xml_node node, std::string problem, std::string value = {}, std::string hint = {}) const;
     [[noreturn]] void fail(pugi::xml_node node, std::string problem, std::string value = {}) const;
     void warn(Issue issue) const;
 };
@@ -37,13 +37,13 @@ std::string elementText(pugi::xml_node node);
 // `text` without leading and trailing whitespace (names and paths written as element text).
 std::string trimmed(const std::string& text);
 
-// Warns about element children whose names are not in `allowed` ("unknown element ... ignored")
-// and about a repeated child of a name in `allowed` (the first one is used). `repeatable` names
+// Warns about element children whose names are not in `allowed` ("unknown element ... ignored",
+// with the allowed name it is probably a typo of: name_suggestion.h) and about a repeated child of a name in `allowed` (the first one is used). `repeatable` names
 // may appear any number of times.
 void checkChildren(const ParseContext& context, pugi::xml_node node, const std::vector<std::string_view>& allowed,
                    const std::vector<std::string_view>& repeatable = {});
 
-// Warns about attributes not in `allowed`. `name` is informational on every element and is
+// Warns about attributes not in `allowed` (with the probable one, as above). `name` is informational on every element and is
 // always accepted (one student file names its light).
 void checkAttributes(const ParseContext& context, pugi::xml_node node, std::initializer_list<std::string_view> allowed);
 

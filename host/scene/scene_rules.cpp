@@ -10,11 +10,46 @@
 
 namespace vkrt::rules {
 
-std::optional<CameraType> cameraType(std::string_view name) {
-    if (name == "perspective") return CameraType::Perspective;
-    if (name == "orthographic") return CameraType::Orthographic;
+namespace {
+// A type name as files spell it and what it reads as: one table per kind gives both the parser and
+// the names a typo is compared with (name_suggestion.h).
+template <typename T>
+using NameTable = std::vector<std::pair<std::string_view, T>>;
+
+template <typename T>
+std::optional<T> lookUp(const NameTable<T>& table, std::string_view name) {
+    for (const auto& [spelling, value] : table)
+        if (spelling == name) return value;
     return std::nullopt;
 }
+
+template <typename T>
+std::vector<std::string_view> namesOf(const NameTable<T>& table) {
+    std::vector<std::string_view> names;
+    for (const auto& entry : table) names.push_back(entry.first);
+    return names;
+}
+
+const NameTable<CameraType> kCameraTypes = {{"perspective", CameraType::Perspective},
+                                            {"orthographic", CameraType::Orthographic}};
+const NameTable<LightType> kLightTypes = {{"point", LightType::Point}, {"area", LightType::Area}};
+const NameTable<ShaderTypeName> kShaderTypes = {
+    {"Lambertian", {ShaderType::Lambertian, "Lambertian"}},
+    {"Diffuse", {ShaderType::Lambertian, "Diffuse", /*diffuseBounce=*/true}},
+    {"BlinnPhong", {ShaderType::BlinnPhong, "BlinnPhong"}},
+    {"Phong", {ShaderType::BlinnPhong, "BlinnPhong"}},
+    {"Mirror", {ShaderType::Mirror, "Mirror"}},
+    {"Glaze", {ShaderType::Glaze, "Glaze"}},
+    {"BlinnPhongMirrored", {ShaderType::BlinnPhongMirrored, "BlinnPhongMirrored"}},
+    {"Dielectric", {ShaderType::Dielectric, "Dielectric"}},
+    {"CoolToWarm", {ShaderType::CoolToWarm, "CoolToWarm"}},
+    {"Emitter", {ShaderType::Lambertian, "Emitter", false, /*emitter=*/true}}};
+const NameTable<ShapeType> kShapeTypes = {
+    {"sphere", ShapeType::Sphere}, {"box", ShapeType::Box}, {"triangle", ShapeType::Triangle}, {"mesh", ShapeType::Mesh}};
+}  // namespace
+
+std::optional<CameraType> cameraType(std::string_view name) { return lookUp(kCameraTypes, name); }
+std::vector<std::string_view> cameraTypeNames() { return namesOf(kCameraTypes); }
 
 std::string viewDirProblem(const glm::vec3& viewDir) {
     return viewDir == glm::vec3(0.0f) ? "view direction has zero length" : "";
@@ -71,10 +106,11 @@ std::optional<int> cameraByName(const Scene& scene, const std::string& name) {
     return std::nullopt;
 }
 
-std::optional<LightType> lightType(std::string_view name) {
-    if (name == "point") return LightType::Point;
-    if (name == "area") return LightType::Area;
-    return std::nullopt;
+std::optional<LightType> lightType(std::string_view name) { return lookUp(kLightTypes, name); }
+std::vector<std::string_view> lightTypeNames() {
+    std::vector<std::string_view> names = namesOf(kLightTypes);
+    names.push_back("shape");
+    return names;
 }
 
 std::optional<glm::vec3> unitNormal(const glm::vec3& normal) {
@@ -91,18 +127,8 @@ std::optional<glm::vec3> unitNormal(const glm::vec3& normal) {
 
 std::string lightSizeProblem(float size) { return !(size >= 0.0f) ? "must not be negative" : ""; }
 
-std::optional<ShaderTypeName> shaderType(std::string_view name) {
-    if (name == "Lambertian") return ShaderTypeName{ShaderType::Lambertian, "Lambertian"};
-    if (name == "Diffuse") return ShaderTypeName{ShaderType::Lambertian, "Diffuse", /*diffuseBounce=*/true};
-    if (name == "BlinnPhong" || name == "Phong") return ShaderTypeName{ShaderType::BlinnPhong, "BlinnPhong"};
-    if (name == "Mirror") return ShaderTypeName{ShaderType::Mirror, "Mirror"};
-    if (name == "Glaze") return ShaderTypeName{ShaderType::Glaze, "Glaze"};
-    if (name == "BlinnPhongMirrored") return ShaderTypeName{ShaderType::BlinnPhongMirrored, "BlinnPhongMirrored"};
-    if (name == "Dielectric") return ShaderTypeName{ShaderType::Dielectric, "Dielectric"};
-    if (name == "CoolToWarm") return ShaderTypeName{ShaderType::CoolToWarm, "CoolToWarm"};
-    if (name == "Emitter") return ShaderTypeName{ShaderType::Lambertian, "Emitter", false, /*emitter=*/true};
-    return std::nullopt;
-}
+std::optional<ShaderTypeName> shaderType(std::string_view name) { return lookUp(kShaderTypes, name); }
+std::vector<std::string_view> shaderTypeNames() { return namesOf(kShaderTypes); }
 
 const std::vector<std::string_view>& shaderParameters() {
     static const std::vector<std::string_view> all = {"diffuse",   "diffusetex",      "specular",        "phongExp",
@@ -157,12 +183,11 @@ void resolveLegacyShaderType(Shader& shader) {
     if (shader.type == ShaderType::BlinnPhong && shader.mirrorCoef > 0.0f) shader.type = ShaderType::BlinnPhongMirrored;
 }
 
-std::optional<ShapeType> shapeType(std::string_view name) {
-    if (name == "sphere") return ShapeType::Sphere;
-    if (name == "box") return ShapeType::Box;
-    if (name == "triangle") return ShapeType::Triangle;
-    if (name == "mesh") return ShapeType::Mesh;
-    return std::nullopt;
+std::optional<ShapeType> shapeType(std::string_view name) { return lookUp(kShapeTypes, name); }
+std::vector<std::string_view> shapeTypeNames(bool instance) {
+    std::vector<std::string_view> names = namesOf(kShapeTypes);
+    if (instance) names.push_back("instance");
+    return names;
 }
 
 std::vector<std::string_view> geometryKeys(ShapeType type) {

@@ -20,6 +20,8 @@ namespace vkrt::rules {
 
 // --- cameras ---
 std::optional<CameraType> cameraType(std::string_view name);  // perspective, orthographic
+// Each type parser's names, for "did you mean" after an unknown one (name_suggestion.h).
+std::vector<std::string_view> cameraTypeNames();
 inline constexpr const char* kUnknownCameraType = "unknown camera type, using perspective";
 std::string viewDirProblem(const glm::vec3& viewDir);
 std::string lookatProblem(const glm::vec3& gaze);  // gaze = lookatPoint - position
@@ -45,6 +47,7 @@ inline constexpr const char* kUnknownCameraName = "no camera of that name";
 
 // --- lights ---
 std::optional<LightType> lightType(std::string_view name);  // point, area
+std::vector<std::string_view> lightTypeNames();  // and "shape", which the loaders read before lightType
 inline constexpr const char* kUnknownLightType = "unknown light type, light skipped";
 // The unit area-light normal, or nullopt for a zero (or non-finite) length.
 std::optional<glm::vec3> unitNormal(const glm::vec3& normal);
@@ -63,6 +66,7 @@ struct ShaderTypeName {
     bool emitter = false;
 };
 std::optional<ShaderTypeName> shaderType(std::string_view name);
+std::vector<std::string_view> shaderTypeNames();
 inline constexpr const char* kUnknownShaderType = "unknown shader type, using Lambertian with its diffuse colour";
 // Every parameter any shader type reads (the XML element names, the JSON keys).
 const std::vector<std::string_view>& shaderParameters();
@@ -89,6 +93,9 @@ void resolveLegacyShaderType(Shader& shader);
 
 // --- shapes ---
 std::optional<ShapeType> shapeType(std::string_view name);  // sphere, box, triangle, mesh
+// With `instance`, also "instance": a shape's type (placing a prototype), not a prototype's.
+std::vector<std::string_view> shapeTypeNames(bool instance);
+inline constexpr const char* kUnknownShapeType = "unknown shape type, skipped";
 std::vector<std::string_view> geometryKeys(ShapeType type); // center radius | minPt maxPt | v0 v1 v2 | file
 std::string radiusProblem(float radius);
 // minPt > maxPt on an axis (LittleOfEverything.json's `4.5.0` gives one): the corners are swapped

@@ -38,8 +38,11 @@ std::string relativePath(const std::string& path, const std::filesystem::path& o
     namespace fs = std::filesystem;
     std::error_code ec;
     const fs::path target = fs::absolute(path, ec);
-    const fs::path base = fs::absolute(outputDirectory.empty() ? fs::path(".") : outputDirectory, ec).lexically_normal();
+    fs::path base = fs::absolute(outputDirectory.empty() ? fs::path(".") : outputDirectory, ec).lexically_normal();
     if (ec) return path;
+    // `-o out.json` and `-o ./out.json` give "/cwd/." here, normalised to "/cwd/": without its
+    // trailing separator, which weakly_canonical drops, it would pass for a symbolic link below.
+    if (!base.has_filename() && base.has_relative_path()) base = base.parent_path();
     // Through a symbolic link, `..` from the output folder leads somewhere else than its spelling
     // says (the loaders resolve paths by spelling): name the file by its real, absolute path then.
     const fs::path real = fs::weakly_canonical(base, ec);

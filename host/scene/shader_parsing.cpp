@@ -5,6 +5,7 @@
 #include <string_view>
 #include <vector>
 
+#include "name_suggestion.h"
 #include "scene_rules.h"
 #include "value_parsing.h"
 
@@ -44,7 +45,7 @@ Shader parseShader(const ParseContext& context, pugi::xml_node node, const Textu
 
     const std::string typeText = requireAttribute(context, node, "type");
     const std::optional<rules::ShaderTypeName> known = rules::shaderType(typeText);
-    if (!known) context.warn(node, rules::kUnknownShaderType, typeText);
+    if (!known) context.warn(node, rules::kUnknownShaderType, typeText, didYouMean(typeText, rules::shaderTypeNames()));
     const rules::ShaderTypeName type = known.value_or(rules::ShaderTypeName{});
     shader.type = type.type;
     shader.diffuseBounce = type.diffuseBounce;

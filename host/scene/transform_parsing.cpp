@@ -4,6 +4,7 @@
 #include <string_view>
 
 #include "local_origin.h"
+#include "name_suggestion.h"
 #include "scene_rules.h"
 #include "value_parsing.h"
 
@@ -32,7 +33,7 @@ rules::Placement parseTransform(const ParseContext& context, pugi::xml_node tran
             if (!axis) context.fail(step, rules::kBadRotationAxis, axisName);
             steps.push_back({TransformKind::Rotate, glm::vec3(parseScalar(context, step), 0.0f, 0.0f), *axis});
         } else {
-            context.warn(step, "unknown element inside <transform>, ignored");
+            context.warn(step, "unknown element inside <transform>, ignored", "", didYouMean(kind, {"translate", "scale", "rotate"}));
             continue;
         }
         exactTranslations.push_back(exact);

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string_view>
 #include <tuple>
+#include <vector>
 
 #include <pugixml.hpp>
 
@@ -13,6 +14,7 @@
 #include "light_parsing.h"
 #include "local_origin.h"
 #include "missing_shaders.h"
+#include "name_suggestion.h"
 #include "parse_context.h"
 #include "render_fallbacks.h"
 #include "scene_rules.h"
@@ -30,6 +32,10 @@ namespace {
 bool isElement(pugi::xml_node node, std::string_view name) {
     return node.type() == pugi::node_element && name == node.name();
 }
+
+// What <scene> may hold; anything else is warned about with the closest of these.
+const std::vector<std::string_view> kSceneChildren = {"camera", "light", "shader", "texture", "instance", "shape",
+                                                      "sceneParameters"};
 
 // Two passes over the document (docs/XML_FORMAT.md §7.2), so that child and element order never matter:
 //   1. definitions by name: textures, shaders (top-level and inline in shapes), prototypes;
@@ -63,8 +69,8 @@ public:
             } else if (name == "sceneParameters") {
                 if (parameters) context_.warn(node, "repeated inside <scene>, the first one is used");
                 else parameters = node;
-            } else if (name != "shader" && name != "texture" && name != "instance" && name != "shape" && name != "camera") {
-                context_.warn(node, "unknown element inside <scene>, ignored");
+            } else if (std::find(kSceneChildren.begin(), kSceneChildren.end(), name) == kSceneChildren.end()) {
+                context_.warn(node, "unknown element inside <scene>, ignored", "", didYouMean(name, kSceneChildren));
             }
         }
         // Shapes after every light, as JSON reads them: a shape light's mesh then takes the same
@@ -102,7 +108,7 @@ private:
         const std::string name = requireAttribute(context_, node, "name");
         const std::string_view type = node.attribute("type").value();
         if (!type.empty() && type != "image")
-            context_.warn(node, "unknown texture type, read as an image file", std::string(type));
+            context_.warn(node, "unknown texture type, read as an image file", std::string(type), didYouMean(type, {"image"}));
         const pugi::xml_node source = requireChild(context_, node, "sourcefile");
         const std::string relative = trimmed(elementText(source));
         if (relative.empty()) context_.fail(source, "empty texture file name");
@@ -180,7 +186,7 @@ private:
         const int next = static_cast<int>(scene_.prototypes.size());
         switch (rules::definePrototypeName(prototypeByName_, name, type, next)) {
             case rules::PrototypeDefinition::Duplicate: return context_.warn(node, rules::kDuplicatePrototype, name);
-            case rules::PrototypeDefinition::UnknownType: return context_.warn(node, rules::kUnknownPrototype, typeName);
+            case rules::PrototypeDefinition::UnknownType: return context_.warn(node, rules::kUnknownPrototype, typeName, didYouMean(typeName, rules::shapeTypeNames(false)));
             case rules::PrototypeDefinition::Added: scene_.prototypes.push_back(parseShape(node, *type, /*world=*/false));
         }
     }
@@ -205,7 +211,7 @@ private:
         checkAttributes(context_, node, {"type"});
         const std::optional<ShapeType> type = rules::shapeType(typeName);
         if (!type) {
-            context_.warn(node, "unknown shape type, skipped", typeName);
+            context_.warn(node, rules::kUnknownShapeType, typeName, didYouMean(typeName, rules::shapeTypeNames(true)));
             return;
         }
         const bool placed = node.child("transform") || node.child("transformEnd");
@@ -268,7 +274,7 @@ private:
             checkAttributes(context_, shape, {"type"});
             const std::optional<ShapeType> type = rules::shapeType(typeName);
             if (!type) {
-                context_.warn(shape, "unknown shape type, skipped", typeName);
+                context_.warn(shape, rules::kUnknownShapeType, typeName, didYouMean(typeName, rules::shapeTypeNames(true)));
                 return;
             }
             emitter.shape = parseShape(shape, *type, /*world=*/!shape.child("transform"), /*shaderRequired=*/false);

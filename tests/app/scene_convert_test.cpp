@@ -128,6 +128,46 @@ TEST(SceneConvert, PathsWorkFromAnOutputFolderReachedThroughASymbolicLink) {
     EXPECT_EQ(viaRealPath.meshes[0].triangles.size(), 1u);
 }
 
+// Runs in `dir` and goes back where it was (the relative -o names below are relative to it).
+class InFolder {
+public:
+    explicit InFolder(const fs::path& dir) : previous_(fs::current_path()) { fs::current_path(dir); }
+    ~InFolder() { fs::current_path(previous_); }
+
+private:
+    fs::path previous_;
+};
+
+// A -o relative to the working folder, bare, with `./` or in another folder, names the mesh
+// relative to the written file's folder, as docs/SCENE_CONVERSION.md says (the first two were
+// written absolute: the output folder "/cwd/." normalised with a trailing separator passed for a
+// symbolic link), and the result loads the mesh from there.
+TEST(SceneConvert, PathsAreRelativeToTheOutputFolderForEveryRelativeOutputName) {
+    const fs::path dir = freshDir("relative");
+    fs::create_directories(dir / "scenes");
+    fs::create_directories(dir / "sub");
+    writeFile(dir / "scenes" / "m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    writeFile(dir / "scenes" / "s.xml", R"(<scene><camera><position>0 0 5</position><viewDir>0 0 -1</viewDir></camera>
+<shader name="s" type="Lambertian"><diffuse>1 1 1</diffuse></shader><shape type="mesh"><shader ref="s"/><file>m.obj</file></shape></scene>)");
+    const InFolder inDir(dir);
+    const struct {
+        const char* output;
+        const char* meshPath;  // as the written file spells it
+    } cases[] = {{"out.json", "\"scenes/m.obj\""}, {"./out.xml", ">scenes/m.obj<"}, {"sub/out.json", "\"../scenes/m.obj\""}};
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.output);
+        Diagnostics diagnostics;
+        convertScene("scenes/s.xml", c.output, diagnostics);
+        const std::string text = readFile(c.output);
+        EXPECT_NE(text.find(c.meshPath), std::string::npos) << text;
+        EXPECT_EQ(text.find(dir.string()), std::string::npos) << text;
+        Diagnostics reload;
+        const Scene back = loadScene((dir / c.output).string(), LoadOptions{}, reload);
+        ASSERT_EQ(back.meshes.size(), 1u);
+        EXPECT_EQ(back.meshes[0].triangles.size(), 1u);
+    }
+}
+
 // Ctrl-C during a conversion stops it between steps and leaves nothing behind.
 TEST(SceneConvert, AnInterruptStopsItLeavingNothing) {
     const fs::path dir = freshDir("cancel");

@@ -1,4 +1,8 @@
-// Diagnostics and SceneError on their own: the one-line message format and strictness.
+// Diagnostics and SceneError on their own: the one-line message format, strictness, and the summary
+// that vkrt prints (one line per distinct warning).
+#include <string>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "diagnostics.h"
@@ -51,6 +55,47 @@ TEST(Diagnostics, CollectsWarningsInOrder) {
     ASSERT_EQ(diagnostics.warnings().size(), 2u);
     EXPECT_EQ(diagnostics.messages()[0], "a.xml:2: x: first");
     EXPECT_EQ(diagnostics.messages()[1], "a.xml:9: y: second 'v'");
+}
+
+TEST(Diagnostics, AHintFollowsTheQuotedValue) {
+    Issue issue{"s.json", 3, "scene.shape[0]._type", "unknown shape type, skipped", "shpere", 22};
+    issue.hint = "did you mean 'sphere'?";
+    EXPECT_EQ(issue.message(), "s.json:3:22: scene.shape[0]._type: unknown shape type, skipped 'shpere'; did you mean 'sphere'?");
+}
+
+// What vkrt prints: warnings that differ only in their line, value and JSON indices are one line,
+// the first of them with how many more and their lines; another problem, element kind, hint or
+// file is another line, in the order first found.
+TEST(Diagnostics, SummaryPrintsEachDistinctWarningOnceWithHowManyMoreAndWhere) {
+    Diagnostics diagnostics;
+    for (int i = 0; i < 5; ++i)
+        diagnostics.warn({"s.json", 10 + 9 * i, "scene.shader[" + std::to_string(6 + i) + "].diffuse", "not used by a Mirror shader, ignored", "", 3});
+    diagnostics.warn({"s.json", 11, "scene.shader[6].specular", "not used by a Mirror shader, ignored", "", 3});
+    diagnostics.warn({"s.json", 12, "scene.shape[0].radius", "radius must be positive", "-1"});
+    diagnostics.warn({"s.json", 80, "scene.shape[4].radius", "radius must be positive", "-2"});
+    diagnostics.warn({"other.json", 5, "scene.shape[0].radius", "radius must be positive", "-3"});
+    Issue typo{"s.json", 90, "scene.shape[5]._type", "unknown shape type, skipped", "shpere"};
+    typo.hint = "did you mean 'sphere'?";
+    diagnostics.warn(typo);
+    diagnostics.warn({"s.json", 91, "scene.shape[6]._type", "unknown shape type, skipped", "cylinder"});
+    diagnostics.warn({"s.json", 95, "scene.shape[7]._type", "unknown shape type, skipped", "cone"});
+    ASSERT_EQ(diagnostics.warnings().size(), 12u);  // every warning is kept; only the printing folds them
+    const std::vector<std::string> lines = diagnostics.summary();
+    ASSERT_EQ(lines.size(), 6u) << ::testing::PrintToString(lines);
+    EXPECT_EQ(lines[0], "s.json:10:3: scene.shader[6].diffuse: not used by a Mirror shader, ignored (and 4 more like it, lines 19-46)");
+    EXPECT_EQ(lines[1], "s.json:11:3: scene.shader[6].specular: not used by a Mirror shader, ignored");
+    EXPECT_EQ(lines[2], "s.json:12: scene.shape[0].radius: radius must be positive '-1' (and 1 more like it, line 80)");
+    EXPECT_EQ(lines[3], "other.json:5: scene.shape[0].radius: radius must be positive '-3'");
+    EXPECT_EQ(lines[4], "s.json:90: scene.shape[5]._type: unknown shape type, skipped 'shpere'; did you mean 'sphere'?");
+    EXPECT_EQ(lines[5], "s.json:91: scene.shape[6]._type: unknown shape type, skipped 'cylinder' (and 1 more like it, line 95)");
+}
+
+TEST(Diagnostics, SummaryOfWarningsWithoutLinesNamesNoLines) {
+    Diagnostics diagnostics;
+    diagnostics.warn({"a.obj", 0, "obj", "not a readable OBJ file", ""});
+    diagnostics.warn({"a.obj", 0, "obj", "not a readable OBJ file", ""});
+    ASSERT_EQ(diagnostics.summary().size(), 1u);
+    EXPECT_EQ(diagnostics.summary()[0], "a.obj:0: obj: not a readable OBJ file (and 1 more like it)");
 }
 
 TEST(Diagnostics, StrictRaisesTheWarningAsSceneError) {

@@ -220,6 +220,21 @@ TEST(JsonScenes, StrictRejectsExactlyTheWarnedScenesAtTheFirstWarning) {
     }
 }
 
+// What vkrt prints for glossyReflection.json (Diagnostics::summary): its 20 warnings, the same four
+// unused parameters on each of five Mirror shaders, in four lines that keep the first shader's
+// place and count the other four.
+TEST(JsonScenes, GlossyReflectionsTwentyWarningsPrintAsFourLinesWithTheirCounts) {
+    SKIP_WITHOUT_JSON_CORPUS();
+    const std::string path = corpusPath("glossyReflection.json");
+    Diagnostics diagnostics;
+    loadScene(path, {}, diagnostics);
+    EXPECT_EQ(diagnostics.warnings().size(), 20u);
+    const std::vector<std::string> lines = diagnostics.summary();
+    ASSERT_EQ(lines.size(), 4u) << ::testing::PrintToString(lines);
+    EXPECT_EQ(lines[0], path + ":51:3: scene.shader[6].diffuse: not used by a Mirror shader, ignored (and 4 more like it, lines 60-87)");
+    EXPECT_EQ(lines[3], path + ":54:3: scene.shader[6].mirrorCoef: not used by a Mirror shader, ignored (and 4 more like it, lines 63-90)");
+}
+
 // The first JSON version of mirroredScene misspells its shader's name key ("_name=": "green1"),
 // so two shapes name a shader that does not exist: the stray key, the nameless shader and each
 // dangling reference are warnings, and the two shapes show the grey placeholder (not green, so
@@ -230,7 +245,7 @@ TEST(JsonScenes, MirroredScene2020LoadsWithTheMisspeltShaderSkippedAndItsShapesG
     Diagnostics diagnostics;
     const Scene scene = loadScene(path, {}, diagnostics);
     ASSERT_EQ(diagnostics.messages().size(), 4u);
-    EXPECT_EQ(diagnostics.messages()[0], path + ":38:3: scene.shader[2]._name=: unknown key, ignored");
+    EXPECT_EQ(diagnostics.messages()[0], path + ":38:3: scene.shader[2]._name=: unknown key, ignored; did you mean '_name'?");
     // The fixed version (a0e3360) loads clean; the same shapes use its green1.
     Diagnostics fixed;
     const Scene good = loadScene(corpusPath("mirroredScene.json"), {}, fixed);

@@ -154,7 +154,7 @@ void SceneFiles::expectJsonIssue(const Issue& issue, int line, int column, const
     const std::string head = jsonPath + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + element + ": ";
     EXPECT_EQ(message.rfind(head, 0), 0u) << message;
     if (!value.empty()) {
-        const std::string tail = " '" + value + "'";
+        const std::string tail = " '" + value + "'" + (issue.hint.empty() ? "" : "; " + issue.hint);
         EXPECT_TRUE(message.size() >= tail.size() && message.compare(message.size() - tail.size(), tail.size(), tail) == 0)
             << message;
     }
@@ -193,7 +193,7 @@ void SceneFiles::expectIssue(const Issue& issue, int line, const std::string& el
     const std::string head = scenePath + ":" + std::to_string(line) + ": " + element + ": ";
     EXPECT_EQ(message.rfind(head, 0), 0u) << message;
     if (!value.empty()) {
-        const std::string tail = " '" + value + "'";
+        const std::string tail = " '" + value + "'" + (issue.hint.empty() ? "" : "; " + issue.hint);
         EXPECT_TRUE(message.size() >= tail.size() && message.compare(message.size() - tail.size(), tail.size(), tail) == 0)
             << message;
     }

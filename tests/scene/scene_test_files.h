@@ -56,7 +56,7 @@ protected:
     Issue errorOf(const std::string& xml, bool strict = false) const;
 
     // The issue is about scenePath at `line`, names `element` and quotes `value`, and its one-line
-    // message reads "<file>:<line>: <element>: <problem> '<value>'".
+    // message reads "<file>:<line>: <element>: <problem> '<value>'" (then "; <hint>" when it has one).
     void expectIssue(const Issue& issue, int line, const std::string& element, const std::string& value) const;
 
     std::filesystem::path dir;

@@ -114,6 +114,8 @@ TEST_F(ShaderParsing, UnknownTypeWarnsAndFallsBackToLambertian) {
     EXPECT_EQ(shaderNamed(scene, "y").diffuse, glm::vec3(0.5f));  // grey without a diffuse
     ASSERT_EQ(diagnostics.warnings().size(), 2u);                  // one per shader, nothing for its children
     expectIssue(diagnostics.warnings()[0], lineOf(xml, "Mirrored"), "shader", "Mirrored");
+    EXPECT_EQ(diagnostics.warnings()[0].hint, "did you mean 'Mirror'?");
+    EXPECT_EQ(diagnostics.warnings()[1].hint, "");  // Velvet is no typo of any type
     expectIssue(diagnostics.warnings()[1], lineOf(xml, "Velvet"), "shader", "Velvet");
 }
 
