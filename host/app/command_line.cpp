@@ -35,6 +35,23 @@ glm::vec3 parseColour(const std::string& text) {
     return c;
 }
 
+// "x,y,z" or "x y z" -> the --up vector: three numbers a float holds, not all zero (whether it is
+// parallel to the gaze is checked once the scene's camera is known, render_steps.cpp).
+glm::vec3 parseUp(const std::string& text) {
+    std::string s = text;
+    for (char& c : s)
+        if (c == ',') c = ' ';
+    std::istringstream in(s);
+    glm::dvec3 up;
+    std::string extra;
+    if (!(in >> up.x >> up.y >> up.z) || (in >> extra))
+        throw CLI::ValidationError("--up", "expected three numbers x,y,z, got '" + text + "'");
+    for (int i = 0; i < 3; ++i)
+        if (!(std::fabs(up[i]) <= FLT_MAX)) throw CLI::ValidationError("--up", "'" + text + "': each number must be finite and within float");
+    if (up == glm::dvec3(0.0)) throw CLI::ValidationError("--up", "'" + text + "': the up vector has zero length");
+    return glm::vec3(up);
+}
+
 // The options every command shares (what the image is, which GPU, how to run).
 // A number a float holds: a scene file refuses 1e39 for a lens, so the command line does too
 // (CLI11 would read it as inf).
@@ -82,6 +99,10 @@ void addImageOptions(CLI::App& app, CommandLine& cl, std::string& bg) {
         ->expected(2);
     app.add_option("--camera", cl.camera, "Which camera of the scene (index; default: the one <sceneParameters> names, else the first)")
         ->check(CLI::NonNegativeNumber);
+    app.add_option_function<std::string>(
+        "--up", [&cl](const std::string& text) { cl.up = parseUp(text); },
+        "The camera's up vector x,y,z (overrides the scene's; default: 0,1,0, or 1,0,0 for a camera looking straight "
+        "up or down: docs/RENDERING.md §1). Must not be parallel to the view direction");
     app.add_option("-n,--numcpus,--threads", cl.render.threads,
                    "CPU threads of the CPU reference and of host-side work, the course's -n (default 0: all cores); "
                    "a GPU render runs on the Vulkan device")
@@ -258,6 +279,7 @@ std::string describeSettings(const CommandLine& cl) {
     out << "recursion depth: " << r.maxDepth << "\n";
     if (cl.focusDistance) out << "focus distance: " << *cl.focusDistance << "\n";
     if (cl.aperture) out << "aperture: " << *cl.aperture << "\n";
+    if (cl.up) out << "up: " << cl.up->x << "," << cl.up->y << "," << cl.up->z << "\n";
     if (r.shutter) out << "shutter: " << r.shutter->x << "," << r.shutter->y << "\n";
     out << "CPU threads: " << (r.threads == 0 ? std::string("all cores") : std::to_string(r.threads)) << "\n";
     out << "seed: " << r.seed << "\n";

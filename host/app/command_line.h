@@ -34,6 +34,7 @@ struct CommandLine {
     bool verbose = false;         // -v: print the settings before running (the course's verbose output)
     // Depth of field (-d/--focus-distance, --aperture): override the rendered camera's values.
     std::optional<float> focusDistance, aperture;
+    std::optional<glm::vec3> up;  // --up x,y,z: the rendered camera's up vector (docs/RENDERING.md §1)
     std::vector<std::string> notices;  // one line per course flag accepted but ignored, and why
     // --part I/N (1-based): this process renders the rows of part I of N into an EXR that
     // `vkrt merge` combines (image_parts.h); 0/0 when the whole image is rendered.

@@ -63,6 +63,7 @@ ImageAttributes partAttributes(const CommandLine& cl, const std::string& device)
     if (r.background) render << "; bg " << r.background->r << "," << r.background->g << "," << r.background->b;
     if (cl.focusDistance) render << "; focus " << *cl.focusDistance;
     if (cl.aperture) render << "; aperture " << *cl.aperture;
+    if (cl.up) render << "; up " << cl.up->x << "," << cl.up->y << "," << cl.up->z;
     if (r.shutter) render << "; shutter " << r.shutter->x << "," << r.shutter->y;
     if (cl.general) render << "; general kernel";
     // Every estimator has the same expectation, but not the same samples: parts must share one.

@@ -11,11 +11,13 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include "camera_basis.h"
 #include "cpu_renderer.h"
 #include "interrupt.h"
 #include "output_file.h"
 #include "scene_inputs.h"
 #include "scene_loader.h"
+#include "scene_writing.h"
 
 namespace vkrt {
 
@@ -63,6 +65,13 @@ Scene loadWithWarnings(CommandLine& cl) {
     Camera& camera = scene.cameras[cl.render.camera];
     if (cl.focusDistance) camera.focusDistance = *cl.focusDistance;
     if (cl.aperture) camera.aperture = *cl.aperture;
+    // --up replaces the camera's up vector; only now is the gaze it must not be parallel to known.
+    if (cl.up) {
+        if (const std::string p = upProblem(*cl.up, camera.gaze); !p.empty())
+            throw std::invalid_argument("--up " + writing::vec3Text(*cl.up) + ": " + p + " (camera " + std::to_string(cl.render.camera) +
+                                        " of " + cl.scenePath + " looks along " + writing::vec3Text(camera.gaze) + ")");
+        camera.up = cl.up;
+    }
     // Half a lens asked for on the command line is said (a warning, so not under -q); `--aperture 0`
     // (the pinhole on purpose) is not.
     const bool askedForLens = cl.focusDistance.value_or(0.0f) > 0.0f || cl.aperture.value_or(0.0f) > 0.0f;

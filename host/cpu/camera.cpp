@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "camera_basis.h"
 #include "sampling.h"
 
 namespace vkrt::cpu {
@@ -10,12 +11,10 @@ CameraFrame makeCameraFrame(const Camera& camera, int width, int height) {
     CameraFrame f;
     f.type = camera.type;
     f.eye = camera.position;
-    const glm::vec3 gaze = glm::normalize(camera.gaze);
-    f.w = -gaze;
-    // (0,1,0) is the course's up vector; it is parallel to a vertical gaze, so switch to -z there.
-    const glm::vec3 up = std::fabs(gaze.y) > 0.9999f ? glm::vec3(0.0f, 0.0f, -1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
-    f.u = glm::normalize(glm::cross(up, f.w));
-    f.v = glm::cross(f.w, f.u);
+    const CameraBasis basis = cameraBasis(camera);  // shared with the GPU's frame constants
+    f.u = basis.u;
+    f.v = basis.v;
+    f.w = basis.w;
     f.focalLength = camera.focalLength;
     f.planeWidth = camera.imagePlaneWidth;
     f.planeHeight = camera.imagePlaneWidth * static_cast<float>(height) / static_cast<float>(width);

@@ -11,16 +11,6 @@
 
 namespace vkrt {
 
-CameraBasis cameraBasis(const glm::vec3& gaze) {
-    const glm::vec3 g = glm::normalize(gaze);
-    const glm::vec3 up = std::abs(g.y) > 0.9999f ? glm::vec3(0.0f, 0.0f, -1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
-    CameraBasis b;
-    b.w = -g;
-    b.u = glm::normalize(glm::cross(up, b.w));
-    b.v = glm::cross(b.w, b.u);
-    return b;
-}
-
 namespace {
 
 void require(bool ok, const std::string& what) {
@@ -47,7 +37,7 @@ gpu::FrameParams makeFrameParams(const Scene& scene, const SceneAccel& accel, co
                 " camera(s))");
 
     const Camera& camera = scene.cameras[options.camera];
-    const CameraBasis basis = cameraBasis(camera.gaze);
+    const CameraBasis basis = cameraBasis(camera);
     const float planeWidth = camera.imagePlaneWidth;
     const float planeHeight = planeWidth * static_cast<float>(options.height) / static_cast<float>(options.width);
     const auto rpp = static_cast<std::uint32_t>(options.samplesPerPixel);

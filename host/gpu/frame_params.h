@@ -2,19 +2,13 @@
 // plane (docs/RENDERING.md §1), sampling, seed, depth, and the sample grids of sampling.h.
 #pragma once
 
+#include "camera_basis.h"
 #include "device_host.h"
 #include "render_options.h"
 #include "scene.h"
 #include "scene_accel.h"
 
 namespace vkrt {
-
-struct CameraBasis {
-    glm::vec3 u, v, w;  // right, up, backward (w = -normalize(gaze)); orthonormal
-};
-
-// RENDERING.md §1: up = +y, or -z when looking (almost) straight up or down.
-CameraBasis cameraBasis(const glm::vec3& gaze);
 
 // Throws std::invalid_argument for options the kernel cannot honour (no pixels, no samples, a
 // camera index the scene does not have).

@@ -2,6 +2,7 @@
 
 #include <string_view>
 
+#include "camera_basis.h"
 #include "local_origin.h"
 #include "name_suggestion.h"
 #include "scene_rules.h"
@@ -11,7 +12,7 @@ namespace vkrt {
 
 Camera parseCamera(const ParseContext& context, pugi::xml_node node, glm::dvec3* exactPosition) {
     checkAttributes(context, node, {"type"});
-    checkChildren(context, node, {"position", "viewDir", "lookatPoint", "focalLength", "imagePlaneWidth", "focusDistance", "aperture"});
+    checkChildren(context, node, {"position", "viewDir", "lookatPoint", "focalLength", "imagePlaneWidth", "focusDistance", "aperture", "up"});
     Camera camera;
     camera.name = node.attribute("name").value();
     camera.where = {context.source.path(), context.source.lineOf(node)};
@@ -48,6 +49,11 @@ Camera parseCamera(const ParseContext& context, pugi::xml_node node, glm::dvec3*
         if (const std::string p = rules::viewDirProblem(camera.gaze); !p.empty()) context.fail(viewDir, p, elementText(viewDir));
     }
 
+    // After the gaze, which an up vector must not be parallel to (camera_basis.h).
+    if (const pugi::xml_node up = node.child("up")) {
+        camera.up = parseVec3(context, up);
+        if (const std::string p = upProblem(*camera.up, camera.gaze); !p.empty()) context.fail(up, p, elementText(up));
+    }
     if (const pugi::xml_node f = node.child("focalLength")) {
         camera.focalLength = parseScalar(context, f);
         if (const std::string p = rules::focalLengthProblem(camera.type, camera.focalLength); !p.empty())

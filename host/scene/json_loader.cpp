@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "camera_basis.h"
 #include "environment_loading.h"
 #include "json_context.h"
 #include "json_source.h"
@@ -441,7 +442,7 @@ private:
     }
 
     Camera parseCamera(const JsonNode& node, glm::dvec3& eye) {
-        checkKeys(context_, node, {"position", "viewDir", "lookatPoint", "focalLength", "imagePlaneWidth", "focusDistance", "aperture"},
+        checkKeys(context_, node, {"position", "viewDir", "lookatPoint", "focalLength", "imagePlaneWidth", "focusDistance", "aperture", "up"},
                   {"name", "type"});
         Camera camera;
         if (const JsonNode name = attributeMember(context_, node, "name")) camera.name = readText(context_, name);
@@ -471,6 +472,11 @@ private:
         } else {
             camera.gaze = direction;
             if (const std::string p = rules::viewDirProblem(camera.gaze); !p.empty()) context_.fail(viewDir, p, quoted(context_, viewDir));
+        }
+        // vkrt's addition, after the gaze it must not be parallel to (camera_basis.h).
+        if (const JsonNode up = member(node, "up")) {
+            camera.up = readVec3(context_, up);
+            if (const std::string p = upProblem(*camera.up, camera.gaze); !p.empty()) context_.fail(up, p, quoted(context_, up));
         }
         if (const JsonNode f = member(node, "focalLength")) {
             camera.focalLength = readScalar(context_, f);

@@ -76,6 +76,7 @@ private:
         out["imagePlaneWidth"] = number(c.imagePlaneWidth);
         if (c.focusDistance != 0.0f) out["focusDistance"] = number(c.focusDistance);
         if (c.aperture != 0.0f) out["aperture"] = number(c.aperture);
+        if (c.up) out["up"] = vec3(*c.up);
         return out;
     }
 

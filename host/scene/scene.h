@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,10 @@ struct Camera {
     // (the default) is the pinhole; the lens is used only when both are > 0.
     float focusDistance = 0.0f;
     float aperture = 0.0f;
+    // vkrt's addition (XML <up>, JSON "up", --up): the world direction shown at the top of the image,
+    // any length, not parallel to the gaze (camera_basis.h: upProblem). None: the course's rule,
+    // (0,1,0), or (1,0,0) for a camera looking straight up or down (docs/RENDERING.md §1).
+    std::optional<glm::vec3> up;
     bool thinLens() const { return focusDistance > 0.0f && aperture > 0.0f; }
     SourceLocation where;
 };

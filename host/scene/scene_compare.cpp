@@ -138,6 +138,8 @@ SceneDifferences compareScenes(const Scene& a, const Scene& b, std::size_t limit
         d.check(f + ".imagePlaneWidth", x.imagePlaneWidth, y.imagePlaneWidth);
         d.check(f + ".focusDistance", x.focusDistance, y.focusDistance);
         d.check(f + ".aperture", x.aperture, y.aperture);
+        d.check(f + ".up.given", x.up.has_value(), y.up.has_value());
+        if (x.up && y.up) d.check(f + ".up", *x.up, *y.up);
     });
     d.each("lights", a.lights, b.lights, [&](const std::string& f, const Light& x, const Light& y) {
         d.check(f + ".type", static_cast<long long>(x.type), static_cast<long long>(y.type));

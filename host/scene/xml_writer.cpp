@@ -65,6 +65,7 @@ private:
         scalar(node, "imagePlaneWidth", c.imagePlaneWidth);
         if (c.focusDistance != 0.0f) scalar(node, "focusDistance", c.focusDistance);
         if (c.aperture != 0.0f) scalar(node, "aperture", c.aperture);
+        if (c.up) vec3(node, "up", *c.up);
     }
 
     void writeLight(pugi::xml_node node, const Light& l) const {

@@ -29,7 +29,8 @@ DCamera makeDCamera(const Camera& camera, int width, int height) {
     c.eye = glm::dvec3(camera.position);
     const glm::dvec3 g = glm::normalize(glm::dvec3(camera.gaze));
     c.w = -g;
-    const glm::dvec3 up = std::abs(g.y) > 0.9999 ? glm::dvec3(0, 0, -1) : glm::dvec3(0, 1, 0);
+    // The camera's own up, else (0,1,0), or (1,0,0) when looking straight up or down.
+    const glm::dvec3 up = camera.up ? glm::dvec3(*camera.up) : std::abs(g.y) > 0.9999 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
     c.u = glm::normalize(glm::cross(up, c.w));
     c.v = glm::cross(c.w, c.u);
     c.focal = camera.focalLength;

@@ -225,7 +225,8 @@ TEST(ClosedForm, OrthographicSphere) {
 }
 
 TEST(ClosedForm, CameraLookingStraightDown) {
-    // |gaze.y| > 0.9999 switches the up vector to (0,0,-1) (RENDERING.md §1).
+    // |gaze.y| > 0.9999 switches the up vector to (1,0,0) (RENDERING.md §1): the independent double
+    // camera (analytic_scene.cpp) and the renderer must agree on it, or the off-centre sphere moves.
     DirectScene d = lambertianSphere();
     d.prims[0].a = {0.3, -5, 0.2};
     expectAgreement(d, perspectiveCamera({0, 0, 0}, {0, -1, 0}, 1.0f, 0.5f), options(40, 1, SamplerKind::Regular),

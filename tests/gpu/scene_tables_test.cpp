@@ -152,10 +152,10 @@ TEST(FrameParams, CameraBasisOfTheSpec) {
     EXPECT_EQ(b.w, glm::vec3(0.0f, 0.0f, 1.0f));
     EXPECT_EQ(b.u, glm::vec3(1.0f, 0.0f, 0.0f));
     EXPECT_EQ(b.v, glm::vec3(0.0f, 1.0f, 0.0f));
-    b = cameraBasis({0.0f, -2.0f, 0.0f});  // straight down: up = (0, 0, -1)
+    b = cameraBasis({0.0f, -2.0f, 0.0f});  // straight down: up = (1, 0, 0), world +x at the top
     EXPECT_EQ(b.w, glm::vec3(0.0f, 1.0f, 0.0f));
-    EXPECT_EQ(b.u, glm::normalize(glm::cross(glm::vec3(0.0f, 0.0f, -1.0f), b.w)));
-    EXPECT_EQ(b.v, glm::cross(b.w, b.u));
+    EXPECT_EQ(b.u, glm::vec3(0.0f, 0.0f, 1.0f));
+    EXPECT_EQ(b.v, glm::vec3(1.0f, 0.0f, 0.0f));
     b = cameraBasis({1.0f, 0.3f, -2.0f});
     EXPECT_NEAR(glm::dot(b.u, b.v), 0.0f, 1e-6f);
     EXPECT_NEAR(glm::dot(b.u, b.w), 0.0f, 1e-6f);
@@ -188,6 +188,22 @@ TEST(FrameParams, CarriesOptionsAndGrids) {
     o.background = glm::vec3(1.0f, 0.0f, 1.0f);
     f = makeFrameParams(tiny.scene, tiny.accel, o);
     EXPECT_EQ(glm::vec3(f.background), glm::vec3(1.0f, 0.0f, 1.0f));
+}
+
+// The kernel takes its basis from the frame constants (shaders/camera.glsl), so the camera's own up
+// vector reaches the GPU only through makeFrameParams.
+TEST(FrameParams, CarryTheCamerasUpVector) {
+    test::TinyScene tiny;
+    tiny.scene.cameras[0].gaze = glm::vec3(0.0f, -1.0f, 0.0f);
+    const RenderOptions o = test::smallRender(8, 8, 1);
+    gpu::FrameParams f = makeFrameParams(tiny.scene, tiny.accel, o);
+    EXPECT_EQ(glm::vec3(f.cameraU), glm::vec3(0.0f, 0.0f, 1.0f));  // no up: the rule, +x at the top
+    EXPECT_EQ(glm::vec3(f.cameraV), glm::vec3(1.0f, 0.0f, 0.0f));
+    tiny.scene.cameras[0].up = glm::vec3(0.0f, 0.0f, -3.0f);
+    f = makeFrameParams(tiny.scene, tiny.accel, o);
+    EXPECT_EQ(glm::vec3(f.cameraU), glm::vec3(1.0f, 0.0f, 0.0f));
+    EXPECT_EQ(glm::vec3(f.cameraV), glm::vec3(0.0f, 0.0f, -1.0f));
+    EXPECT_EQ(glm::vec3(f.cameraW), glm::vec3(0.0f, 1.0f, 0.0f));
 }
 
 TEST(FrameParams, RefusesOptionsTheKernelCannotHonour) {

@@ -1,5 +1,6 @@
 // <camera>, <light>, background and environment-map forms (docs/XML_FORMAT.md §3.1-3.4).
 #include "json_writer.h"
+#include "scene_compare.h"
 #include "scene_test_files.h"
 #include "xml_writer.h"
 
@@ -144,6 +145,70 @@ TEST_F(CameraParsing, BadLensValuesAreErrorsAndHalfALensIsAWarning) {
     expectIssue(d.warnings()[0], lineOf(half, "<focusDistance>"), "focusDistance", "c");
     EXPECT_NE(d.warnings()[0].problem.find("stays a pinhole"), std::string::npos);
     EXPECT_FALSE(scene.cameras[0].thinLens());
+}
+
+// Issue 39: the up vector is vkrt's addition (the course's formats have none; docs/RENDERING.md §1
+// has the rule without one): an optional camera element or key, any length, kept by both writers
+// and compared by the round trip's model comparison; a file without one writes none.
+TEST_F(CameraParsing, UpVectorIsAnOptionalElementThatBothWritersKeep) {
+    const Scene xml = loadClean(sceneWithCameras(
+        "<camera><position>0 5 0</position><viewDir>0 -1 0</viewDir><up>0 0 -2.5</up></camera>"));
+    ASSERT_TRUE(xml.cameras[0].up.has_value());
+    EXPECT_EQ(*xml.cameras[0].up, glm::vec3(0, 0, -2.5f));  // kept as written, not normalised
+    const Scene json = loadJsonClean("{\"scene\": {\"camera\": [{\"position\": \"0 5 0\", \"viewDir\": \"0 -1 0\", \"up\": \"0 0 -2.5\"}]}}");
+    ASSERT_TRUE(json.cameras[0].up.has_value());
+    EXPECT_EQ(*json.cameras[0].up, glm::vec3(0, 0, -2.5f));
+
+    for (const Scene& back : {loadClean(xmlSceneText(xml, dir)), loadJsonClean(jsonSceneText(xml, dir))}) {
+        const SceneDifferences d = compareScenes(xml, back);
+        EXPECT_TRUE(d.equal()) << d.summary();
+        ASSERT_TRUE(back.cameras[0].up.has_value());
+        EXPECT_EQ(*back.cameras[0].up, glm::vec3(0, 0, -2.5f));
+    }
+    const Scene none = loadClean(sceneWithCameras("<camera><position>0 5 0</position><viewDir>0 -1 0</viewDir></camera>"));
+    EXPECT_FALSE(none.cameras[0].up.has_value());
+    for (const std::string& text : {xmlSceneText(none, dir), jsonSceneText(none, dir)})
+        EXPECT_TRUE(text.find("<up>") == std::string::npos && text.find("\"up\"") == std::string::npos) << text;
+
+    // The comparison the converter's round trip relies on sees a lost, added or changed up vector.
+    Scene changed = xml;
+    changed.cameras[0].up = glm::vec3(1, 0, 0);
+    EXPECT_NE(compareScenes(xml, changed).summary().find("cameras[0].up: 0 0 -2.5 vs 1 0 0"), std::string::npos)
+        << compareScenes(xml, changed).summary();
+    EXPECT_NE(compareScenes(xml, none).summary().find("cameras[0].up.given"), std::string::npos)
+        << compareScenes(xml, none).summary();
+}
+
+TEST_F(CameraParsing, UpVectorsThatCannotOrientTheCameraAreErrorsAtTheElement) {
+    const struct {
+        const char* up;
+        const char* problem;
+    } cases[] = {
+        {"0 0 0", "zero length"},
+        {"0 2 0", "parallel to the view direction"},
+        {"0 -1e-30 0", "parallel to the view direction"},  // any length, the direction decides
+        {"0.00001 1 0", "parallel to the view direction"},  // within the rule's threshold
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.up);
+        const std::string xml = sceneWithCameras(
+            std::string("<camera><position>0 5 0</position><viewDir>0 -1 0</viewDir>\n<up>") + c.up + "</up></camera>");
+        const Issue e = errorOf(xml);
+        expectIssue(e, lineOf(xml, "<up>"), "up", c.up);
+        EXPECT_NE(e.problem.find(c.problem), std::string::npos) << e.message();
+
+        const std::string json = std::string("{\"scene\": {\"camera\": [{\"position\": \"0 5 0\", \"viewDir\": \"0 -1 0\",\n\"up\": \"") +
+                                 c.up + "\"}]}}";
+        const Issue j = jsonErrorOf(json);
+        expectJsonIssueAt(j, json, std::string("\"") + c.up, "scene.camera[0].up", c.up);
+        EXPECT_NE(j.problem.find(c.problem), std::string::npos) << j.message();
+    }
+    // Parallel to a lookatPoint gaze too; a non-number is the usual vector error.
+    const std::string lookat = sceneWithCameras(
+        "<camera><position>0 0 0</position><lookatPoint>3 0 0</lookatPoint>\n<up>-1 0 0</up></camera>");
+    expectIssue(errorOf(lookat), lineOf(lookat, "<up>"), "up", "-1 0 0");
+    const std::string nan = sceneWithCameras("<camera><position>0 0 0</position><viewDir>0 0 -1</viewDir>\n<up>nan 1 0</up></camera>");
+    EXPECT_EQ(errorOf(nan).line, lineOf(nan, "<up>"));
 }
 
 TEST_F(CameraParsing, UnknownCameraTypeWarnsAndIsPerspective) {

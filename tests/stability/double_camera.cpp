@@ -7,7 +7,10 @@ namespace vkrt::stability {
 DoubleRay cameraRay(const Camera& camera, int width, int height, double x, double y) {
     const glm::dvec3 gaze = glm::normalize(glm::dvec3(camera.gaze));
     const glm::dvec3 w = -gaze;
-    const glm::dvec3 up = std::fabs(gaze.y) > 0.9999 ? glm::dvec3(0.0, 0.0, -1.0) : glm::dvec3(0.0, 1.0, 0.0);
+    // The camera's own up, else (0,1,0), or (1,0,0) when looking straight up or down.
+    const glm::dvec3 up = camera.up ? glm::dvec3(*camera.up)
+                          : std::fabs(gaze.y) > 0.9999 ? glm::dvec3(1.0, 0.0, 0.0)
+                                                       : glm::dvec3(0.0, 1.0, 0.0);
     const glm::dvec3 u = glm::normalize(glm::cross(up, w));
     const glm::dvec3 v = glm::cross(w, u);
     const double planeWidth = camera.imagePlaneWidth;

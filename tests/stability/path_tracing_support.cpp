@@ -72,7 +72,11 @@ RenderOptions pathOptions(int size, int rpp, int maxDepth, Estimator estimator) 
     return o;
 }
 
-Camera topView(float half, float height) { return orthographic({0.0f, height, 0.0f}, {0.0f, -1.0f, 0.0f}, 2.0f * half); }
+Camera topView(float half, float height) {
+    Camera c = orthographic({0.0f, height, 0.0f}, {0.0f, -1.0f, 0.0f}, 2.0f * half);
+    c.up = glm::vec3(0.0f, 0.0f, -1.0f);
+    return c;
+}
 
 Image expectedTopView(int n, float half, const PlaneRadiance& f, int kSub) {
     Image image(n, n);

@@ -35,8 +35,8 @@ Shape meshShape(int mesh);
 RenderOptions pathOptions(int size, int rpp, int maxDepth, Estimator estimator);
 
 // An orthographic camera at height `height` looking straight down at the plane y = 0 and seeing
-// the square x, z in [-half, half]. RENDERING.md §1 with gaze -y: up is (0,0,-1), so u = +x and
-// v = -z: pixel (i, j) of an n x n image covers x in half*(2i/n - 1 .. 2(i+1)/n - 1), z likewise
+// the square x, z in [-half, half]. Its up vector is (0,0,-1) (RENDERING.md §1; without one a
+// straight-down camera has +x at the top), so u = +x and v = -z: pixel (i, j) of an n x n image covers x in half*(2i/n - 1 .. 2(i+1)/n - 1), z likewise
 // with j (row 0 at z = -half).
 Camera topView(float half, float height);
 // The mean of f over each pixel's footprint on y = 0 (a sub x sub midpoint grid per pixel), as an
