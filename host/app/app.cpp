@@ -13,6 +13,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include "check_command.h"
 #include "command_line.h"
 #include "image_parts.h"
 #include "cpu_renderer.h"
@@ -271,6 +272,7 @@ int runVkrt(int argc, const char* const* argv) {
         switch (cl.command) {
         case Command::ListDevices: return runListDevices();
         case Command::Compare: return runCompare(cl);
+        case Command::Check: return runCheck(cl);
         case Command::Sweep:
             if (!launchedAsMpiRank()) return runSweep(cl);
             // The renders spread over the ranks, rank 0 writing the files (shared_renders.h).

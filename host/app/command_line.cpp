@@ -10,6 +10,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "image_check.h"
+
 namespace vkrt {
 
 namespace {
@@ -81,6 +83,12 @@ void addImageOptions(CLI::App& app, CommandLine& cl, std::string& bg) {
         ->check(CLI::Range(1, 4096));
     app.add_option("--seed", cl.render.seed, "Random seed: the same seed and options give the same image");
     app.add_option("--bg", bg, "Background colour r,g,b (overrides the scene's bgColor)");
+    app.add_option_function<std::string>(
+           "--look", [&cl](const std::string& name) { cl.referenceLook = name == "reference"; },
+           "reference: the instructor's reference renders' look (50/255 grey background, no environment "
+           "map; --bg still overrides the colour); scene: the scene's own background and environment")
+        ->check(CLI::IsMember({"scene", "reference"}))
+        ->default_str("scene");
     app.add_flag("--no-environment{false}", cl.render.environment,
                  "Rays that leave the scene see the background colour even when the scene names an environment map "
                  "(as in the course's own ray tracers and its reference renders)");
@@ -347,21 +355,27 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
     if (!args.empty() && args[0] == "convert") return parseConvert({args.begin() + 1, args.end()});
     if (!args.empty() && args[0] == "merge") return parseMerge({args.begin() + 1, args.end()});
-    if (!args.empty() && (args[0] == "compare" || args[0] == "sweep")) {
-        cl.command = args[0] == "compare" ? Command::Compare : Command::Sweep;
+    if (!args.empty() && (args[0] == "compare" || args[0] == "sweep" || args[0] == "check")) {
+        cl.command = args[0] == "compare" ? Command::Compare : args[0] == "check" ? Command::Check : Command::Sweep;
         args.erase(args.begin());
     }
     const bool compare = cl.command == Command::Compare;
     const bool sweep = cl.command == Command::Sweep;
+    const bool check = cl.command == Command::Check;
 
-    CLI::App app{compare ? "vkrt compare: render a scene on the GPU and on the CPU reference with the same seed and "
+    CLI::App app{check ? "vkrt check: is your image the same picture as vkrt's render of the scene? Renders the scene "
+                         "on the CPU reference at your image's size and tests every pixel against the render's own "
+                         "noise; names the common mistake (flipped, gamma, background, a light missing...) that "
+                         "explains a difference. Writes IMAGE_vkrt_reference.png and IMAGE_vkrt_diff.png beside your "
+                         "image. Exit code 0: same picture, 3: different.\nUsage: vkrt check scene.xml yours.png [options]"
+                 : compare ? "vkrt compare: render a scene on the GPU and on the CPU reference with the same seed and "
                            "report how far apart the images are (--stat: different seeds and a z-test)"
                  : sweep ? "vkrt sweep: measure error against a converged reference and render time over samplers, rays "
                            "per pixel, seeds and devices; writes DIR/sweep.csv, DIR/error_vs_*.png and DIR/report.md"
                          : "vkrt: a Vulkan compute-shader ray tracer for the UMD course scene format.\n"
                            "Usage: vkrt scene.xml [options]  |  vkrt compare scene.xml [options]  |  "
-                           "vkrt sweep scene.xml --out DIR [options]  |  vkrt convert in.xml -o out.json  |  vkrt --list-devices",
-                 compare ? "vkrt compare" : sweep ? "vkrt sweep" : "vkrt"};
+                           "vkrt check scene.xml yours.png  |  vkrt sweep scene.xml --out DIR [options]  |  vkrt convert in.xml -o out.json  |  vkrt --list-devices",
+                 check ? "vkrt check" : compare ? "vkrt compare" : sweep ? "vkrt sweep" : "vkrt"};
     app.set_help_flag("-?,--help", "Print this help and exit (-h is the height, as in the course)");
     app.option_defaults()->always_capture_default();
     std::string bg, sampler = "jittered", device = "auto";
@@ -374,7 +388,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
     CourseText course;
     addCourseOptions(app, cl, course);
     bool listDevices = false;
-    if (compare) {
+    if (check) {
+        app.add_option("image", cl.imagePath, "Your image of the scene (.png, .jpg, .ppm or .exr)")->required();
+    } else if (compare) {
         app.add_option("-o,--output", cl.heatMapPath,
                        "Difference heat map image with its legend in /255 (with --stat the z map); none is written "
                        "without -o. Exit code 3 when the images fail the agreement rule (or --stat's z-test)");
@@ -440,9 +456,20 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
         if (cl.parts > 0 && (cl.watch || cl.render.checkpoints > 1))
             throw CLI::ValidationError(cl.watch ? "--watch" : "--progressive",
                                        "writes the whole image from one process; a --part is one process's share of it");
-        if (!compare && !sweep && app.count("--output") > 0 && cl.outputPath.empty())
+        if (check) {
+            for (const char* size : {"--width", "--height", "--aspect"})
+                if (app.count(size) > 0)
+                    throw CLI::ValidationError(size, "check renders at your image's size: leave -w, -h and -a out");
+            for (const char* gpu : {"--device", "--gpu", "--general-kernel", "--shader-dir"})
+                if (app.count(gpu) > 0)
+                    throw CLI::ValidationError(gpu, "check renders its reference on the CPU (it needs each pixel's "
+                                                    "sample variance): leave it out");
+            if (app.count("--rpp") == 0) cl.render.samplesPerPixel = kCheckReferenceRpp;
+        }
+        if (!compare && !sweep && !check && app.count("--output") > 0 && cl.outputPath.empty())
             throw CLI::ValidationError("-o", "the output path is empty (give a file name such as out.png, or leave -o out)");
         if (cl.scenePath.empty()) throw CLI::RequiredError("a scene file (vkrt scene.xml)");
+        if (cl.referenceLook) applyReferenceLook(cl.render);  // before --bg, which overrides its colour
         if (!bg.empty()) cl.render.background = parseColour(bg);
         cl.render.sampler = parseSampler(sampler);  // CLI11 checked the name
         cl.device = device == "cpu" ? DeviceChoice::Cpu : device == "gpu" ? DeviceChoice::Gpu : DeviceChoice::Auto;

@@ -1,5 +1,5 @@
 // The vkrt command line: `vkrt scene.xml [options]`, `vkrt compare scene.xml [options]`,
-// `vkrt convert in.xml -o out.json`, `vkrt --list-devices`, plus every flag of the course's handleGraphicsArgs (-i -o -w -h -a -n -r -k
+// `vkrt check scene.xml image.png`, `vkrt convert in.xml -o out.json`, `vkrt --list-devices`, plus every flag of the course's handleGraphicsArgs (-i -o -w -h -a -n -r -k
 // -v -s -x -y -?; -d is refused until depth of field exists).
 #pragma once
 
@@ -12,7 +12,7 @@
 
 namespace vkrt {
 
-enum class Command { Render, Compare, Sweep, Convert, Merge, ListDevices };
+enum class Command { Render, Compare, Check, Sweep, Convert, Merge, ListDevices };
 enum class DeviceChoice { Auto, Cpu, Gpu };
 
 struct CommandLine {
@@ -30,6 +30,8 @@ struct CommandLine {
     std::optional<int> camera;    // --camera; default: the scene's <sceneParameters><camera>, else the first
     bool statistical = false;     // compare --stat: z-test of GPU and CPU renders with different seeds
     bool keepRenders = false;     // compare --keep: write both renders beside the heat map
+    std::string imagePath;        // check: the image to judge against vkrt's render of the scene
+    bool referenceLook = false;   // --look reference: applyReferenceLook (render_options.h)
     study::SweepOptions sweep;    // sweep: everything but the render options above (copied in by the parser)
     bool verbose = false;         // -v: print the settings before running (the course's verbose output)
     // Depth of field (-d/--focus-distance, --aperture): override the rendered camera's values.

@@ -71,4 +71,9 @@ glm::ivec2 partRows(int height, int part, int parts) {
     return {edge(part - 1), edge(part)};
 }
 
+void applyReferenceLook(RenderOptions& options) {
+    options.background = glm::vec3(kReferenceLookBackground);
+    options.environment = false;
+}
+
 }  // namespace vkrt

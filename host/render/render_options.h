@@ -73,6 +73,13 @@ struct RenderOptions {
     const std::atomic<bool>* cancel = nullptr;
 };
 
+// The look of the instructor's reference renders (../shared/scenes/upstream/reference): a 50/255
+// grey background whatever the scene's bgColor says, and no environment map (the course's code
+// that made them never sampled one); their 250x250 at 16 jittered rpp are RenderOptions' defaults.
+// `--look reference` applies it; an explicit --bg still wins (the command line applies it after).
+inline constexpr float kReferenceLookBackground = 50.0f / 255.0f;
+void applyReferenceLook(RenderOptions& options);
+
 struct RenderCancelled {};
 
 // Where the passes of a progressive render end, in `units` (samples on the CPU, dispatch passes on

@@ -9,9 +9,7 @@
 
 namespace vkrt::study {
 
-namespace {
-
-// |z| whose two-sided p-value erfc(|z|/sqrt 2) equals `level`, by bisection (erfc is monotone).
+// By bisection: erfc is monotone.
 double zForLevel(double level) {
     double lo = 0.0, hi = 40.0;
     for (int i = 0; i < 200; ++i) {
@@ -21,7 +19,11 @@ double zForLevel(double level) {
     return 0.5 * (lo + hi);
 }
 
-}  // namespace
+// n independent tests at this level have a family-wise false-failure rate of alpha;
+// -expm1(log1p(-alpha) / n) is 1 - (1 - alpha)^(1/n) without cancellation.
+double sidakLevel(double alpha, std::size_t values) {
+    return values == 0 ? alpha : -std::expm1(std::log1p(-alpha) / static_cast<double>(values));
+}
 
 ZTestResult zTest(const Image& a, const Image& b, const Image& differenceVariance, const ZTestOptions& options) {
     requireSameSize(a, b, "zTest");
@@ -35,9 +37,7 @@ ZTestResult zTest(const Image& a, const Image& b, const Image& differenceVarianc
 
     ZTestResult r;
     r.values = a.pixels.size() * 3;
-    // Sidak: n independent tests at this level have a family-wise false-failure rate of alpha.
-    // -expm1(log1p(-alpha) / n) is 1 - (1 - alpha)^(1/n) without cancellation.
-    r.levelPerValue = r.values == 0 ? options.alpha : -std::expm1(std::log1p(-options.alpha) / static_cast<double>(r.values));
+    r.levelPerValue = sidakLevel(options.alpha, r.values);
     r.zLimit = zForLevel(r.levelPerValue);
     r.map = Image(a.width, a.height);
     for (std::size_t k = 0; k < a.pixels.size(); ++k) {

@@ -35,6 +35,11 @@ struct ZTestResult {
     double passedFraction() const { return values == 0 ? 1.0 : static_cast<double>(passed) / static_cast<double>(values); }
 };
 
+// The Sidak-corrected per-value significance level for n values at family-wise rate alpha, and
+// the |z| whose two-sided p-value equals it.
+double sidakLevel(double alpha, std::size_t values);
+double zForLevel(double level);
+
 // var(a - b) per pixel and channel is `differenceVariance`. Throws std::invalid_argument when the
 // sizes differ or an option is out of range.
 ZTestResult zTest(const Image& a, const Image& b, const Image& differenceVariance, const ZTestOptions& options = {});

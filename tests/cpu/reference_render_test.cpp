@@ -243,10 +243,9 @@ TEST_P(ReferenceRender, AgreesWithTheInstructorsImage) {
     options.width = kSize;
     options.height = kSize;
     options.samplesPerPixel = 16;
-    options.background = glm::vec3(50.0f / 255.0f);
-    // mirrorTest2.xml names an environment map (data/reef_); the course's code that made the
-    // references never sampled one (../shared/scenes/JSON_FORMAT.md §5.1): its rays saw the background.
-    options.environment = false;
+    // `--look reference`: the 50/255 background, and no environment map (mirrorTest2.xml names
+    // data/reef_; the course's code that made the references never sampled one, JSON_FORMAT.md §5.1).
+    applyReferenceLook(options);
     if (r.kind == Reference::RecolouredLights) {
         const glm::vec3 colours[] = {{1, 0, 0}, {0, 0.8f, 0}, {0, 0, 0.25f}};
         ASSERT_EQ(scene.lights.size(), 3u) << "simpleTwoSpheres.xml no longer has the README's three lights";
