@@ -118,7 +118,6 @@ std::vector<Trial> tryRenderedMistakes(const Scene& scene, const RenderOptions& 
 }  // namespace
 
 int runCheck(CommandLine& cl) {
-    const auto start = std::chrono::steady_clock::now();
     const Image yours = readImage(cl.imagePath);
     const std::string referencePath = besideImage(cl.imagePath, "_vkrt_reference.png");
     const std::string diffPath = besideImage(cl.imagePath, "_vkrt_diff.png");
@@ -188,7 +187,6 @@ int runCheck(CommandLine& cl) {
             std::printf("                 most differing pixels are black in vkrt's image but lit in yours: an ambient "
                         "term? The course's shaders have none (unlit is black)\n");
     }
-    if (!cl.render.quiet) std::fprintf(stderr, "check: %.2f s in all\n", secondsSince(start));
     std::printf("verdict          DIFFERENT: your image is not vkrt's picture of this scene\n");
     return kExitDifferentPicture;
 }
