@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include "output_file.h"
 #include "render_options.h"
 
 namespace vkrt {
@@ -23,6 +24,7 @@ extern "C" void onInterrupt(int) {
         ::_exit(kExitInterrupted);
     }
     if (g_interrupted.exchange(true)) {
+        removeTemporaryBeingWritten();  // the second Ctrl-C may come during a write
         std::signal(SIGINT, SIG_DFL);
         std::raise(SIGINT);
     }

@@ -1,8 +1,12 @@
 #include "output_file.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
+#include <csignal>
+#include <cstring>
 #include <filesystem>
+#include <mutex>
 #include <stdexcept>
 #include <system_error>
 
@@ -33,10 +37,78 @@ void checkNotTheInput(const std::string& output, const std::string& input) {
         throw std::runtime_error(output + ": is the scene file itself; choose another output name (-o)");
 }
 
+namespace {
+
+// The temporary being written, for a signal handler to remove: a fixed buffer (a handler may not
+// allocate) published by an atomic flag. One write at a time per process is what vkrt does; a
+// second concurrent writer simply is not registered.
+char g_temporary[4096];
+std::atomic<bool> g_temporarySet{false};
+
+extern "C" void removeTemporaryAndDie(int signal) {
+    removeTemporaryBeingWritten();
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+}
+
+// SIGTERM and SIGHUP (a batch scheduler's kill, a closed terminal) end the process by default;
+// they first remove the temporary. A disposition someone else set (ignore, a handler) is kept.
+void installTerminationCleanup() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        for (int signal : {SIGTERM, SIGHUP}) {
+            struct sigaction current {};
+            if (::sigaction(signal, nullptr, &current) == 0 && current.sa_handler == SIG_DFL)
+                std::signal(signal, removeTemporaryAndDie);
+        }
+    });
+}
+
+class RegisteredTemporary {
+public:
+    explicit RegisteredTemporary(const fs::path& temp) {
+        const std::string& text = temp.native();
+        if (text.size() < sizeof g_temporary && !g_temporarySet.load()) {
+            std::memcpy(g_temporary, text.c_str(), text.size() + 1);
+            g_temporarySet.store(true);
+            registered_ = true;
+        }
+    }
+    ~RegisteredTemporary() {
+        if (registered_) g_temporarySet.store(false);
+    }
+    RegisteredTemporary(const RegisteredTemporary&) = delete;
+    RegisteredTemporary& operator=(const RegisteredTemporary&) = delete;
+
+private:
+    bool registered_ = false;
+};
+
+// Where a write to `path` lands: a symbolic link's target (followed through a chain of links), so
+// that -o through a link updates the file it points to instead of replacing the link by a file.
+fs::path followLinks(const fs::path& path) {
+    fs::path target = path;
+    std::error_code ec;
+    for (int hops = 0; hops < 40 && fs::is_symlink(target, ec); ++hops) {
+        const fs::path next = fs::read_symlink(target, ec);
+        if (ec) break;
+        target = next.is_absolute() ? next : target.parent_path() / next;
+    }
+    return target;
+}
+
+}  // namespace
+
+void removeTemporaryBeingWritten() noexcept {
+    if (g_temporarySet.load()) ::unlink(g_temporary);
+}
+
 void writeAtomically(const std::string& path, const std::function<void(const std::string& temporary)>& write) {
+    installTerminationCleanup();
     // Same folder, so the rename is atomic (and relative paths inside resolve as in the result).
-    const fs::path target(path);
+    const fs::path target = followLinks(path);
     const fs::path temp = target.parent_path() / ("." + target.filename().string() + ".partial-" + std::to_string(::getpid()));
+    const RegisteredTemporary registered(temp);
     try {
         write(temp.string());
         fs::rename(temp, target);

@@ -20,6 +20,13 @@ void checkNotTheInput(const std::string& output, const std::string& input);
 
 // Calls write(temporary) for a temporary name in `path`'s folder (the pid keeps two processes apart),
 // then renames it to `path`; on any exception the temporary is removed and the exception goes on.
+// When `path` is a symbolic link, the file it points to is written and the link stays. SIGTERM and
+// SIGHUP during the write remove the temporary before they end the process (when their handling
+// is the default one).
 void writeAtomically(const std::string& path, const std::function<void(const std::string& temporary)>& write);
+
+// Removes the temporary a writeAtomically is writing, if any: async-signal-safe (unlink), for the
+// handlers of signals that end the process (interrupt.cpp's second Ctrl-C).
+void removeTemporaryBeingWritten() noexcept;
 
 }  // namespace vkrt
