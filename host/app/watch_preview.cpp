@@ -28,8 +28,10 @@ void WatchPreview::error(const std::string& message) {
 
 void WatchPreview::publish(const Image* image) {
     if (!server_) return;
+    // A path or message that is not UTF-8 (a file name in another encoding) is shown with U+FFFD
+    // in its place: JSON holds only UTF-8, and a throwing dump would end the watch.
     const nlohmann::json status = {{"image", images_}, {"status", status_}, {"error", error_}, {"scene", scene_}};
-    server_->publish(image ? encodePng(*image) : std::vector<unsigned char>{}, status.dump());
+    server_->publish(image ? encodePng(*image) : std::vector<unsigned char>{}, status.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
 }
 
 }  // namespace vkrt

@@ -47,8 +47,16 @@ setInterval(refresh, 500);
 </body></html>
 )";
 
+// Limits that keep the page's server small whatever a client sends: it serves three GETs, so a
+// request body is refused (413) past a few KiB; a client that sends nothing for 2 s is dropped; and
+// 32 worker threads outlast a handful of slow clients.
+constexpr std::size_t kMaxRequestBody = 4096;
+constexpr time_t kReadTimeoutSeconds = 2;
+constexpr std::size_t kWorkerThreads = 32;
+
 struct Server {
     httplib::Server http;
+    int port = 0;
     std::thread thread;
     std::mutex mutex;  // guards png and status
     std::vector<unsigned char> png;
@@ -58,6 +66,24 @@ struct Server {
 void* start(int* port, std::string& error) {
     auto server = std::make_unique<Server>();
     Server* s = server.get();
+    s->http.new_task_queue = [] { return new httplib::ThreadPool(kWorkerThreads); };
+    s->http.set_payload_max_length(kMaxRequestBody);
+    s->http.set_read_timeout(kReadTimeoutSeconds);
+    s->http.set_keep_alive_timeout(kReadTimeoutSeconds);
+    // DNS rebinding: a web site whose name resolves to 127.0.0.1 could read the page from the
+    // user's browser. Only requests addressed to this server by its loopback name pass, and
+    // cross-site fetches (an Origin other than the page's own) are refused.
+    s->http.set_pre_routing_handler([s](const httplib::Request& req, httplib::Response& res) {
+        const std::string port = std::to_string(s->port);
+        const std::string host = req.get_header_value("Host");
+        const std::string origin = req.get_header_value("Origin");
+        const bool hostOk = host == "127.0.0.1:" + port || host == "localhost:" + port;
+        const bool originOk = origin.empty() || origin == "http://127.0.0.1:" + port || origin == "http://localhost:" + port;
+        if (hostOk && originOk) return httplib::Server::HandlerResponse::Unhandled;
+        res.status = 403;
+        res.set_content("vkrt preview: only http://127.0.0.1:" + port + "/ is served\n", "text/plain");
+        return httplib::Server::HandlerResponse::Handled;
+    });
     s->http.Get("/", [](const httplib::Request&, httplib::Response& res) { res.set_content(kPage, "text/html; charset=utf-8"); });
     s->http.Get("/status", [s](const httplib::Request&, httplib::Response& res) {
         std::lock_guard lock(s->mutex);
@@ -85,6 +111,7 @@ void* start(int* port, std::string& error) {
         error = "cannot listen on 127.0.0.1:" + std::to_string(*port) + " (in use by another program?)";
         return nullptr;
     }
+    s->port = *port;
     s->thread = std::thread([s] { s->http.listen_after_bind(); });
     return server.release();
 }
