@@ -244,6 +244,10 @@ int runConvert(const CommandLine& cl) {
     if (conversion.renamedShaders > 0)
         std::cerr << "note: " << conversion.renamedShaders
                   << " nameless shader(s) written as 'unnamed shader N' (a shader needs a name to be referred to there)\n";
+    if (conversion.escapedNames > 0)
+        std::cerr << "note: " << conversion.escapedNames << " name(s) held characters " << conversion.format
+                  << " cannot hold (" << (conversion.format == "json" ? "bytes that are not UTF-8" : "control characters")
+                  << "); written with \\xNN escapes in their place\n";
     for (const std::string& name : conversion.definedPlaceholders)
         std::cerr << "note: shader '" << name << "' is named but not defined in " << cl.scenePath
                   << "; written as the grey Lambertian placeholder it renders as\n";

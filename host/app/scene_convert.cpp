@@ -68,10 +68,13 @@ Conversion convertScene(const std::string& input, const std::string& output, Dia
     checkCancel();
 
     const fs::path directory = fs::path(output).parent_path();
-    const std::string text = conversion.format == "json" ? jsonSceneText(scene, directory) : xmlSceneText(scene, directory);
+    const bool json = conversion.format == "json";
+    const Scene written = writing::withWritableNames(scene, json ? writing::NameFormat::Json : writing::NameFormat::Xml,
+                                                     &conversion.escapedNames);
+    const std::string text = json ? jsonSceneText(written, directory) : xmlSceneText(written, directory);
 
     // The model the file must load back as (the names and placeholders a write changes).
-    const Scene expected = writing::asWritten(scene);
+    const Scene expected = writing::asWritten(written);
     for (std::size_t i = 0; i < scene.shaders.size(); ++i) {
         if (scene.shaders[i].name.empty()) ++conversion.renamedShaders;
         if (scene.shaders[i].undefined) conversion.definedPlaceholders.push_back(scene.shaders[i].name);

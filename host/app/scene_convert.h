@@ -4,6 +4,7 @@
 #pragma once
 
 #include <atomic>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@ struct Conversion {
     std::string format;   // "json" or "xml"
     std::string counts;   // "1 camera, 2 lights, ..." for the summary line
     int renamedShaders = 0;  // nameless shaders written under a generated name
+    std::size_t escapedNames = 0;  // names written with \xNN escapes (writing::writableName)
     std::vector<std::string> definedPlaceholders;  // shaders the input names but never defines, written
                                                    // as the grey placeholder they render as
 };

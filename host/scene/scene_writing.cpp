@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cstdio>
+#include <map>
 #include <set>
 #include <system_error>
 
@@ -108,6 +109,114 @@ Scene asWritten(Scene scene) {
         scene.shaders[i].name = names[i];
         scene.shaders[i].undefined = false;
     }
+    return scene;
+}
+
+bool isValidUtf8(const std::string& text) {
+    std::size_t i = 0;
+    const std::size_t n = text.size();
+    while (i < n) {
+        const unsigned char c = static_cast<unsigned char>(text[i]);
+        std::size_t length = 0;
+        unsigned char lo = 0x80, hi = 0xBF;  // the second byte's range (RFC 3629, table 3-7 of Unicode)
+        if (c < 0x80) length = 1;
+        else if (c >= 0xC2 && c <= 0xDF) length = 2;
+        else if (c == 0xE0) length = 3, lo = 0xA0;
+        else if ((c >= 0xE1 && c <= 0xEC) || c == 0xEE || c == 0xEF) length = 3;
+        else if (c == 0xED) length = 3, hi = 0x9F;  // no surrogates
+        else if (c == 0xF0) length = 4, lo = 0x90;
+        else if (c >= 0xF1 && c <= 0xF3) length = 4;
+        else if (c == 0xF4) length = 4, hi = 0x8F;
+        else return false;
+        if (i + length > n) return false;
+        for (std::size_t k = 1; k < length; ++k) {
+            const unsigned char b = static_cast<unsigned char>(text[i + k]);
+            if (b < (k == 1 ? lo : 0x80) || b > (k == 1 ? hi : 0xBF)) return false;
+        }
+        i += length;
+    }
+    return true;
+}
+
+namespace {
+
+std::string hexEscape(unsigned char byte) {
+    static const char digits[] = "0123456789ABCDEF";
+    return std::string("\\x") + digits[byte >> 4] + digits[byte & 15];
+}
+
+// The length of the valid UTF-8 sequence at text[i], 0 when there is none.
+std::size_t utf8SequenceAt(const std::string& text, std::size_t i) {
+    for (std::size_t length = 1; length <= 4 && i + length <= text.size(); ++length)
+        if (isValidUtf8(text.substr(i, length))) return length;
+    return 0;
+}
+
+}  // namespace
+
+std::string writableName(const std::string& name, NameFormat format) {
+    std::string out;
+    out.reserve(name.size());
+    for (std::size_t i = 0; i < name.size();) {
+        const unsigned char c = static_cast<unsigned char>(name[i]);
+        if (format == NameFormat::Xml) {
+            const bool allowed = c >= 0x20 || c == '\t' || c == '\n' || c == '\r';
+            out += allowed ? std::string(1, name[i]) : hexEscape(c);
+            ++i;
+            continue;
+        }
+        const std::size_t length = utf8SequenceAt(name, i);
+        if (length == 0) {
+            out += hexEscape(c);
+            ++i;
+        } else {
+            out.append(name, i, length);
+            i += length;
+        }
+    }
+    return out;
+}
+
+namespace {
+
+// Rewrites the names of one kind, refusing a rewrite that makes two of them equal.
+template <class Items, class NameOf>
+void rewriteNames(Items& items, const char* kind, NameFormat format, std::size_t* changed, NameOf nameOf) {
+    std::map<std::string, std::string> written;  // written name -> original
+    for (auto& item : items) {
+        std::string& name = nameOf(item);
+        const std::string original = name;
+        name = writableName(original, format);
+        if (name != original) ++*changed;
+        if (name.empty()) continue;
+        const auto [at, inserted] = written.emplace(name, original);
+        if (!inserted && at->second != original)
+            throw std::runtime_error(std::string(kind) + " names '" + at->second + "' and '" + original +
+                                     "' would both be written as '" + name + "'; rename one of them");
+    }
+}
+
+}  // namespace
+
+Scene withWritableNames(Scene scene, NameFormat format, std::size_t* changed) {
+    std::size_t count = 0;
+    rewriteNames(scene.cameras, "camera", format, &count, [](Camera& c) -> std::string& { return c.name; });
+    rewriteNames(scene.shaders, "shader", format, &count, [](Shader& s) -> std::string& { return s.name; });
+    rewriteNames(scene.textures, "texture", format, &count, [](Texture& t) -> std::string& { return t.name; });
+    rewriteNames(scene.prototypes, "prototype", format, &count, [](Shape& p) -> std::string& { return p.name; });
+    // Shape, instance and shape-light names are labels nothing refers to: equal ones are allowed.
+    auto rewrite = [&](std::string& name) {
+        std::string written = writableName(name, format);
+        if (written != name) ++count;
+        name = std::move(written);
+    };
+    for (Shape& shape : scene.shapes) rewrite(shape.name);
+    for (Instance& instance : scene.instances) rewrite(instance.name);
+    for (Emitter& emitter : scene.emitters) {
+        rewrite(emitter.name);
+        rewrite(emitter.shape.name);
+    }
+    if (changed) *changed = count;
     return scene;
 }
 

@@ -43,6 +43,18 @@ void requireFileCoordinates(const Scene& scene);
 // fields a write changes (docs/SCENE_CONVERSION.md).
 Scene asWritten(Scene scene);
 
+// Names a format cannot hold as they are: JSON holds only UTF-8, so there a byte that is not part
+// of a valid UTF-8 sequence is written as the four characters \xNN (hex); XML 1.0 holds no control
+// character but TAB, LF and CR, so there those are written the same way. Every other name is kept.
+enum class NameFormat { Json, Xml };
+std::string writableName(const std::string& name, NameFormat format);
+bool isValidUtf8(const std::string& text);
+
+// `scene` with every name (cameras, shaders, textures, shapes, prototypes, instances, shape
+// lights) made writable; `changed` counts the names that changed. Throws std::runtime_error naming
+// both when a changed name becomes another name of its kind (a file would then refer to the wrong one).
+Scene withWritableNames(Scene scene, NameFormat format, std::size_t* changed);
+
 std::string_view shapeTypeName(ShapeType type);
 std::string_view cameraTypeName(CameraType type);
 std::string_view axisName(int axis);  // X, Y, Z

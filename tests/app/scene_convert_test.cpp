@@ -57,6 +57,51 @@ std::string refusal(const std::string& input, const std::string& output) {
     return "";
 }
 
+// Issue 38 item 9: names a loader reads but the other format cannot hold. A shape name in Latin-1
+// (not UTF-8) from XML, and a shader name with a NUL and a TAB (JSON escapes) referred to by _ref:
+// each is written with \xNN in place of what the format cannot hold, the file loads back as that
+// model (convert checks), and the renamed shader is still the one its shape refers to.
+TEST(SceneConvert, NamesTheOtherFormatCannotHoldAreEscaped) {
+    const fs::path dir = freshDir("names");
+    writeFile(dir / "latin1.xml",
+              "<scene><camera><position>0 0 3</position><viewDir>0 0 -1</viewDir></camera>\n"
+              "<shader name=\"g\" type=\"Lambertian\"><diffuse>1 0 0</diffuse></shader>\n"
+              "<shape name=\"b\xe8\" type=\"sphere\"><shader ref=\"g\"/><center>0 0 0</center><radius>1</radius></shape></scene>\n");
+    Diagnostics diagnostics;
+    Conversion c = convertScene((dir / "latin1.xml").string(), (dir / "latin1.json").string(), diagnostics);
+    EXPECT_EQ(c.escapedNames, 1u);
+    Diagnostics reload;
+    Scene json = loadScene((dir / "latin1.json").string(), LoadOptions{}, reload);
+    ASSERT_EQ(json.shapes.size(), 1u);
+    EXPECT_EQ(json.shapes[0].name, "b\\xE8");
+    EXPECT_TRUE(writing::isValidUtf8(readFile(dir / "latin1.json")));
+
+    writeFile(dir / "nul.json",
+              R"({"scene": {"camera": {"position": [0, 0, 3], "viewDir": [0, 0, -1]},
+                 "shader": [{"_name": "other", "_type": "Lambertian", "diffuse": [0, 1, 0]},
+                            {"_name": "s\u0000x\ty", "_type": "Lambertian", "diffuse": [1, 0, 0]}],
+                 "shape": [{"_type": "sphere", "center": [0, 0, 0], "radius": 1, "shader": {"_ref": "s\u0000x\ty"}}]}})");
+    c = convertScene((dir / "nul.json").string(), (dir / "nul.xml").string(), diagnostics);
+    EXPECT_EQ(c.escapedNames, 1u);  // the NUL; XML holds a TAB (as &#09;)
+    Scene xml = loadScene((dir / "nul.xml").string(), LoadOptions{}, reload);
+    ASSERT_EQ(xml.shaders.size(), 2u);
+    EXPECT_EQ(xml.shaders[1].name, "s\\x00x\ty");
+    ASSERT_EQ(xml.shapes.size(), 1u);
+    EXPECT_EQ(xml.shapes[0].shader, 1);
+}
+
+TEST(SceneConvert, UTF8ValidationFollowsRfc3629) {
+    EXPECT_TRUE(writing::isValidUtf8("plain"));
+    EXPECT_TRUE(writing::isValidUtf8("\xc3\xa8\xe2\x82\xac\xf0\x9f\x98\x80"));  // è € 😀
+    EXPECT_FALSE(writing::isValidUtf8("\xe8"));              // Latin-1 è
+    EXPECT_FALSE(writing::isValidUtf8("\xc0\xaf"));          // overlong '/'
+    EXPECT_FALSE(writing::isValidUtf8("\xed\xa0\x80"));      // a surrogate
+    EXPECT_FALSE(writing::isValidUtf8("\xf4\x90\x80\x80"));  // beyond U+10FFFF
+    EXPECT_FALSE(writing::isValidUtf8("\xe2\x82"));          // cut short
+    EXPECT_EQ(writing::writableName("a\xe8\xc3\xa8", writing::NameFormat::Json), "a\\xE8\xc3\xa8");
+    EXPECT_EQ(writing::writableName(std::string("a\0b\x1f\t", 5), writing::NameFormat::Xml), "a\\x00b\\x1F\t");
+}
+
 TEST(SceneConvert, WritesBothFormatsThatLoadBackAsTheInput) {
     const fs::path dir = freshDir("both");
     writeFile(dir / "in.xml", kScene);
