@@ -16,7 +16,23 @@ namespace {
 
 // What a save looks like, whatever the editor: a write closed (in place), a file moved onto the
 // name (write-and-rename), a deletion (the scene is gone: the next render says so).
-constexpr std::uint32_t kEvents = IN_CLOSE_WRITE | IN_MOVED_TO | IN_DELETE | IN_MOVED_FROM;
+// IN_CREATE: a symbolic link made onto the name (ln -sf), and a folder appearing (a deleted
+// folder made again); IN_IGNORED, which inotify sends unasked, says a watched folder is gone.
+constexpr std::uint32_t kEvents = IN_CLOSE_WRITE | IN_MOVED_TO | IN_DELETE | IN_MOVED_FROM | IN_CREATE;
+
+// The files a chain of symbolic links at `path` leads through (not `path` itself), up to 40 hops.
+std::vector<std::filesystem::path> linkTargets(const std::filesystem::path& path) {
+    std::vector<std::filesystem::path> targets;
+    std::filesystem::path at = path;
+    std::error_code ec;
+    for (int hops = 0; hops < 40 && std::filesystem::is_symlink(at, ec); ++hops) {
+        const std::filesystem::path next = std::filesystem::read_symlink(at, ec);
+        if (ec) break;
+        at = (next.is_absolute() ? next : at.parent_path() / next).lexically_normal();
+        targets.push_back(at);
+    }
+    return targets;
+}
 
 bool isUnder(const std::filesystem::path& file, const std::filesystem::path& folder) {
     auto f = file.begin();
@@ -56,29 +72,63 @@ void FileWatcher::wake() {
 void FileWatcher::watch(const std::vector<std::filesystem::path>& files, const std::vector<std::filesystem::path>& trees,
                         const std::set<std::string>& treeExtensions) {
     treeExtensions_.insert(treeExtensions.begin(), treeExtensions.end());
-    std::set<std::filesystem::path> folders;
     for (const std::filesystem::path& file : files) {
         files_.insert(watchedPath(file));
-        folders.insert(watchedPath(file).parent_path());
+        wanted_.insert(watchedPath(file).parent_path());
+        for (const std::filesystem::path& target : linkTargets(watchedPath(file))) {
+            files_.insert(watchedPath(target));
+            wanted_.insert(watchedPath(target).parent_path());
+        }
     }
     for (const std::filesystem::path& tree : trees) {
         trees_.push_back(watchedPath(tree));
-        folders.insert(watchedPath(tree));
+        wanted_.insert(watchedPath(tree));
         std::error_code ec;
         for (auto it = std::filesystem::recursive_directory_iterator(tree, ec); !ec && it != std::filesystem::recursive_directory_iterator();
              it.increment(ec))
-            if (it->is_directory(ec)) folders.insert(watchedPath(it->path()));
+            if (it->is_directory(ec)) wanted_.insert(watchedPath(it->path()));
     }
-    for (const std::filesystem::path& folder : folders) {
+    rearm(nullptr);  // what the caller reads now is current: nothing counts as changed yet
+}
+
+bool FileWatcher::rearm(FileChanges* changes) {
+    std::set<std::filesystem::path> watched;
+    for (const auto& [wd, folder] : folders_) watched.insert(folder);
+    // Ancestor watches are made again below for the folders still missing.
+    for (const auto& [wd, folder] : ancestors_)
+        if (!folders_.count(wd)) ::inotify_rm_watch(fd_, wd);
+    ancestors_.clear();
+    bool counted = false;
+    for (const std::filesystem::path& folder : wanted_) {
+        if (watched.count(folder)) continue;
         // inotify returns the same descriptor for a folder watched twice.
-        const int wd = ::inotify_add_watch(fd_, folder.c_str(), kEvents);
-        // A folder that does not exist (yet) is not watched; its file's absence is the render's error.
-        if (wd >= 0) folders_[wd] = folder;
+        const int wd = ::inotify_add_watch(fd_, folder.c_str(), kEvents | IN_ONLYDIR);
+        if (wd >= 0) {
+            folders_[wd] = folder;
+            std::error_code ec;
+            if (changes)
+                for (const std::filesystem::path& file : files_)
+                    if (file.parent_path() == folder && std::filesystem::exists(file, ec)) {
+                        changes->files.insert(file);
+                        counted = true;
+                    }
+            continue;
+        }
+        // Missing (or not a folder): wait for it at the nearest ancestor that exists.
+        for (std::filesystem::path up = folder.parent_path(); !up.empty(); up = up.parent_path()) {
+            const int ancestor = ::inotify_add_watch(fd_, up.c_str(), kEvents | IN_ONLYDIR);
+            if (ancestor >= 0) {
+                ancestors_[ancestor] = up;
+                break;
+            }
+            if (up == up.root_path()) break;
+        }
     }
+    return counted;
 }
 
 bool FileWatcher::drain(FileChanges& changes, bool othersCount) {
-    bool counted = false;
+    bool counted = false, rearmNeeded = false;
     alignas(inotify_event) char buffer[16384];
     for (;;) {
         const ssize_t n = ::read(fd_, buffer, sizeof buffer);
@@ -86,8 +136,21 @@ bool FileWatcher::drain(FileChanges& changes, bool othersCount) {
         for (ssize_t at = 0; at < n;) {
             const auto* event = reinterpret_cast<const inotify_event*>(buffer + at);
             at += static_cast<ssize_t>(sizeof(inotify_event) + event->len);
+            if (event->mask & IN_IGNORED) {  // the folder is gone (deleted, or its file system unmounted)
+                folders_.erase(event->wd);
+                ancestors_.erase(event->wd);
+                rearmNeeded = true;
+                continue;
+            }
+            // A folder appearing may be a wanted one, or on the way to one.
+            if ((event->mask & IN_ISDIR) && (event->mask & (IN_CREATE | IN_MOVED_TO))) rearmNeeded = true;
             const auto folder = folders_.find(event->wd);
             if (folder == folders_.end() || event->len == 0) continue;
+            // A file created is reported by its IN_CLOSE_WRITE; a symbolic link has only IN_CREATE.
+            if ((event->mask & IN_CREATE) && !(event->mask & IN_ISDIR)) {
+                std::error_code ec;
+                if (!std::filesystem::is_symlink(folder->second / event->name, ec)) continue;
+            }
             const std::filesystem::path path = folder->second / event->name;
             bool ignored = false;
             for (const std::filesystem::path& name : ignored_) {
@@ -113,6 +176,7 @@ bool FileWatcher::drain(FileChanges& changes, bool othersCount) {
             }
         }
     }
+    if (rearmNeeded && rearm(&changes)) counted = true;
     return counted;
 }
 

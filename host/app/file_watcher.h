@@ -1,6 +1,9 @@
 // Waits for files to change, through Linux inotify. It watches the folders that hold the files, not
 // the files: an editor that saves by writing a new file and renaming it over the old one replaces
-// the file's inode, and a watch on the old inode would never fire again.
+// the file's inode, and a watch on the old inode would never fire again. For the same reason a
+// folder that is deleted (or does not exist yet) is waited for through its nearest existing
+// ancestor and watched again when it appears, its files then counting as changed; and a file that
+// is a symbolic link is watched at its target too (an edit there changes what the link reads).
 #pragma once
 
 #include <chrono>
@@ -53,10 +56,16 @@ public:
 private:
     // Reads what inotify has queued into `changes`; true when something counted.
     bool drain(FileChanges& changes, bool othersCount);
+    // Watches every wanted folder that exists and is not watched (its existing watched files count
+    // as changed: they may have come back with it), and for each that does not exist its nearest
+    // existing ancestor, to hear of its creation. True when a file was counted.
+    bool rearm(FileChanges* changes);
 
     int fd_ = -1;
     int wakeFd_ = -1;  // an eventfd: wake() writes it
-    std::map<int, std::filesystem::path> folders_;  // watch descriptor -> folder
+    std::set<std::filesystem::path> wanted_;        // the folders whose files count
+    std::map<int, std::filesystem::path> folders_;  // watch descriptor -> wanted folder
+    std::map<int, std::filesystem::path> ancestors_;  // watch descriptor -> ancestor of a missing wanted folder
     std::set<std::filesystem::path> files_;
     std::vector<std::filesystem::path> trees_;
     std::set<std::string> treeExtensions_;
