@@ -10,6 +10,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "version.h"
+
 namespace vkrt {
 
 namespace {
@@ -363,6 +365,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
                            "vkrt sweep scene.xml --out DIR [options]  |  vkrt convert in.xml -o out.json  |  vkrt --list-devices",
                  compare ? "vkrt compare" : sweep ? "vkrt sweep" : "vkrt"};
     app.set_help_flag("-?,--help", "Print this help and exit (-h is the height, as in the course)");
+    app.set_version_flag("--version", versionLine(), "Print vkrt's version (and the git commit it was built from) and exit");
     app.option_defaults()->always_capture_default();
     std::string bg, sampler = "jittered", device = "auto";
     SweepText sweepText;

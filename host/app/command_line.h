@@ -1,5 +1,5 @@
 // The vkrt command line: `vkrt scene.xml [options]`, `vkrt compare scene.xml [options]`,
-// `vkrt convert in.xml -o out.json`, `vkrt --list-devices`, plus every flag of the course's handleGraphicsArgs (-i -o -w -h -a -n -r -k
+// `vkrt convert in.xml -o out.json`, `vkrt --list-devices`, `vkrt --version`, plus every flag of the course's handleGraphicsArgs (-i -o -w -h -a -n -r -k
 // -v -s -x -y -?; -d is refused until depth of field exists).
 #pragma once
 

@@ -231,6 +231,16 @@ TEST(CourseCommandLine, QuestionMarkPrintsTheHelpAndExitsZero) {
     EXPECT_NE(p.out.find("--aperture"), std::string::npos) << p.out;
 }
 
+// Issue 39: --version prints one line naming the program and its version, and exits 0.
+TEST(CommandLineOptions, VersionPrintsTheVersionLineAndExitsZero) {
+    const Parsed p = parse({"--version"});
+    EXPECT_FALSE(p.result.commandLine.has_value());
+    EXPECT_EQ(p.result.exitCode, 0);
+    EXPECT_EQ(p.out.rfind("vkrt ", 0), 0u) << p.out;
+    EXPECT_EQ(p.out.find('\n'), p.out.size() - 1) << "one line: " << p.out;
+    EXPECT_NE(parse({"-?"}).out.find("--version"), std::string::npos);
+}
+
 TEST(CourseCommandLine, CourseFlagsWorkInCompareAndSweep) {
     const CommandLine compare = parseOk({"compare", "s.xml", "-n", "2", "-a", "2"});
     EXPECT_EQ(compare.command, Command::Compare);
