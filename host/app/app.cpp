@@ -17,6 +17,7 @@
 #include "image_parts.h"
 #include "cpu_renderer.h"
 #include "device_list.h"
+#include "exposure.h"
 #include "gpu_renderer.h"
 #include "heat_map.h"
 #include "image_compare.h"
@@ -109,7 +110,7 @@ int runRenderAsMpiRank(CommandLine& cl) {
         const float* myRows = &result.image.at(0, rows.x).x;
         if (!api.gather(myRows, mine, &image.pixels[0].x, counts.data(), error)) throw std::runtime_error(error);
         if (rank == 0) {
-            writeImage(image, cl.outputPath);
+            writeImage(withExposure(std::move(image), cl.exposure), cl.outputPath);
             if (!cl.render.quiet)
                 std::fprintf(stderr, "%s: %dx%d, %d rpp over %d MPI ranks (rank 0 on %s): render %.3fs, total %.3fs -> %s\n",
                              cl.scenePath.c_str(), cl.render.width, cl.render.height, cl.render.samplesPerPixel, size,
@@ -129,10 +130,11 @@ int runRender(CommandLine& cl) {
     const auto start = std::chrono::steady_clock::now();
     checkOutputBeforeRendering(cl.outputPath, cl.scenePath);
     checkImageFitsInMemory(cl.render.width, cl.render.height);
-    ProgressiveOutput passes(cl.outputPath, cl.render.samplesPerPixel, cl.render.quiet, "pass: ");
+    ProgressiveOutput passes(cl.outputPath, cl.render.samplesPerPixel, cl.exposure, cl.render.quiet, "pass: ");
     if (cl.render.checkpoints > 1) cl.render.onCheckpoint = &passes;
     DeviceRender result = renderScene(cl);
-    writeImage(result.image, cl.outputPath, cl.parts > 0 ? partAttributes(cl, result.device) : ImageAttributes{});
+    writeImage(withExposure(std::move(result.image), cl.exposure), cl.outputPath,
+               cl.parts > 0 ? partAttributes(cl, result.device) : ImageAttributes{});
     if (!cl.render.quiet) {
         const std::string part = cl.parts > 0 ? ", part " + std::to_string(cl.part) + "/" + std::to_string(cl.parts) : "";
         std::fprintf(stderr, "%s: %dx%d%s, %d rpp on %s: render %.3fs, total %.3fs -> %s\n", cl.scenePath.c_str(),
@@ -142,7 +144,8 @@ int runRender(CommandLine& cl) {
     return 0;
 }
 
-// vkrt merge: the parts of one render, as one image (image_parts.h).
+// vkrt merge: the parts of one render, as one image (image_parts.h). A part's pixels already carry
+// its --exposure (and merge has none), so they are copied as they are.
 int runMerge(const CommandLine& cl) {
     checkImageOutputPath(cl.outputPath);
     for (const std::string& input : cl.mergeInputs) checkNotTheInput(cl.outputPath, input);

@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "exposure.h"
 #include "version.h"
 
 namespace vkrt {
@@ -52,6 +53,23 @@ glm::vec3 parseUp(const std::string& text) {
         if (!(std::fabs(up[i]) <= FLT_MAX)) throw CLI::ValidationError("--up", "'" + text + "': each number must be finite and within float");
     if (up == glm::dvec3(0.0)) throw CLI::ValidationError("--up", "'" + text + "': the up vector has zero length");
     return glm::vec3(up);
+}
+
+// --exposure EV: a finite number of stops within kMaxExposureStops (exposure.h).
+float parseExposure(const std::string& text) {
+    std::size_t used = 0;
+    double ev = 0.0;
+    try {
+        ev = std::stod(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != text.size())
+        throw CLI::ValidationError("--exposure", "'" + text + "': expected a number of stops (1 doubles the image, -1 halves it)");
+    if (!(std::fabs(ev) <= kMaxExposureStops))
+        throw CLI::ValidationError("--exposure", "'" + text + "': must be finite and within -" + number(kMaxExposureStops) +
+                                                     ".." + number(kMaxExposureStops) + " stops");
+    return static_cast<float>(ev);
 }
 
 // The options every command shares (what the image is, which GPU, how to run).
@@ -282,6 +300,7 @@ std::string describeSettings(const CommandLine& cl) {
     if (cl.focusDistance) out << "focus distance: " << *cl.focusDistance << "\n";
     if (cl.aperture) out << "aperture: " << *cl.aperture << "\n";
     if (cl.up) out << "up: " << cl.up->x << "," << cl.up->y << "," << cl.up->z << "\n";
+    if (cl.exposure != 0.0f) out << "exposure: " << number(cl.exposure) << " stops (x" << number(std::exp2(cl.exposure)) << ")\n";
     if (r.shutter) out << "shutter: " << r.shutter->x << "," << r.shutter->y << "\n";
     out << "CPU threads: " << (r.threads == 0 ? std::string("all cores") : std::to_string(r.threads)) << "\n";
     out << "seed: " << r.seed << "\n";
@@ -412,6 +431,12 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
                        "error, refreshed as renders finish (0: any free port, printed)")
             ->check(CLI::Range(0, 65535))
             ->default_str("none");
+        app.add_option_function<std::string>(
+               "--exposure", [&cl](const std::string& text) { cl.exposure = parseExposure(text); },
+               "Scale the image by 2^EV before it is written (EV stops: 1 doubles it, -1 halves it; default 0), in "
+               "every format: PNG/JPEG/PPM then clamp to [0,1] and truncate to 8 bits (no gamma), EXR stays linear "
+               "floats. Applies to each --progressive pass, --watch output and --part (merge copies it)")
+            ->default_str("0");
         app.add_option("--progressive", cl.render.checkpoints,
                        "Write the image N times as the samples come in (after 1/N, 2/N, ... of the rpp), so a long "
                        "render shows early; the last is the same image as without it")

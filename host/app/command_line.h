@@ -42,6 +42,7 @@ struct CommandLine {
     std::vector<std::string> mergeInputs;  // vkrt merge: the parts' files
     bool watch = false;           // --watch: render again whenever an input changes (watch_mode.h)
     int previewPort = -1;         // --preview PORT (with --watch): the page on 127.0.0.1; -1: none, 0: any port
+    float exposure = 0.0f;        // --exposure EV: the written image is scaled by 2^EV (exposure.h)
 };
 
 // The settings a run will use, one per line (what -v prints).

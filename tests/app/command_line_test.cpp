@@ -241,6 +241,24 @@ TEST(CommandLineOptions, VersionPrintsTheVersionLineAndExitsZero) {
     EXPECT_NE(parse({"-?"}).out.find("--version"), std::string::npos);
 }
 
+// Issue 39: --exposure EV in stops, negative values included; anything but a finite number within
+// +-20 stops is refused, naming the option and the value.
+TEST(CommandLineOptions, ExposureTakesStopsAndRefusesWhatIsNotAFiniteSmallNumber) {
+    EXPECT_EQ(parseOk({"s.xml"}).exposure, 0.0f);
+    EXPECT_EQ(parseOk({"s.xml", "--exposure", "1.5"}).exposure, 1.5f);
+    EXPECT_EQ(parseOk({"s.xml", "--exposure", "-1"}).exposure, -1.0f);
+    EXPECT_EQ(parseOk({"s.xml", "--exposure=-20"}).exposure, -20.0f);
+    for (const char* bad : {"21", "-20.5", "nan", "inf", "-inf", "1e39"})
+        EXPECT_NE(parseRefused({"s.xml", "--exposure", bad}).find(std::string("--exposure: '") + bad + "': must be finite and within -20..20 stops"),
+                  std::string::npos)
+            << bad;
+    for (const char* bad : {"bright", "1x", ""})
+        EXPECT_NE(parseRefused({"s.xml", "--exposure", bad}).find(std::string("--exposure: '") + bad + "': expected a number of stops"),
+                  std::string::npos)
+            << bad;
+    EXPECT_NE(describeSettings(parseOk({"s.xml", "--exposure", "-1"})).find("exposure: -1 stops (x0.5)"), std::string::npos);
+}
+
 TEST(CourseCommandLine, CourseFlagsWorkInCompareAndSweep) {
     const CommandLine compare = parseOk({"compare", "s.xml", "-n", "2", "-a", "2"});
     EXPECT_EQ(compare.command, Command::Compare);
