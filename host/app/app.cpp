@@ -16,6 +16,7 @@
 #include "command_line.h"
 #include "image_parts.h"
 #include "cpu_renderer.h"
+#include "device_choice.h"
 #include "device_list.h"
 #include "exposure.h"
 #include "gpu_renderer.h"
@@ -74,11 +75,17 @@ int asMpiRank(Body body) {
 }
 
 // Each rank on a device of the best type present, by local rank, unless --gpu is given
-// (deviceForLocalRank). Without a usable device the rank renders as --device says.
+// (deviceForLocalRank). Without a usable device the rank renders as --device says; a render under
+// --device auto where every device runs on the CPU stays on the CPU reference (device_choice.h),
+// unless an option asks for Vulkan.
 void pickGpuByLocalRank(CommandLine& cl, int localRank) {
     if (cl.gpuIndex >= 0 || cl.device == DeviceChoice::Cpu) return;
     try {
-        cl.gpuIndex = deviceForLocalRank(listDevices(), localRank);
+        const std::vector<DeviceInfo> devices = listDevices();
+        if (cl.command == Command::Render && cl.device == DeviceChoice::Auto && !asksForVulkan(cl) &&
+            chooseAutoDevice(devices).cpuReference)
+            return;
+        cl.gpuIndex = deviceForLocalRank(devices, localRank);
     } catch (const VulkanUnavailable&) {
         // no loader: openGpu says so, or falls back to the CPU
     }

@@ -127,7 +127,8 @@ void addImageOptions(CLI::App& app, CommandLine& cl, std::string& bg) {
                    "CPU threads of the CPU reference and of host-side work, the course's -n (default 0: all cores); "
                    "a GPU render runs on the Vulkan device")
         ->check(CLI::Range(0, 1024));
-    app.add_option("--gpu", cl.gpuIndex, "Vulkan device index (see --list-devices)")->check(CLI::NonNegativeNumber);
+    app.add_option("--gpu", cl.gpuIndex, "Vulkan device index (see --list-devices); asks for Vulkan under --device auto")
+        ->check(CLI::NonNegativeNumber);
     app.add_flag("--validate", cl.validate, "Enable the Vulkan validation layers");
     app.add_option("--shader-dir", cl.shaderDir,
                    "Compile the GLSL kernels from this directory at run time (edit and re-run, no rebuild)")
@@ -158,7 +159,11 @@ void addRenderOptions(CLI::App& app, CommandLine& cl, std::string& bg, std::stri
            "mis-balance or mis (both, weighted by the balance or the power heuristic). Same image in "
            "expectation; default mis")
         ->default_str("mis");
-    app.add_option("--device", device, "Renderer: gpu (Vulkan), cpu (reference) or auto (gpu if available)")
+    app.add_option("--device", device,
+                   "Renderer: gpu (Vulkan, any device, lavapipe included; an error when none opens), cpu (the "
+                   "reference) or auto (a GPU when Vulkan has one, else the CPU reference with a note: it is faster "
+                   "than a Vulkan driver that runs on the CPU; --gpu, --shader-dir, --general-kernel and --validate "
+                   "ask for Vulkan)")
         ->check(CLI::IsMember({"auto", "cpu", "gpu"}));
     app.add_flag("--general-kernel", cl.general, "GPU: use the kernel with every feature (no specialisation)");
 }
