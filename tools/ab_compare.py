@@ -25,7 +25,8 @@ import subprocess
 import sys
 import tempfile
 
-RENDER_TIME = re.compile(r": render ([0-9.]+)s, total")
+# The GPU summary puts the kernel's compile before the render ("compile 0.412s, render ...").
+RENDER_TIME = re.compile(r": (?:compile [0-9.]+s, )?render ([0-9.]+)s, total")
 RAY_RATIOS = re.compile(r"ratio_gpu_over_cpu rounds \d+ primary ([0-9.]+) shadow ([0-9.]+) diffuse ([0-9.]+)")
 MISMATCHES = re.compile(r"gpu_cpu_mismatches primary (\d+) of \d+ shadow (\d+) of \d+ diffuse (\d+) of \d+")
 

@@ -131,7 +131,7 @@ DeviceRender renderPreparedOnGpu(GpuRenderer& gpu, const GpuSceneData& data, con
     const std::string kernel = (stats.generalKernel ? "general kernel, " + stats.features : "kernel: " + stats.features) +
                                "; samples/dispatch=" + std::to_string(stats.samplesPerDispatch) + deviceTime;
     return {std::move(image), stats.device + " [" + kernel + "]", 0.0, stats.renderSeconds + stats.readbackSeconds,
-            stats.pipelineSeconds + stats.warmUpSeconds};
+            stats.pipelineSeconds + stats.warmUpSeconds, /*onGpu=*/true};
 }
 
 DeviceRender renderOnGpu(GpuRenderer& gpu, const Scene& scene, const RenderOptions& options, bool general) {

@@ -43,6 +43,7 @@ struct DeviceRender {
     double seconds = 0.0;         // the render itself
     double pipelineSeconds = 0.0; // GPU: creating and first dispatching the kernel variant (the
                                   // driver's compile; 0 when it was made before)
+    bool onGpu = false;           // rendered by the GpuRenderer (the summary then names the compile)
 };
 
 // Each renderer prepares the scene its own way (its own tree) and renders it; the Prepared forms
