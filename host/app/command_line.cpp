@@ -438,9 +438,10 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
             ->default_str("none");
         app.add_option_function<std::string>(
                "--exposure", [&cl](const std::string& text) { cl.exposure = parseExposure(text); },
-               "Scale the image by 2^EV before it is written (EV stops: 1 doubles it, -1 halves it; default 0), in "
+               "Scale the image by 2^EV before it is written (EV in stops: 1 doubles it, -1 halves it), in "
                "every format: PNG/JPEG/PPM then clamp to [0,1] and truncate to 8 bits (no gamma), EXR stays linear "
                "floats. Applies to each --progressive pass, --watch output and --part (merge copies it)")
+            ->type_name("EV")
             ->default_str("0");
         app.add_option("--progressive", cl.render.checkpoints,
                        "Write the image N times as the samples come in (after 1/N, 2/N, ... of the rpp), so a long "
