@@ -17,7 +17,9 @@
 #include "command_line.h"
 #include "image_parts.h"
 #include "cpu_renderer.h"
+#include "device_choice.h"
 #include "device_list.h"
+#include "exposure.h"
 #include "gpu_renderer.h"
 #include "heat_map.h"
 #include "image_compare.h"
@@ -52,6 +54,16 @@ std::string keptRenderPath(const CommandLine& cl, const char* device) {
     const std::filesystem::path folder = std::filesystem::path(cl.heatMapPath).parent_path();
     return (folder / (std::filesystem::path(cl.scenePath).stem().string() + "_" + device + ".png")).string();
 }
+// The summary line's "compile 1.234s, " on the GPU: the kernel variant's pipeline creation and
+// first dispatch (the driver's compile, lavapipe's LLVM JIT), which "render" leaves out and "total"
+// includes. Nothing on the CPU reference, which compiles nothing at run time.
+std::string compileText(const DeviceRender& result) {
+    if (!result.onGpu) return "";
+    char text[48];
+    std::snprintf(text, sizeof text, "compile %.3fs, ", result.pipelineSeconds);
+    return text;
+}
+
 std::string heatMapLine(const std::string& path) { return path.empty() ? "not written (-o FILE.png writes it)" : path; }
 
 // One rank of `mpirun -np N vkrt ...`: `body` runs with the job's rank, size and local rank. An
@@ -74,11 +86,17 @@ int asMpiRank(Body body) {
 }
 
 // Each rank on a device of the best type present, by local rank, unless --gpu is given
-// (deviceForLocalRank). Without a usable device the rank renders as --device says.
+// (deviceForLocalRank). Without a usable device the rank renders as --device says; a render under
+// --device auto where every device runs on the CPU stays on the CPU reference (device_choice.h),
+// unless an option asks for Vulkan.
 void pickGpuByLocalRank(CommandLine& cl, int localRank) {
     if (cl.gpuIndex >= 0 || cl.device == DeviceChoice::Cpu) return;
     try {
-        cl.gpuIndex = deviceForLocalRank(listDevices(), localRank);
+        const std::vector<DeviceInfo> devices = listDevices();
+        if (cl.command == Command::Render && cl.device == DeviceChoice::Auto && !asksForVulkan(cl) &&
+            chooseAutoDevice(devices).cpuReference)
+            return;
+        cl.gpuIndex = deviceForLocalRank(devices, localRank);
     } catch (const VulkanUnavailable&) {
         // no loader: openGpu says so, or falls back to the CPU
     }
@@ -110,11 +128,12 @@ int runRenderAsMpiRank(CommandLine& cl) {
         const float* myRows = &result.image.at(0, rows.x).x;
         if (!api.gather(myRows, mine, &image.pixels[0].x, counts.data(), error)) throw std::runtime_error(error);
         if (rank == 0) {
-            writeImage(image, cl.outputPath);
+            writeImage(withExposure(std::move(image), cl.exposure), cl.outputPath);
             if (!cl.render.quiet)
-                std::fprintf(stderr, "%s: %dx%d, %d rpp over %d MPI ranks (rank 0 on %s): render %.3fs, total %.3fs -> %s\n",
+                std::fprintf(stderr, "%s: %dx%d, %d rpp over %d MPI ranks (rank 0 on %s): %srender %.3fs, total %.3fs -> %s\n",
                              cl.scenePath.c_str(), cl.render.width, cl.render.height, cl.render.samplesPerPixel, size,
-                             result.device.c_str(), result.seconds, secondsSince(start), cl.outputPath.c_str());
+                             result.device.c_str(), compileText(result).c_str(), result.seconds, secondsSince(start),
+                             cl.outputPath.c_str());
         }
     });
 }
@@ -130,20 +149,22 @@ int runRender(CommandLine& cl) {
     const auto start = std::chrono::steady_clock::now();
     checkOutputBeforeRendering(cl.outputPath, cl.scenePath);
     checkImageFitsInMemory(cl.render.width, cl.render.height);
-    ProgressiveOutput passes(cl.outputPath, cl.render.samplesPerPixel, cl.render.quiet, "pass: ");
+    ProgressiveOutput passes(cl.outputPath, cl.render.samplesPerPixel, cl.exposure, cl.render.quiet, "pass: ");
     if (cl.render.checkpoints > 1) cl.render.onCheckpoint = &passes;
     DeviceRender result = renderScene(cl);
-    writeImage(result.image, cl.outputPath, cl.parts > 0 ? partAttributes(cl, result.device) : ImageAttributes{});
+    writeImage(withExposure(std::move(result.image), cl.exposure), cl.outputPath,
+               cl.parts > 0 ? partAttributes(cl, result.device) : ImageAttributes{});
     if (!cl.render.quiet) {
         const std::string part = cl.parts > 0 ? ", part " + std::to_string(cl.part) + "/" + std::to_string(cl.parts) : "";
-        std::fprintf(stderr, "%s: %dx%d%s, %d rpp on %s: render %.3fs, total %.3fs -> %s\n", cl.scenePath.c_str(),
+        std::fprintf(stderr, "%s: %dx%d%s, %d rpp on %s: %srender %.3fs, total %.3fs -> %s\n", cl.scenePath.c_str(),
                      cl.render.width, cl.render.height, part.c_str(), cl.render.samplesPerPixel, result.device.c_str(),
-                     result.seconds, secondsSince(start), cl.outputPath.c_str());
+                     compileText(result).c_str(), result.seconds, secondsSince(start), cl.outputPath.c_str());
     }
     return 0;
 }
 
-// vkrt merge: the parts of one render, as one image (image_parts.h).
+// vkrt merge: the parts of one render, as one image (image_parts.h). A part's pixels already carry
+// its --exposure (and merge has none), so they are copied as they are.
 int runMerge(const CommandLine& cl) {
     checkImageOutputPath(cl.outputPath);
     for (const std::string& input : cl.mergeInputs) checkNotTheInput(cl.outputPath, input);

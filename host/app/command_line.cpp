@@ -10,7 +10,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include "exposure.h"
 #include "image_check.h"
+#include "version.h"
 
 namespace vkrt {
 
@@ -52,6 +54,23 @@ glm::vec3 parseUp(const std::string& text) {
         if (!(std::fabs(up[i]) <= FLT_MAX)) throw CLI::ValidationError("--up", "'" + text + "': each number must be finite and within float");
     if (up == glm::dvec3(0.0)) throw CLI::ValidationError("--up", "'" + text + "': the up vector has zero length");
     return glm::vec3(up);
+}
+
+// --exposure EV: a finite number of stops within kMaxExposureStops (exposure.h).
+float parseExposure(const std::string& text) {
+    std::size_t used = 0;
+    double ev = 0.0;
+    try {
+        ev = std::stod(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != text.size())
+        throw CLI::ValidationError("--exposure", "'" + text + "': expected a number of stops (1 doubles the image, -1 halves it)");
+    if (!(std::fabs(ev) <= kMaxExposureStops))
+        throw CLI::ValidationError("--exposure", "'" + text + "': must be finite and within -" + number(kMaxExposureStops) +
+                                                     ".." + number(kMaxExposureStops) + " stops");
+    return static_cast<float>(ev);
 }
 
 // The options every command shares (what the image is, which GPU, how to run).
@@ -115,7 +134,8 @@ void addImageOptions(CLI::App& app, CommandLine& cl, std::string& bg) {
                    "CPU threads of the CPU reference and of host-side work, the course's -n (default 0: all cores); "
                    "a GPU render runs on the Vulkan device")
         ->check(CLI::Range(0, 1024));
-    app.add_option("--gpu", cl.gpuIndex, "Vulkan device index (see --list-devices)")->check(CLI::NonNegativeNumber);
+    app.add_option("--gpu", cl.gpuIndex, "Vulkan device index (see --list-devices); asks for Vulkan under --device auto")
+        ->check(CLI::NonNegativeNumber);
     app.add_flag("--validate", cl.validate, "Enable the Vulkan validation layers");
     app.add_option("--shader-dir", cl.shaderDir,
                    "Compile the GLSL kernels from this directory at run time (edit and re-run, no rebuild)")
@@ -146,7 +166,11 @@ void addRenderOptions(CLI::App& app, CommandLine& cl, std::string& bg, std::stri
            "mis-balance or mis (both, weighted by the balance or the power heuristic). Same image in "
            "expectation; default mis")
         ->default_str("mis");
-    app.add_option("--device", device, "Renderer: gpu (Vulkan), cpu (reference) or auto (gpu if available)")
+    app.add_option("--device", device,
+                   "Renderer: gpu (Vulkan, any device, lavapipe included; an error when none opens), cpu (the "
+                   "reference) or auto (a GPU when Vulkan has one, else the CPU reference with a note: it is faster "
+                   "than a Vulkan driver that runs on the CPU; --gpu, --shader-dir, --general-kernel and --validate "
+                   "ask for Vulkan)")
         ->check(CLI::IsMember({"auto", "cpu", "gpu"}));
     app.add_flag("--general-kernel", cl.general, "GPU: use the kernel with every feature (no specialisation)");
 }
@@ -288,6 +312,7 @@ std::string describeSettings(const CommandLine& cl) {
     if (cl.focusDistance) out << "focus distance: " << *cl.focusDistance << "\n";
     if (cl.aperture) out << "aperture: " << *cl.aperture << "\n";
     if (cl.up) out << "up: " << cl.up->x << "," << cl.up->y << "," << cl.up->z << "\n";
+    if (cl.exposure != 0.0f) out << "exposure: " << number(cl.exposure) << " stops (x" << number(std::exp2(cl.exposure)) << ")\n";
     if (r.shutter) out << "shutter: " << r.shutter->x << "," << r.shutter->y << "\n";
     out << "CPU threads: " << (r.threads == 0 ? std::string("all cores") : std::to_string(r.threads)) << "\n";
     out << "seed: " << r.seed << "\n";
@@ -377,6 +402,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
                            "vkrt check scene.xml yours.png  |  vkrt sweep scene.xml --out DIR [options]  |  vkrt convert in.xml -o out.json  |  vkrt --list-devices",
                  check ? "vkrt check" : compare ? "vkrt compare" : sweep ? "vkrt sweep" : "vkrt"};
     app.set_help_flag("-?,--help", "Print this help and exit (-h is the height, as in the course)");
+    app.set_version_flag("--version", versionLine(), "Print vkrt's version (and the git commit it was built from) and exit");
     app.option_defaults()->always_capture_default();
     std::string bg, sampler = "jittered", device = "auto";
     SweepText sweepText;
@@ -425,6 +451,13 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
                        "error, refreshed as renders finish (0: any free port, printed)")
             ->check(CLI::Range(0, 65535))
             ->default_str("none");
+        app.add_option_function<std::string>(
+               "--exposure", [&cl](const std::string& text) { cl.exposure = parseExposure(text); },
+               "Scale the image by 2^EV before it is written (EV in stops: 1 doubles it, -1 halves it), in "
+               "every format: PNG/JPEG/PPM then clamp to [0,1] and truncate to 8 bits (no gamma), EXR stays linear "
+               "floats. Applies to each --progressive pass, --watch output and --part (merge copies it)")
+            ->type_name("EV")
+            ->default_str("0");
         app.add_option("--progressive", cl.render.checkpoints,
                        "Write the image N times as the samples come in (after 1/N, 2/N, ... of the rpp), so a long "
                        "render shows early; the last is the same image as without it")

@@ -1,5 +1,5 @@
 // The vkrt command line: `vkrt scene.xml [options]`, `vkrt compare scene.xml [options]`,
-// `vkrt check scene.xml image.png`, `vkrt convert in.xml -o out.json`, `vkrt --list-devices`, plus every flag of the course's handleGraphicsArgs (-i -o -w -h -a -n -r -k
+// `vkrt check scene.xml image.png`, `vkrt convert in.xml -o out.json`, `vkrt --list-devices`, `vkrt --version`, plus every flag of the course's handleGraphicsArgs (-i -o -w -h -a -n -r -k
 // -v -s -x -y -?; -d is refused until depth of field exists).
 #pragma once
 
@@ -44,6 +44,7 @@ struct CommandLine {
     std::vector<std::string> mergeInputs;  // vkrt merge: the parts' files
     bool watch = false;           // --watch: render again whenever an input changes (watch_mode.h)
     int previewPort = -1;         // --preview PORT (with --watch): the page on 127.0.0.1; -1: none, 0: any port
+    float exposure = 0.0f;        // --exposure EV: the written image is scaled by 2^EV (exposure.h)
 };
 
 // The settings a run will use, one per line (what -v prints).

@@ -65,6 +65,8 @@ ImageAttributes partAttributes(const CommandLine& cl, const std::string& device)
     if (cl.aperture) render << "; aperture " << *cl.aperture;
     if (cl.up) render << "; up " << cl.up->x << "," << cl.up->y << "," << cl.up->z;
     if (r.shutter) render << "; shutter " << r.shutter->x << "," << r.shutter->y;
+    // A part's pixels carry its --exposure: parts of one image must share it.
+    render << "; exposure " << cl.exposure;
     if (cl.general) render << "; general kernel";
     // Every estimator has the same expectation, but not the same samples: parts must share one.
     render << "; estimator " << estimatorName(r.estimator);

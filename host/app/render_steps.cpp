@@ -13,6 +13,8 @@
 
 #include "camera_basis.h"
 #include "cpu_renderer.h"
+#include "device_choice.h"
+#include "device_list.h"
 #include "interrupt.h"
 #include "output_file.h"
 #include "scene_inputs.h"
@@ -129,7 +131,7 @@ DeviceRender renderPreparedOnGpu(GpuRenderer& gpu, const GpuSceneData& data, con
     const std::string kernel = (stats.generalKernel ? "general kernel, " + stats.features : "kernel: " + stats.features) +
                                "; samples/dispatch=" + std::to_string(stats.samplesPerDispatch) + deviceTime;
     return {std::move(image), stats.device + " [" + kernel + "]", 0.0, stats.renderSeconds + stats.readbackSeconds,
-            stats.pipelineSeconds + stats.warmUpSeconds};
+            stats.pipelineSeconds + stats.warmUpSeconds, /*onGpu=*/true};
 }
 
 DeviceRender renderOnGpu(GpuRenderer& gpu, const Scene& scene, const RenderOptions& options, bool general) {
@@ -144,9 +146,25 @@ DeviceRender renderOnGpu(GpuRenderer& gpu, const Scene& scene, const RenderOptio
     return result;
 }
 
+bool asksForVulkan(const CommandLine& cl) { return cl.gpuIndex >= 0 || !cl.shaderDir.empty() || cl.general || cl.validate; }
+
+// --device auto where every Vulkan device runs on the CPU: the CPU reference, said once unless -q.
+// Without a loader the answer is no: opening the GPU then says why.
+bool autoRendersOnTheCpuReference(const CommandLine& cl) {
+    if (cl.device != DeviceChoice::Auto || asksForVulkan(cl)) return false;
+    AutoDevice choice;
+    try {
+        choice = chooseAutoDevice(listDevices());
+    } catch (const VulkanUnavailable&) {
+        return false;
+    }
+    if (choice.cpuReference && !cl.render.quiet) std::cerr << "note: " << choice.reason << "\n";
+    return choice.cpuReference;
+}
+
 // --device auto: the GPU when a Vulkan device exists, else the CPU reference with a message.
 std::unique_ptr<GpuRenderer> openGpu(const CommandLine& cl) {
-    if (cl.device == DeviceChoice::Cpu) return nullptr;
+    if (cl.device == DeviceChoice::Cpu || autoRendersOnTheCpuReference(cl)) return nullptr;
     try {
         return std::make_unique<GpuRenderer>(gpuOptions(cl));
     } catch (const VulkanUnavailable& e) {

@@ -32,6 +32,10 @@ void checkNotASceneInput(const std::string& output, const Scene& scene);
 
 GpuRendererOptions gpuOptions(const CommandLine& cl);
 
+// An option only the GPU renderer has (--gpu N, --shader-dir, --general-kernel, --validate): under
+// --device auto it asks for Vulkan whatever the devices are (device_choice.h).
+bool asksForVulkan(const CommandLine& cl);
+
 struct DeviceRender {
     Image image;
     std::string device;           // the device, and on the GPU the kernel variant that ran
@@ -39,6 +43,7 @@ struct DeviceRender {
     double seconds = 0.0;         // the render itself
     double pipelineSeconds = 0.0; // GPU: creating and first dispatching the kernel variant (the
                                   // driver's compile; 0 when it was made before)
+    bool onGpu = false;           // rendered by the GpuRenderer (the summary then names the compile)
 };
 
 // Each renderer prepares the scene its own way (its own tree) and renders it; the Prepared forms
@@ -48,8 +53,9 @@ DeviceRender renderOnGpu(GpuRenderer& gpu, const Scene& scene, const RenderOptio
 DeviceRender renderPreparedOnCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions& options);
 DeviceRender renderPreparedOnGpu(GpuRenderer& gpu, const GpuSceneData& data, const RenderOptions& options, bool general);
 
-// --device auto: the GPU when a Vulkan device exists, else nullptr (the CPU reference) with a
-// message; --device cpu: nullptr.
+// --device auto: the GPU when a usable Vulkan device is a GPU (device_choice.h), else nullptr (the
+// CPU reference) with a note, also when no Vulkan device opens; --gpu N: that device, falling back
+// likewise; --device cpu: nullptr; --device gpu: a Vulkan device of any type, or the error.
 std::unique_ptr<GpuRenderer> openGpu(const CommandLine& cl);
 
 // The float RGB image every renderer returns: a lower bound on what a render needs.

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "cpu_renderer.h"
+#include "exposure.h"
 #include "file_watcher.h"
 #include "gpu_renderer.h"
 #include "interrupt.h"
@@ -65,14 +66,15 @@ struct LoadedScene {
     std::optional<SceneAccel> cpu;
 };
 
-// A progressive pass: written to the output (ProgressiveOutput) and shown on the preview page.
+// A progressive pass: written to the output (ProgressiveOutput) and shown on the preview page, both
+// with --exposure applied.
 class WatchedPasses : public CheckpointSink {
 public:
-    WatchedPasses(ProgressiveOutput& file, WatchPreview& preview, int round, int rpp)
-        : file_(file), preview_(preview), round_(round), rpp_(rpp) {}
+    WatchedPasses(ProgressiveOutput& file, WatchPreview& preview, int round, int rpp, float exposure)
+        : file_(file), preview_(preview), round_(round), rpp_(rpp), exposure_(exposure) {}
     void checkpoint(const Image& soFar, int samplesDone) override {
         file_.checkpoint(soFar, samplesDone);
-        preview_.image(soFar, "render " + std::to_string(round_) + ": " + std::to_string(samplesDone) + "/" +
+        preview_.image(withExposure(soFar, exposure_), "render " + std::to_string(round_) + ": " + std::to_string(samplesDone) + "/" +
                                   std::to_string(rpp_) + " rpp so far (" + clockTime() + ")");
     }
 
@@ -80,6 +82,7 @@ private:
     ProgressiveOutput& file_;
     WatchPreview& preview_;
     int round_, rpp_;
+    float exposure_;
 };
 
 class Watcher {
@@ -153,8 +156,8 @@ private:
                 loaded_ = std::move(loaded);
                 reloadScene = false;
             }
-            ProgressiveOutput file(cl_.outputPath, cl_.render.samplesPerPixel, cl_.render.quiet, "  ");
-            WatchedPasses passes(file, preview_, round, cl_.render.samplesPerPixel);
+            ProgressiveOutput file(cl_.outputPath, cl_.render.samplesPerPixel, cl_.exposure, cl_.render.quiet, "  ");
+            WatchedPasses passes(file, preview_, round, cl_.render.samplesPerPixel, cl_.exposure);
             RenderOptions options = cl_.render;
             if (options.checkpoints > 1) options.onCheckpoint = &passes;
             preview_.rendering("render " + std::to_string(round) + ": rendering (" + clockTime() + ")");
@@ -165,13 +168,14 @@ private:
                              secondsSince(start));
                 return during;
             }
-            writeImage(result->image, cl_.outputPath);
+            const Image written = withExposure(std::move(result->image), cl_.exposure);
+            writeImage(written, cl_.outputPath);
             char line[512];
             std::snprintf(line, sizeof line, "render %d: %dx%d, %d rpp on %s: %spipeline %.3fs, render %.3fs, total %.3fs -> %s",
                           round, cl_.render.width, cl_.render.height, cl_.render.samplesPerPixel, result->device.c_str(),
                           steps.c_str(), result->pipelineSeconds, result->seconds, secondsSince(start), cl_.outputPath.c_str());
             if (!cl_.render.quiet) std::fprintf(stderr, "[%s] %s\n", clockTime().c_str(), line);
-            preview_.image(result->image, std::string(line) + " (" + clockTime() + ")");
+            preview_.image(written, std::string(line) + " (" + clockTime() + ")");
             return during;
         } catch (const RenderCancelled&) {
             throw;

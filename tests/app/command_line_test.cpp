@@ -231,6 +231,34 @@ TEST(CourseCommandLine, QuestionMarkPrintsTheHelpAndExitsZero) {
     EXPECT_NE(p.out.find("--aperture"), std::string::npos) << p.out;
 }
 
+// Issue 39: --version prints one line naming the program and its version, and exits 0.
+TEST(CommandLineOptions, VersionPrintsTheVersionLineAndExitsZero) {
+    const Parsed p = parse({"--version"});
+    EXPECT_FALSE(p.result.commandLine.has_value());
+    EXPECT_EQ(p.result.exitCode, 0);
+    EXPECT_EQ(p.out.rfind("vkrt ", 0), 0u) << p.out;
+    EXPECT_EQ(p.out.find('\n'), p.out.size() - 1) << "one line: " << p.out;
+    EXPECT_NE(parse({"-?"}).out.find("--version"), std::string::npos);
+}
+
+// Issue 39: --exposure EV in stops, negative values included; anything but a finite number within
+// +-20 stops is refused, naming the option and the value.
+TEST(CommandLineOptions, ExposureTakesStopsAndRefusesWhatIsNotAFiniteSmallNumber) {
+    EXPECT_EQ(parseOk({"s.xml"}).exposure, 0.0f);
+    EXPECT_EQ(parseOk({"s.xml", "--exposure", "1.5"}).exposure, 1.5f);
+    EXPECT_EQ(parseOk({"s.xml", "--exposure", "-1"}).exposure, -1.0f);
+    EXPECT_EQ(parseOk({"s.xml", "--exposure=-20"}).exposure, -20.0f);
+    for (const char* bad : {"21", "-20.5", "nan", "inf", "-inf", "1e39"})
+        EXPECT_NE(parseRefused({"s.xml", "--exposure", bad}).find(std::string("--exposure: '") + bad + "': must be finite and within -20..20 stops"),
+                  std::string::npos)
+            << bad;
+    for (const char* bad : {"bright", "1x", ""})
+        EXPECT_NE(parseRefused({"s.xml", "--exposure", bad}).find(std::string("--exposure: '") + bad + "': expected a number of stops"),
+                  std::string::npos)
+            << bad;
+    EXPECT_NE(describeSettings(parseOk({"s.xml", "--exposure", "-1"})).find("exposure: -1 stops (x0.5)"), std::string::npos);
+}
+
 TEST(CourseCommandLine, CourseFlagsWorkInCompareAndSweep) {
     const CommandLine compare = parseOk({"compare", "s.xml", "-n", "2", "-a", "2"});
     EXPECT_EQ(compare.command, Command::Compare);

@@ -188,8 +188,9 @@ LONG = """<scene bgColor="0.1 0.1 0.1"><camera><position>0 0 3</position><viewDi
 
 def restart_on_change(vkrt, work):
     scene, out = os.path.join(work, "long.xml"), os.path.join(work, "long.ppm")
-    # One 16x16 tile: one CPU thread, ~1.5 s here; the edit comes 0.4 s in.
-    size = ["-w", "16", "-h", "12", "-r", "65536", "--device", "cpu"]
+    # One 16x16 tile: one CPU thread, ~1.5 s here; the edit comes 0.4 s in. --exposure: a watched
+    # render writes the image scaled as a one-shot render does (issue 39).
+    size = ["-w", "16", "-h", "12", "-r", "65536", "--device", "cpu", "--exposure", "-1"]
     write(scene, LONG.replace("COLOUR", "0.5 0.5 0.5"))
     log = []
     proc = subprocess.Popen([vkrt, "--watch", scene, *size, "-o", out], stderr=subprocess.PIPE, text=True)

@@ -19,8 +19,10 @@ bundle=$work/moved
 clean() { env -i PATH=/usr/bin:/bin HOME="$work" VKRT_OIIO_MODULE=/nonexistent/libvkrt_oiio.so "$@"; }
 
 for scene in mirrorTest2.xml earth.xml; do
-  clean "$bundle/vkrt" "$shared/scenes/upstream/$scene" -w 48 -h 36 -r 2 -q -o "$work/bundled_$scene.png"
-  "$build/vkrt" "$shared/scenes/upstream/$scene" -w 48 -h 36 -r 2 -q -o "$work/built_$scene.png"
+  # --device gpu: the bundle's own loader and embedded kernels render (auto would take the CPU
+  # reference where lavapipe is the only device).
+  clean "$bundle/vkrt" "$shared/scenes/upstream/$scene" -w 48 -h 36 -r 2 -q --device gpu -o "$work/bundled_$scene.png"
+  "$build/vkrt" "$shared/scenes/upstream/$scene" -w 48 -h 36 -r 2 -q --device gpu -o "$work/built_$scene.png"
   cmp "$work/bundled_$scene.png" "$work/built_$scene.png"
   echo "same bytes: $scene"
 done
