@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cpu_renderer.h"
+#include "exposure.h"
 #include "heat_map.h"
 #include "image.h"
 #include "image_check.h"
@@ -133,7 +134,10 @@ int runCheck(CommandLine& cl) {
     const Scene scene = loadWithWarnings(cl);
 
     double seconds = 0.0;
-    const CheckReference reference = renderReference(scene, cl.render, &seconds);
+    CheckReference reference = renderReference(scene, cl.render, &seconds);
+    // --exposure: your image was made at this exposure; a sample scaled by k has k^2 the variance.
+    reference.mean = withExposure(std::move(reference.mean), cl.exposure);
+    reference.sampleVariance = withExposure(withExposure(std::move(reference.sampleVariance), cl.exposure), cl.exposure);
     PixelTestOptions test;
     // 8-bit files hold display values, clamped to [0,1]; an EXR holds linear radiance as is.
     test.clampReference = lowerExtension(cl.imagePath) != ".exr";

@@ -416,6 +416,11 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
     bool listDevices = false;
     if (check) {
         app.add_option("image", cl.imagePath, "Your image of the scene (.png, .jpg, .ppm or .exr)")->required();
+        app.add_option_function<std::string>(
+               "--exposure", [&cl](const std::string& text) { cl.exposure = parseExposure(text); },
+               "Your image was made at this exposure: vkrt's render is scaled by 2^EV before the test")
+            ->type_name("EV")
+            ->default_str("0");
     } else if (compare) {
         app.add_option("-o,--output", cl.heatMapPath,
                        "Difference heat map image with its legend in /255 (with --stat the z map); none is written "

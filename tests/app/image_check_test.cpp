@@ -252,6 +252,18 @@ TEST_F(CheckCommand, AMissingLightIsNamed) {
     EXPECT_NE(run.out.find("likely mistake   light 2 of 2 missing"), std::string::npos) << run.out;
 }
 
+// An image made at --exposure 1 is the same picture when check is told so, and not otherwise.
+TEST_F(CheckCommand, ExposureScalesTheReference) {
+    Image doubled = instructor;
+    for (glm::vec3& p : doubled.pixels) p = glm::min(2.0f * p, glm::vec3(1.0f));
+    const std::string mine = inArtifacts("PhongExp_ev1.png");
+    writeImage(doubled, mine);
+    const CheckRun told = check({scene, mine, "--look", "reference", "--exposure", "1"});
+    EXPECT_EQ(told.exitCode, kExitSamePicture) << told.out;
+    const CheckRun notTold = check({scene, mine, "--look", "reference"});
+    EXPECT_EQ(notTold.exitCode, kExitDifferentPicture) << notTold.out;
+}
+
 TEST_F(CheckCommand, RefusesASizeAndAGpu) {
     const std::string mine = inArtifacts("PhongExp.png");
     writeImage(instructor, mine);
