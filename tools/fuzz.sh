@@ -2,7 +2,7 @@
 # Fuzzing the scene loaders (issue 22; tests/fuzz/README.md says what is fuzzed and how to go longer).
 #   tools/fuzz.sh build DIR                 configure and build the fuzzing build (clang, libFuzzer, ASan, UBSan)
 #   tools/fuzz.sh test DIR                  the scene loaders' unit tests from that build, under the sanitizers
-#   tools/fuzz.sh run DIR TARGET SECONDS    fuzz TARGET (xml_scene json_scene obj texture bvh) from the ../shared seeds
+#   tools/fuzz.sh run DIR TARGET SECONDS    fuzz TARGET (xml_scene json_scene obj texture bvh merge_part) from the ../shared seeds
 # Findings (crashing inputs) are written to DIR/artifacts/; the grown corpus stays in DIR/corpus/TARGET.
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
@@ -26,6 +26,7 @@ seed() {
         obj) pattern='*.obj' ;;
         texture) pattern='*.png' ;;
         bvh) mkdir -p "$out"; rm -rf "$partial"; return 0 ;;  # raw floats: libFuzzer starts from nothing
+        merge_part) cp -r "$repo/tests/fuzz/seeds/merge_part" "$out"; rm -rf "$partial"; return 0 ;;  # two parts vkrt wrote
     esac
     if [ ! -d "$shared/scenes" ]; then
         if [ "${VKRT_REQUIRE_SHARED:-}" = 1 ]; then echo "fuzz.sh: missing $shared/scenes (the seed corpus)" >&2; exit 1; fi
