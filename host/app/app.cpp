@@ -185,7 +185,9 @@ int runStatisticalCompare(CommandLine& cl) {
     const study::StatisticalComparison c = study::compareDevicesStatistically(renderer, renderer.prepare(scene), options);
     if (auto log = renderer.validationLog(); log && log->count() > 0)
         std::cerr << "warning: " << log->count() << " Vulkan validation message(s):\n" << log->joined();
-    writeHeatMap(c.test.map, cl.heatMapPath);
+    // The z map is not a difference in /255 (grey: max |z| / limit, red: a failing value), so it
+    // goes without the difference legend.
+    if (!cl.heatMapPath.empty()) writeImage(c.test.map, cl.heatMapPath);
     const study::ZTestResult& z = c.test;
     std::printf("scene            %s (%dx%d, %s sampler)\n", cl.scenePath.c_str(), cl.render.width, cl.render.height,
                 study::samplerName(cl.render.sampler).c_str());

@@ -264,6 +264,20 @@ TEST_F(CheckCommand, ExposureScalesTheReference) {
     EXPECT_EQ(notTold.exitCode, kExitDifferentPicture) << notTold.out;
 }
 
+// The old course code's ambient term lights what the course's shading leaves black: no mistake
+// explains it, and check says where the difference is.
+TEST_F(CheckCommand, LightWhereVkrtIsBlackIsCalledAnAmbientTerm) {
+    Image ambient = instructor;
+    for (glm::vec3& p : ambient.pixels)
+        if (glm::all(glm::lessThan(p, glm::vec3(0.5f / 255.0f)))) p = glm::vec3(0.1f);
+    const std::string mine = inArtifacts("PhongExp_ambient.png");
+    writeImage(ambient, mine);
+    const CheckRun run = check({scene, mine, "--look", "reference"});
+    EXPECT_EQ(run.exitCode, kExitDifferentPicture) << run.out;
+    EXPECT_NE(run.out.find("none of the"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("an ambient term?"), std::string::npos) << run.out;
+}
+
 TEST_F(CheckCommand, RefusesASizeAndAGpu) {
     const std::string mine = inArtifacts("PhongExp.png");
     writeImage(instructor, mine);
