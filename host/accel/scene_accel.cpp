@@ -1,5 +1,8 @@
 #include "scene_accel.h"
 
+#include <map>
+#include <utility>
+
 namespace vkrt {
 
 namespace {
@@ -69,14 +72,23 @@ SceneAccel buildSceneAccel(const Scene& scene, const bvh::BuildOptions& options)
     instances.push_back({0, glm::mat4(1.0f), gpu::MATERIAL_NONE});
     accel.instanceOrigin.push_back(-1);
 
-    // Mesh shapes placed directly in the scene.
+    // Mesh shapes placed directly in the scene: one group (one copy of the triangles, one tree)
+    // per mesh, however many shapes name it, as instances share a prototype's. A shape whose
+    // shader differs from the group's first shape says so through its instance's override: 101
+    // shapes naming one 100K-triangle OBJ cost one tree, not 101 (issue 38).
+    std::map<int, std::pair<std::uint32_t, int>> meshGroups;  // mesh -> (group, the first shape's shader)
     for (const Shape& shape : scene.shapes) {
         if (shape.type != ShapeType::Mesh) continue;
-        const auto group = static_cast<std::uint32_t>(groups.size());
-        groups.emplace_back();
-        accel.groupPrims.emplace_back();
-        addShape(scene, shape, groups.back(), accel.groupPrims.back());
-        instances.push_back({group, glm::mat4(1.0f), gpu::MATERIAL_NONE});
+        auto [found, first] = meshGroups.try_emplace(shape.mesh, static_cast<std::uint32_t>(groups.size()), shape.shader);
+        if (first) {
+            groups.emplace_back();
+            accel.groupPrims.emplace_back();
+            addShape(scene, shape, groups.back(), accel.groupPrims.back());
+        }
+        const auto [group, groupShader] = found->second;
+        const std::uint32_t override =
+            shape.shader == groupShader || shape.shader < 0 ? gpu::MATERIAL_NONE : static_cast<std::uint32_t>(shape.shader);
+        instances.push_back({group, glm::mat4(1.0f), override});
         accel.instanceOrigin.push_back(-1);
     }
 

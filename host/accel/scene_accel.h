@@ -2,8 +2,9 @@
 // from a hit (instance, flat primitive) to the scene model, for shading. Both renderers use it.
 //
 // Groups: group 0 holds the loose spheres, boxes and triangles of Scene::shapes (world space,
-// placed by one identity instance); every mesh shape of Scene::shapes is a group with its own
-// identity instance; every prototype is a group placed by the scene's instances. Shape emitters
+// placed by one identity instance); every mesh that shapes of Scene::shapes name is one group, each
+// such shape an identity instance of it (its shader as the instance's override where it differs
+// from the group's first shape's); every prototype is a group placed by the scene's instances. Shape emitters
 // (Scene::emitters) follow: a prototype's group placed by the emitter's transform, or a group of
 // the emitter's own shape; their material override is emitterMaterial(e), past every shader.
 #pragma once
