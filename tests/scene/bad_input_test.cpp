@@ -1,4 +1,8 @@
 // Malformed input: every class gets one SceneError naming file:line, the element and the value.
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+
 #include "scene_test_files.h"
 
 namespace vkrt::test {
@@ -174,6 +178,29 @@ TEST_F(BadInput, UnresolvedOrMissingInstanceId) {
     EXPECT_NE(issue.problem.find("unresolved instance id"), std::string::npos);
     const Issue noId = errorOf(sceneWith(kShader + "<shape name=\"egg\" type=\"instance\"/>"));
     EXPECT_NE(noId.problem.find("id"), std::string::npos);
+}
+
+// Issue 38: a 1 GiB scene file (sparse: it takes no disk) is refused from its size, before a byte
+// is read; so is a 2 GiB OBJ. Both within a second (reading them took about a minute and 2 GB).
+TEST_F(BadInput, HugeSceneAndMeshFilesAreRefusedFromTheirSize) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::filesystem::path huge = dir / "huge.xml";
+    std::filesystem::resize_file((std::ofstream(huge), huge), std::uintmax_t(1) << 30);
+    Diagnostics diagnostics;
+    try {
+        loadScene(huge.string(), {}, diagnostics);
+        FAIL() << "a 1 GiB scene file loaded";
+    } catch (const SceneError& error) {
+        EXPECT_EQ(error.issue().file, huge.string());
+        EXPECT_NE(std::string(error.what()).find("1024 MiB; a scene file may have at most 64 MiB"), std::string::npos)
+            << error.what();
+    }
+    const std::filesystem::path mesh = dir / "huge.obj";
+    std::filesystem::resize_file((std::ofstream(mesh), mesh), std::uintmax_t(2) << 30);
+    const std::string xml = sceneWith(kShader + "<shape name=\"m\" type=\"mesh\"><file>huge.obj</file><shader ref=\"s\"/></shape>");
+    const Issue issue = errorOf(xml);
+    EXPECT_NE(issue.problem.find("2048 MiB; an OBJ file may have at most 1024 MiB"), std::string::npos) << issue.problem;
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
 }
 
 TEST_F(BadInput, MissingMeshFile) {
