@@ -100,6 +100,16 @@ std::optional<Environment> loadCubeFaceEnvironment(const std::string& prefix, Ne
                        path};
             return std::nullopt;
         }
+        // Six faces each within the per-image limit could still add up to 6 x 128 MiB: the six
+        // together get what one image may have (the course's largest set is 6 x 1024^2 texels).
+        // Known from the first face, before the other five are read.
+        if (face == 0 && std::size_t(6) * static_cast<std::size_t>(environment.faceSize) *
+                static_cast<std::size_t>(environment.faceSize) > kMaxTextureTexels) {
+            problem = {"the six environment map faces of " + sizeText(environment.faceSize, environment.faceSize) +
+                           " hold more than the " + std::to_string(kMaxTextureTexels) + " texels vkrt loads for one map",
+                       path};
+            return std::nullopt;
+        }
         environment.faces[static_cast<std::size_t>(face)] = std::move(image->rgba8);
     }
     bool mirror = negZ == NegZRule::Mirrored;

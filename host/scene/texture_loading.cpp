@@ -81,6 +81,16 @@ TextureDefinition defineTexture(Scene& scene, TextureTable& textures, const std:
         textures[name] = kNoTexture;
         return {TextureDefinition::Missing, rules::missingTextureProblem(error, name)};
     }
+    std::size_t total = static_cast<std::size_t>(texture->width) * static_cast<std::size_t>(texture->height);
+    for (const Texture& loaded : scene.textures) total += static_cast<std::size_t>(loaded.width) * static_cast<std::size_t>(loaded.height);
+    if (total > kMaxSceneTextureTexels) {
+        textures[name] = kNoTexture;
+        return {TextureDefinition::Missing,
+                rules::missingTextureProblem("with it the scene's textures would hold " + std::to_string(total) +
+                                                 " texels, more than the " + std::to_string(kMaxSceneTextureTexels) +
+                                                 " (256 MiB as RGBA8) vkrt loads for one scene",
+                                             name)};
+    }
     texture->name = name;
     texture->where = where;
     textures[name] = static_cast<int>(scene.textures.size());

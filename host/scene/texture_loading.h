@@ -15,6 +15,11 @@ namespace vkrt {
 // 2048 x 2048, 1/8 of it).
 inline constexpr std::size_t kMaxTextureTexels = std::size_t(1) << 25;
 
+// All of a scene's textures together: 2^26 texels, 256 MiB as RGBA8 (two per-image limits). Many
+// images each under the per-image limit (eight of 2^25 texels took 1.25 GB) would otherwise add up
+// without bound; a texture past the total is left out with a warning, as a missing one is.
+inline constexpr std::size_t kMaxSceneTextureTexels = std::size_t(1) << 26;
+
 // Reads a PNG natively, any other image OpenImageIO can read (JPEG, EXR, ...) through its module: 1 channel is grey, 2 grey+alpha,
 // 3 RGB, 4+ RGBA (extra channels dropped); alpha defaults to opaque. Values are converted to 8
 // bits by OpenImageIO (no colour-space change: textures are used linearly, as the course did).

@@ -246,3 +246,49 @@ TEST_F(TextureParsing, AHeaderClaimingHugeDimensionsIsRefusedBeforeAllocating) {
 
 }  // namespace
 }  // namespace vkrt::test
+
+namespace vkrt::test {
+namespace {
+
+// A w x h grey PNG, and `links` more names for it (hard links: separate paths, so each is decoded
+// on its own, without writing the pixels again).
+void writeGreyPng(const std::filesystem::path& path, int w, int h, const std::vector<std::filesystem::path>& links) {
+    std::filesystem::create_directories(path.parent_path());
+    const std::vector<unsigned char> grey(static_cast<std::size_t>(w) * h, 90);
+    auto out = OIIO::ImageOutput::create(path.string());
+    ASSERT_TRUE(out && out->open(path.string(), OIIO::ImageSpec(w, h, 1, OIIO::TypeDesc::UINT8))) << path;
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, grey.data())) << path;
+    out->close();
+    for (const std::filesystem::path& link : links) std::filesystem::create_hard_link(path, link);
+}
+
+// Issue 38 item 4: images each within the per-image limit cannot add up without bound. Three
+// 4800 x 4800 textures (23M texels each): the third would take the scene past 2^26 texels and is
+// left out with a warning naming the total; the shader keeps its tint.
+TEST_F(TextureParsing, TheScenesTexturesTogetherHaveALimit) {
+    writeGreyPng(dir / "big_a.png", 4800, 4800, {dir / "big_b.png", dir / "big_c.png"});
+    std::string body;
+    for (const char* t : {"a", "b", "c"})
+        body += std::string("<texture name=\"") + t + "\" type=\"image\"><sourcefile>big_" + t + ".png</sourcefile></texture>\n";
+    body += "<shader name=\"s\" type=\"Lambertian\"><diffuse tex=\"c\">0.5 0.6 0.7</diffuse></shader>";
+    Diagnostics diagnostics;
+    const Scene scene = load(sceneWith(body), diagnostics);
+    EXPECT_EQ(scene.textures.size(), 2u);
+    EXPECT_EQ(scene.shaders[0].diffuseTexture, kNoTexture);
+    ASSERT_EQ(diagnostics.warnings().size(), 1u);
+    EXPECT_NE(diagnostics.warnings()[0].problem.find("69120000 texels, more than the 67108864"), std::string::npos)
+        << diagnostics.warnings()[0].problem;
+}
+
+// Six 2400 x 2400 faces (34.6M texels) exceed the 2^25 one map may hold: an error from the first
+// face's size, naming it.
+TEST_F(TextureParsing, AnEnvironmentMapsSixFacesTogetherHaveALimit) {
+    std::vector<std::filesystem::path> others;
+    for (const char* face : {"negX", "posY", "negY", "posZ", "negZ"}) others.push_back(dir / "big" / (std::string("env_") + face + ".png"));
+    writeGreyPng(dir / "big" / "env_posX.png", 2400, 2400, others);
+    const Issue issue = errorOf(sceneWith("", " envmapPrefix=\"big/env_\""));
+    EXPECT_NE(issue.problem.find("six environment map faces of 2400x2400"), std::string::npos) << issue.problem;
+}
+
+}  // namespace
+}  // namespace vkrt::test
