@@ -54,14 +54,11 @@ std::string percent(double fraction) {
     return text;
 }
 
-CheckReference renderReference(const Scene& scene, const RenderOptions& options, double* seconds = nullptr) {
-    const auto start = std::chrono::steady_clock::now();
-    const SceneAccel accel = prepareCpuScene(scene);
+CheckReference renderReference(const Scene& scene, const SceneAccel& accel, const RenderOptions& options) {
     CheckReference reference;
     reference.rpp = options.samplesPerPixel;
     RenderStats stats;
     reference.mean = renderCpu(scene, accel, options, &stats, &reference.sampleVariance);
-    if (seconds) *seconds = secondsSince(start);
     return reference;
 }
 
@@ -73,15 +70,17 @@ struct Trial {
 };
 
 // The mistakes that need a render of their own: a background colour other than the scene's (or
-// no environment map), and each light left out in turn.
-std::vector<Trial> tryRenderedMistakes(const Scene& scene, const RenderOptions& options, const Image& yours,
-                                       const CheckReference& reference, const PixelTestOptions& test) {
+// no environment map), and each light left out in turn. They all render with the scene's tree:
+// it holds the geometry, the shape emitters and the environment map, never the point and area
+// lights, so a scene that differs only in its lights is drawn by it as it is.
+std::vector<Trial> tryRenderedMistakes(const Scene& scene, const SceneAccel& accel, const RenderOptions& options,
+                                       const Image& yours, const CheckReference& reference, const PixelTestOptions& test) {
     std::vector<Trial> trials;
     RenderOptions cheap = options;
     cheap.samplesPerPixel = std::min(options.samplesPerPixel, kMistakeRenderRpp);
     cheap.quiet = true;
     auto attempt = [&](const std::string& name, const std::string& explanation, const Scene& variant, const RenderOptions& o) {
-        const PixelTestResult r = testPixels(yours, renderReference(variant, o), test);
+        const PixelTestResult r = testPixels(yours, renderReference(variant, accel, o), test);
         trials.push_back({name, explanation, r.passedFraction(), r.same});
         return r.same;
     };
@@ -101,9 +100,10 @@ std::vector<Trial> tryRenderedMistakes(const Scene& scene, const RenderOptions& 
             explanation += " (the instructor's reference look: --look reference)";
         if (attempt(environmentShows ? "no environment map" : "background colour", explanation, scene, other)) return trials;
     }
-    if (scene.lights.size() > 1 && scene.lights.size() <= kMaxLightsTried)
+    if (scene.lights.size() > 1 && scene.lights.size() <= kMaxLightsTried) {
+        Scene without = scene;  // one copy, its lights set for each try
         for (std::size_t k = 0; k < scene.lights.size(); ++k) {
-            Scene without = scene;
+            without.lights = scene.lights;
             without.lights.erase(without.lights.begin() + static_cast<std::ptrdiff_t>(k));
             const Light& light = scene.lights[k];
             const std::string name = "light " + std::to_string(k + 1) + " of " + std::to_string(scene.lights.size()) + " missing";
@@ -113,6 +113,7 @@ std::vector<Trial> tryRenderedMistakes(const Scene& scene, const RenderOptions& 
                 std::to_string(light.where.line) + ": is every light read and its light summed?";
             if (attempt(name, explanation, without, cheap)) return trials;
         }
+    }
     return trials;
 }
 
@@ -133,8 +134,10 @@ int runCheck(CommandLine& cl) {
     checkImageFitsInMemory(yours.width, yours.height);
     const Scene scene = loadWithWarnings(cl);
 
-    double seconds = 0.0;
-    CheckReference reference = renderReference(scene, cl.render, &seconds);
+    const auto start = std::chrono::steady_clock::now();
+    const SceneAccel accel = prepareCpuScene(scene);
+    CheckReference reference = renderReference(scene, accel, cl.render);
+    const double seconds = secondsSince(start);
     // --exposure: your image was made at this exposure; a sample scaled by k has k^2 the variance.
     reference.mean = withExposure(std::move(reference.mean), cl.exposure);
     reference.sampleVariance = withExposure(withExposure(std::move(reference.sampleVariance), cl.exposure), cl.exposure);
@@ -177,7 +180,7 @@ int runCheck(CommandLine& cl) {
                                 [](const Trial& a, const Trial& b) { return a.passedFraction < b.passedFraction; });
     };
     if (!best()->explains) {
-        const std::vector<Trial> rendered = tryRenderedMistakes(scene, cl.render, yours, reference, test);
+        const std::vector<Trial> rendered = tryRenderedMistakes(scene, accel, cl.render, yours, reference, test);
         trials.insert(trials.end(), rendered.begin(), rendered.end());
     }
     const Trial& closest = *best();

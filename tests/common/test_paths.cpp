@@ -45,4 +45,11 @@ std::string artifactDir() {
     return dir;
 }
 
+std::filesystem::path freshArtifactDir(const std::string& name) {
+    const std::filesystem::path dir = std::filesystem::path(artifactDir()) / name;
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
 }  // namespace vkrt::test

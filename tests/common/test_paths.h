@@ -37,4 +37,6 @@ std::string jsonSceneDir();
 std::string sourceDir();
 // A scratch directory for test outputs (created on demand; kept after a failure as an artefact).
 std::string artifactDir();
+// artifactDir()/name, emptied of an earlier run's files and made.
+std::filesystem::path freshArtifactDir(const std::string& name);
 }  // namespace vkrt::test

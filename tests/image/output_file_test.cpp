@@ -28,15 +28,8 @@ const bool kDefaultDispositions = [] {
     return true;
 }();
 
-fs::path freshFolder(const std::string& name) {
-    const fs::path dir = fs::path(artifactDir()) / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
 TEST(OutputFile, WritingThroughASymlinkKeepsTheLink) {
-    const fs::path dir = freshFolder("output_symlink");
+    const fs::path dir = freshArtifactDir("output_symlink");
     fs::create_directories(dir / "real");
     std::ofstream(dir / "real" / "out.png") << "old";
     fs::create_symlink("real/out.png", dir / "link.png");        // relative, as `ln -s` makes them
@@ -56,7 +49,7 @@ TEST(OutputFile, WritingThroughASymlinkKeepsTheLink) {
 // A child process starts a write and is killed by `signal` in the middle of it: it must die by
 // that signal (the default action still happens) and its temporary must be gone.
 void expectNoTemporaryAfter(int signal) {
-    const fs::path dir = freshFolder("output_signal_" + std::to_string(signal));
+    const fs::path dir = freshArtifactDir("output_signal_" + std::to_string(signal));
     const std::string target = (dir / "out.exr").string();
     const pid_t child = ::fork();
     ASSERT_GE(child, 0);

@@ -76,19 +76,12 @@ void expectRoundTrip(const std::string& path, Format first, Format second, const
     EXPECT_EQ(writeScene(twice, first, c), firstText) << "writing the round-tripped model again gives other text";
 }
 
-fs::path freshDir(const std::string& name) {
-    const fs::path dir = fs::path(artifactDir()) / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
 TEST(SceneRoundTrip, EveryXmlSceneThroughJsonAndBack) {
     VKRT_SKIP_WITHOUT(upstreamDir());
     std::vector<std::string> paths = filesIn(upstreamDir(), ".xml");
     ASSERT_EQ(paths.size(), 54u) << upstreamDir();
     for (const std::string& bundled : filesIn(sourceDir() + "/scenes", ".xml")) paths.push_back(bundled);
-    const fs::path out = freshDir("round_trip_xml");
+    const fs::path out = freshArtifactDir("round_trip_xml");
     for (const std::string& path : paths) expectRoundTrip(path, Format::Json, Format::Xml, out);
 }
 
@@ -96,7 +89,7 @@ TEST(SceneRoundTrip, EveryJsonSceneThroughXmlAndBack) {
     VKRT_SKIP_WITHOUT(jsonSceneDir());
     const std::vector<std::string> paths = filesIn(jsonSceneDir(), ".json");
     ASSERT_EQ(paths.size(), 58u) << jsonSceneDir();
-    const fs::path out = freshDir("round_trip_json");
+    const fs::path out = freshArtifactDir("round_trip_json");
     for (const std::string& path : paths) expectRoundTrip(path, Format::Xml, Format::Json, out);
 }
 
