@@ -69,8 +69,14 @@ Conversion convertScene(const std::string& input, const std::string& output, Dia
 
     const fs::path directory = fs::path(output).parent_path();
     const bool json = conversion.format == "json";
-    const Scene written = writing::withWritableNames(scene, json ? writing::NameFormat::Json : writing::NameFormat::Xml,
-                                                     &conversion.escapedNames);
+    const Scene written = [&] {
+        try {
+            return writing::withWritableNames(scene, json ? writing::NameFormat::Json : writing::NameFormat::Xml,
+                                              &conversion.escapedNames);
+        } catch (const std::runtime_error& e) {
+            throw std::runtime_error(output + ": not written: " + input + ": " + e.what());
+        }
+    }();
     const std::string text = json ? jsonSceneText(written, directory) : xmlSceneText(written, directory);
 
     // The model the file must load back as (the names and placeholders a write changes).

@@ -179,6 +179,15 @@ std::string writableName(const std::string& name, NameFormat format) {
 
 namespace {
 
+// A name as an error message shows it: a backslash doubled, and what JSON or XML cannot hold as
+// \xNN, so that two names an escape makes equal still read differently (and a NUL does not end
+// the message).
+std::string shownName(const std::string& name) {
+    std::string doubled;
+    for (char c : name) doubled += c == '\\' ? std::string("\\\\") : std::string(1, c);
+    return writableName(writableName(doubled, NameFormat::Json), NameFormat::Xml);
+}
+
 // Rewrites the names of one kind, refusing a rewrite that makes two of them equal.
 template <class Items, class NameOf>
 void rewriteNames(Items& items, const char* kind, NameFormat format, std::size_t* changed, NameOf nameOf) {
@@ -191,7 +200,7 @@ void rewriteNames(Items& items, const char* kind, NameFormat format, std::size_t
         if (name.empty()) continue;
         const auto [at, inserted] = written.emplace(name, original);
         if (!inserted && at->second != original)
-            throw std::runtime_error(std::string(kind) + " names '" + at->second + "' and '" + original +
+            throw std::runtime_error(std::string(kind) + " names '" + shownName(at->second) + "' and '" + shownName(original) +
                                      "' would both be written as '" + name + "'; rename one of them");
     }
 }

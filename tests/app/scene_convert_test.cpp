@@ -90,6 +90,22 @@ TEST(SceneConvert, NamesTheOtherFormatCannotHoldAreEscaped) {
     EXPECT_EQ(xml.shapes[0].shader, 1);
 }
 
+// Two shader names that escape to the same text would make the written refs ambiguous: refused,
+// naming the output, the input and both names.
+TEST(SceneConvert, NamesThatWouldCollideWhenEscapedAreRefused) {
+    const fs::path dir = freshDir("name_collision");
+    writeFile(dir / "clash.json",
+              R"({"scene": {"camera": {"position": [0, 0, 3], "viewDir": [0, 0, -1]},
+                 "shader": [{"_name": "a\u0000", "_type": "Lambertian", "diffuse": [1, 0, 0]},
+                            {"_name": "a\\x00", "_type": "Lambertian", "diffuse": [0, 1, 0]}],
+                 "shape": [{"_type": "sphere", "center": [0, 0, 0], "radius": 1, "shader": {"_ref": "a\\x00"}}]}})");
+    const std::string why = refusal((dir / "clash.json").string(), (dir / "clash.xml").string());
+    EXPECT_NE(why.find("clash.xml: not written: "), std::string::npos) << why;
+    EXPECT_NE(why.find("clash.json"), std::string::npos) << why;
+    EXPECT_NE(why.find("shader names 'a\\x00' and 'a\\\\x00' would both be written as 'a\\x00'"), std::string::npos) << why;
+    EXPECT_FALSE(fs::exists(dir / "clash.xml"));
+}
+
 TEST(SceneConvert, UTF8ValidationFollowsRfc3629) {
     EXPECT_TRUE(writing::isValidUtf8("plain"));
     EXPECT_TRUE(writing::isValidUtf8("\xc3\xa8\xe2\x82\xac\xf0\x9f\x98\x80"));  // è € 😀
