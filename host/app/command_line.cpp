@@ -73,6 +73,13 @@ float parseExposure(const std::string& text) {
     return static_cast<float>(ev);
 }
 
+// --exposure EV, with what it means for the command at hand.
+void addExposureOption(CLI::App& app, CommandLine& cl, const std::string& help) {
+    app.add_option_function<std::string>("--exposure", [&cl](const std::string& text) { cl.exposure = parseExposure(text); }, help)
+        ->type_name("EV")
+        ->default_str("0");
+}
+
 // The options every command shares (what the image is, which GPU, how to run).
 // A number a float holds: a scene file refuses 1e39 for a lens, so the command line does too
 // (CLI11 would read it as inf).
@@ -416,11 +423,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
     bool listDevices = false;
     if (check) {
         app.add_option("image", cl.imagePath, "Your image of the scene (.png, .jpg, .ppm or .exr)")->required();
-        app.add_option_function<std::string>(
-               "--exposure", [&cl](const std::string& text) { cl.exposure = parseExposure(text); },
-               "Your image was made at this exposure: vkrt's render is scaled by 2^EV before the test")
-            ->type_name("EV")
-            ->default_str("0");
+        addExposureOption(app, cl, "Your image was made at this exposure: vkrt's render is scaled by 2^EV before the test");
     } else if (compare) {
         app.add_option("-o,--output", cl.heatMapPath,
                        "Difference heat map image with its legend in /255 (with --stat the z map); none is written "
@@ -456,13 +459,10 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
                        "error, refreshed as renders finish (0: any free port, printed)")
             ->check(CLI::Range(0, 65535))
             ->default_str("none");
-        app.add_option_function<std::string>(
-               "--exposure", [&cl](const std::string& text) { cl.exposure = parseExposure(text); },
-               "Scale the image by 2^EV before it is written (EV in stops: 1 doubles it, -1 halves it), in "
-               "every format: PNG/JPEG/PPM then clamp to [0,1] and truncate to 8 bits (no gamma), EXR stays linear "
-               "floats. Applies to each --progressive pass, --watch output and --part (merge copies it)")
-            ->type_name("EV")
-            ->default_str("0");
+        addExposureOption(app, cl,
+                          "Scale the image by 2^EV before it is written (EV in stops: 1 doubles it, -1 halves it), in "
+                          "every format: PNG/JPEG/PPM then clamp to [0,1] and truncate to 8 bits (no gamma), EXR stays "
+                          "linear floats. Applies to each --progressive pass, --watch output and --part (merge copies it)");
         app.add_option("--progressive", cl.render.checkpoints,
                        "Write the image N times as the samples come in (after 1/N, 2/N, ... of the rpp), so a long "
                        "render shows early; the last is the same image as without it")
