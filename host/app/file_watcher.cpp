@@ -10,6 +10,8 @@
 #include <sys/inotify.h>
 #include <unistd.h>
 
+#include "output_file.h"  // linkTargets
+
 namespace vkrt {
 
 namespace {
@@ -20,19 +22,6 @@ namespace {
 // folder made again); IN_IGNORED, which inotify sends unasked, says a watched folder is gone.
 constexpr std::uint32_t kEvents = IN_CLOSE_WRITE | IN_MOVED_TO | IN_DELETE | IN_MOVED_FROM | IN_CREATE;
 
-// The files a chain of symbolic links at `path` leads through (not `path` itself), up to 40 hops.
-std::vector<std::filesystem::path> linkTargets(const std::filesystem::path& path) {
-    std::vector<std::filesystem::path> targets;
-    std::filesystem::path at = path;
-    std::error_code ec;
-    for (int hops = 0; hops < 40 && std::filesystem::is_symlink(at, ec); ++hops) {
-        const std::filesystem::path next = std::filesystem::read_symlink(at, ec);
-        if (ec) break;
-        at = (next.is_absolute() ? next : at.parent_path() / next).lexically_normal();
-        targets.push_back(at);
-    }
-    return targets;
-}
 
 bool isUnder(const std::filesystem::path& file, const std::filesystem::path& folder) {
     auto f = file.begin();

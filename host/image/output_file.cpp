@@ -84,20 +84,20 @@ private:
     bool registered_ = false;
 };
 
-// Where a write to `path` lands: a symbolic link's target (followed through a chain of links), so
-// that -o through a link updates the file it points to instead of replacing the link by a file.
-fs::path followLinks(const fs::path& path) {
-    fs::path target = path;
-    std::error_code ec;
-    for (int hops = 0; hops < 40 && fs::is_symlink(target, ec); ++hops) {
-        const fs::path next = fs::read_symlink(target, ec);
-        if (ec) break;
-        target = next.is_absolute() ? next : target.parent_path() / next;
-    }
-    return target;
-}
-
 }  // namespace
+
+std::vector<fs::path> linkTargets(const fs::path& path) {
+    std::vector<fs::path> targets;
+    fs::path at = path;
+    std::error_code ec;
+    for (int hops = 0; hops < 40 && fs::is_symlink(at, ec); ++hops) {
+        const fs::path next = fs::read_symlink(at, ec);
+        if (ec) break;
+        at = (next.is_absolute() ? next : at.parent_path() / next).lexically_normal();
+        targets.push_back(at);
+    }
+    return targets;
+}
 
 void removeTemporaryBeingWritten() noexcept {
     if (g_temporarySet.load()) ::unlink(g_temporary);
@@ -106,8 +106,15 @@ void removeTemporaryBeingWritten() noexcept {
 void writeAtomically(const std::string& path, const std::function<void(const std::string& temporary)>& write) {
     installTerminationCleanup();
     // Same folder, so the rename is atomic (and relative paths inside resolve as in the result).
-    const fs::path target = followLinks(path);
-    const fs::path temp = target.parent_path() / ("." + target.filename().string() + ".partial-" + std::to_string(::getpid()));
+    // Where the write lands: the end of a chain of links, so that -o through a link updates the
+    // file it points to instead of replacing the link by a file.
+    const std::vector<fs::path> links = linkTargets(path);
+    const fs::path target = links.empty() ? fs::path(path) : links.back();
+    // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on "." + string.
+    std::string name = ".";
+    name += target.filename().string();
+    name += ".partial-" + std::to_string(::getpid());
+    const fs::path temp = target.parent_path() / name;
     const RegisteredTemporary registered(temp);
     try {
         write(temp.string());

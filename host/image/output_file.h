@@ -3,8 +3,10 @@
 // place, so a reader (or a kill during the write) never sees a partial file.
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace vkrt {
 
@@ -24,6 +26,10 @@ void checkNotTheInput(const std::string& output, const std::string& input);
 // SIGHUP during the write remove the temporary before they end the process (when their handling
 // is the default one).
 void writeAtomically(const std::string& path, const std::function<void(const std::string& temporary)>& write);
+
+// The files a chain of symbolic links at `path` leads through, in order (not `path` itself; empty
+// when it is no link), up to 40 hops: where a write through it lands, and what a watch follows.
+std::vector<std::filesystem::path> linkTargets(const std::filesystem::path& path);
 
 // Removes the temporary a writeAtomically is writing, if any: async-signal-safe (unlink), for the
 // handlers of signals that end the process (interrupt.cpp's second Ctrl-C).
