@@ -12,6 +12,7 @@
 
 #include "exposure.h"
 #include "image_check.h"
+#include "input_limits.h"
 #include "version.h"
 
 namespace vkrt {
@@ -80,6 +81,26 @@ void addExposureOption(CLI::App& app, CommandLine& cl, const std::string& help) 
         ->default_str("0");
 }
 
+// --input-limit NAME=VALUE (repeatable): raises or lowers one of the limits every reader keeps
+// (input_limits.h), for every command that reads files.
+void addInputLimitOption(CLI::App& app) {
+    app.add_option_function<std::vector<std::string>>(
+           "--input-limit",
+           [](const std::vector<std::string>& assignments) {
+               for (const std::string& a : assignments) {
+                   try {
+                       setInputLimit(a);
+                   } catch (const std::invalid_argument& e) {
+                       throw CLI::ValidationError("--input-limit", e.what());
+                   }
+               }
+           },
+           "Raise (or lower) what vkrt reads from one file: NAME=VALUE with K, M or G for powers of 1024; names "
+           "scene-bytes (64M), mesh-bytes (1G), image-texels (32M: one texture, or an environment map's six faces), "
+           "scene-texels (64M: all of a scene's textures), read-pixels (256M: an image read whole). Repeatable")
+        ->type_name("NAME=VALUE");
+}
+
 // The options every command shares (what the image is, which GPU, how to run).
 // A number a float holds: a scene file refuses 1e39 for a lens, so the command line does too
 // (CLI11 would read it as inf).
@@ -96,6 +117,7 @@ const CLI::Validator kFiniteFloat(
     "FINITE");
 
 void addImageOptions(CLI::App& app, CommandLine& cl, std::string& bg) {
+    addInputLimitOption(app);
     app.add_option("scene", cl.scenePath, "Scene file: .xml or .json (the UMD course's formats)");
     app.add_option("-i,--input,--inputfile", cl.scenePath, "Scene file (the course's spelling)");
     app.add_option("-w,--width", cl.render.width, "Image width in pixels")->check(CLI::Range(1, 1 << 16));
@@ -344,6 +366,7 @@ ParseResult parseConvert(std::vector<std::string> args) {
     app.add_option("-o,--output,--outputfile", cl.outputPath, "Scene file to write: .json or .xml")->required();
     app.add_flag("--strict", cl.strict, "Treat the input's warnings as errors");
     app.add_flag("-q,--quiet", cl.render.quiet, "No summary line or warnings (errors are always printed)");
+    addInputLimitOption(app);
     try {
         std::vector<std::string> reversed(args.rbegin(), args.rend());
         app.parse(reversed);
@@ -369,6 +392,7 @@ ParseResult parseMerge(std::vector<std::string> args) {
     app.add_option("parts", cl.mergeInputs, "The parts' EXR files, in any order (every part exactly once)")->required();
     app.add_option("-o,--output", cl.outputPath, "Image to write: .png, .exr, .jpg or .ppm")->required();
     app.add_flag("-q,--quiet", cl.render.quiet, "No summary line");
+    addInputLimitOption(app);
     try {
         std::vector<std::string> reversed(args.rbegin(), args.rend());
         app.parse(reversed);
@@ -383,6 +407,7 @@ ParseResult parseMerge(std::vector<std::string> args) {
 }  // namespace
 
 ParseResult parseCommandLine(int argc, const char* const* argv) {
+    resetInputLimits();  // each command line starts from the defaults (several are parsed in one test process)
     CommandLine cl;
     std::vector<std::string> args(argv + 1, argv + argc);
     if (!args.empty() && args[0] == "convert") return parseConvert({args.begin() + 1, args.end()});

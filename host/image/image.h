@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,13 +47,12 @@ std::vector<std::uint8_t> encodePng(const Image& image);
 // so a long render is not thrown away for a typo in -o.
 void checkImageOutputPath(const std::string& path);
 
-// Images readImage refuses from their header, before allocating: 2^28 pixels (16384 x 16384),
-// 3 GiB as float RGB. A 69-byte PNG may claim 40000 x 40000.
-inline constexpr std::size_t kMaxReadPixels = std::size_t(1) << 28;
-
 // Reads any format OpenImageIO knows; 8-bit files come back as value/255. Throws
-// std::runtime_error naming the file when it cannot be read or claims more than maxPixels.
-Image readImage(const std::string& path, ImageAttributes* attributes = nullptr, std::size_t maxPixels = kMaxReadPixels);
+// std::runtime_error naming the file when it cannot be read or its header claims more than
+// `maxPixels` pixels (default: the read-pixels input limit, input_limits.h), checked before any
+// pixel is allocated: a 69-byte PNG may claim 40000 x 40000. An OpenEXR header is checked first
+// (exr_header_check.h); at most four channels are read.
+Image readImage(const std::string& path, ImageAttributes* attributes = nullptr, std::optional<std::size_t> maxPixels = std::nullopt);
 
 // The number of pixels with a NaN or infinite channel.
 std::size_t countNonFinite(const Image& image);

@@ -10,6 +10,8 @@
 #include <unistd.h>
 
 #include "codec_module.h"
+#include "exr_header_check.h"
+#include "input_limits.h"
 #include "native_formats.h"
 #include "output_file.h"
 
@@ -80,7 +82,11 @@ void writeImage(const Image& image, const std::string& path, const ImageAttribut
     writeAtomically(path, [&](const std::string& temporary) { writeImageFile(image, path, temporary, attributes); });
 }
 
-Image readImage(const std::string& path, ImageAttributes* attributes, std::size_t maxPixels) {
+Image readImage(const std::string& path, ImageAttributes* attributes, std::optional<std::size_t> limit) {
+    const std::size_t maxPixels = limit ? *limit : static_cast<std::size_t>(inputLimits().readPixels);
+    const std::string hint = limit ? "" : inputLimitHint("read-pixels");
+    if (const std::string problem = exrHeaderProblem(path, maxPixels, hint); !problem.empty())
+        throw std::runtime_error(path + ": " + problem);
     oiio::Pixels data;
     std::string detail;
     switch (oiioCodec().readFloats(path, maxPixels, data, detail)) {
@@ -88,7 +94,7 @@ Image readImage(const std::string& path, ImageAttributes* attributes, std::size_
         case oiio::ReadResult::Empty: throw std::runtime_error(path + ": the image has no pixels");
         case oiio::ReadResult::TooLarge:
             throw std::runtime_error(path + ": the image claims " + std::to_string(data.width) + "x" + std::to_string(data.height) +
-                                     " pixels, more than the " + std::to_string(maxPixels) + " vkrt reads");
+                                     " pixels, more than the " + std::to_string(maxPixels) + " vkrt reads" + hint);
         case oiio::ReadResult::CannotDecode: throw std::runtime_error(path + ": read failed: " + detail);
         default: throw std::runtime_error(path + ": cannot read image: " + detail);
     }

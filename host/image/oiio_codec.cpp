@@ -20,17 +20,21 @@ ReadResult open(const std::string& path, bool unassociatedAlpha, std::unique_ptr
     return ReadResult::Ok;
 }
 
+// The channels read: the first four (RGBA, in OpenImageIO's order) at most, so that a header that
+// claims a thousand channels costs no more than a four-channel image of its size.
+int kept(const OIIO::ImageSpec& spec) { return spec.nchannels < 4 ? spec.nchannels : 4; }
+
 ReadResult readBytes(const std::string& path, std::size_t maxTexels, Pixels& out, std::string& detail) {
     std::unique_ptr<OIIO::ImageInput> input;
     if (const ReadResult r = open(path, true, input, detail); r != ReadResult::Ok) return r;
     const OIIO::ImageSpec& spec = input->spec();
     out.width = spec.width;
     out.height = spec.height;
-    out.channels = spec.nchannels;
+    out.channels = kept(spec);
     const std::size_t texels = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
     if (texels > maxTexels) return ReadResult::TooLarge;
-    out.bytes.resize(texels * static_cast<std::size_t>(spec.nchannels));
-    if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, out.bytes.data())) {
+    out.bytes.resize(texels * static_cast<std::size_t>(out.channels));
+    if (!input->read_image(0, 0, 0, out.channels, OIIO::TypeDesc::UINT8, out.bytes.data())) {
         detail = input->geterror();
         return ReadResult::CannotDecode;
     }
@@ -43,13 +47,13 @@ ReadResult readFloats(const std::string& path, std::size_t maxTexels, Pixels& ou
     const OIIO::ImageSpec& spec = input->spec();
     out.width = spec.width;
     out.height = spec.height;
-    out.channels = spec.nchannels;
+    out.channels = kept(spec);
     if (static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) > maxTexels) return ReadResult::TooLarge;
     for (const OIIO::ParamValue& p : spec.extra_attribs)
         if (p.name().string().rfind("vkrt:", 0) == 0 && p.type() == OIIO::TypeDesc::STRING)
             out.attributes.emplace_back(p.name().string(), p.get_string());
-    out.floats.resize(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
-    if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, out.floats.data())) {
+    out.floats.resize(static_cast<std::size_t>(spec.width) * spec.height * out.channels);
+    if (!input->read_image(0, 0, 0, out.channels, OIIO::TypeDesc::FLOAT, out.floats.data())) {
         detail = input->geterror();
         return ReadResult::CannotDecode;
     }

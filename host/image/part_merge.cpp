@@ -5,6 +5,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "exr_header_check.h"
 #include "render_options.h"
 
 namespace vkrt {
@@ -24,11 +25,7 @@ void checkIsExrFile(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         throw std::runtime_error(path + ": not a regular file (merge reads the .exr parts vkrt --part writes)");
-    unsigned char magic[4] = {0, 0, 0, 0};
-    std::FILE* file = std::fopen(path.c_str(), "rb");
-    const bool read = file && std::fread(magic, 1, sizeof magic, file) == sizeof magic;
-    if (file) std::fclose(file);
-    if (!read || magic[0] != 0x76 || magic[1] != 0x2f || magic[2] != 0x31 || magic[3] != 0x01)
+    if (!isExrFile(path))
         throw std::runtime_error(path + ": not an OpenEXR file (merge reads the .exr parts vkrt --part I/N -o part.exr writes)");
 }
 

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "cube_map.h"
+#include "input_limits.h"
 #include "texture_loading.h"
 
 namespace vkrt {
@@ -104,9 +105,10 @@ std::optional<Environment> loadCubeFaceEnvironment(const std::string& prefix, Ne
         // together get what one image may have (the course's largest set is 6 x 1024^2 texels).
         // Known from the first face, before the other five are read.
         if (face == 0 && std::size_t(6) * static_cast<std::size_t>(environment.faceSize) *
-                static_cast<std::size_t>(environment.faceSize) > kMaxTextureTexels) {
+                static_cast<std::size_t>(environment.faceSize) > inputLimits().imageTexels) {
             problem = {"the six environment map faces of " + sizeText(environment.faceSize, environment.faceSize) +
-                           " hold more than the " + std::to_string(kMaxTextureTexels) + " texels vkrt loads for one map",
+                           " hold more than the " + std::to_string(inputLimits().imageTexels) + " texels vkrt loads for one map" +
+                           inputLimitHint("image-texels"),
                        path};
             return std::nullopt;
         }

@@ -9,6 +9,7 @@
 
 #include <tiny_obj_loader.h>
 
+#include "input_limits.h"
 #include "mesh_normals.h"
 #include "obj_validation.h"
 
@@ -83,9 +84,9 @@ Mesh loadObjMesh(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw std::runtime_error("mesh file not found");
     if (!std::filesystem::is_regular_file(path, ec)) throw std::runtime_error("mesh path is not a regular file");
-    if (const std::uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxObjFileBytes)
-        throw std::runtime_error("the mesh file is " + std::to_string(size >> 20) + " MiB; an OBJ file may have at most " +
-                                 std::to_string(kMaxObjFileBytes >> 20) + " MiB");
+    if (const std::uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > inputLimits().meshFileBytes)
+        throw std::runtime_error("the mesh file is " + std::to_string(size) + " bytes; an OBJ file may have at most " +
+                                 std::to_string(inputLimits().meshFileBytes) + inputLimitHint("mesh-bytes"));
     std::ifstream file(path, std::ios::binary);
     if (!file) throw std::runtime_error("cannot open mesh file");
     std::stringstream buffer;

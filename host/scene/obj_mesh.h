@@ -9,16 +9,13 @@
 
 namespace vkrt {
 
-// The largest OBJ file read: 1 GiB, about 15M triangles (the course's largest meshes are 3.4 MB).
-// The text, tinyobjloader's arrays and the mesh together take several times the file's size, so
-// the size is checked before a byte is read.
-inline constexpr std::uintmax_t kMaxObjFileBytes = std::uintmax_t(1) << 30;
-
 // Loads every face of the file as one triangle mesh; `usemtl`/`mtllib` are ignored (the scene's
 // shader wins), as are unknown keywords such as al.obj's `group`. Vertex normals come from `vn`
 // when every face corner has one, else they are generated (mesh_normals.h); uvs are kept when
 // every corner has a `vt`. Throws std::runtime_error (a short reason, without the path) when the
-// file cannot be read, is larger than kMaxObjFileBytes, has no faces, or indexes a vertex that does not exist.
+// file cannot be read, is larger than the mesh-bytes input limit (input_limits.h;
+// checked before a byte is read: the text, tinyobjloader's arrays and the mesh take several times
+// the file's size), has no faces, or indexes a vertex that does not exist.
 Mesh loadObjMesh(const std::string& path);
 
 }  // namespace vkrt

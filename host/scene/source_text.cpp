@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "diagnostics.h"
+#include "input_limits.h"
 
 namespace vkrt {
 
@@ -14,10 +15,11 @@ std::string readSourceFile(const std::string& path, const char* element) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw SceneError({path, 0, element, "scene file not found", path});
     if (!std::filesystem::is_regular_file(path, ec)) throw SceneError({path, 0, element, "not a regular file", path});
-    if (const std::uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxSceneFileBytes)
+    if (const std::uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > inputLimits().sceneFileBytes)
         throw SceneError({path, 0, element,
-                          "the file is " + std::to_string(size >> 20) + " MiB; a scene file may have at most " +
-                              std::to_string(kMaxSceneFileBytes >> 20) + " MiB (meshes go in OBJ files)",
+                          "the file is " + std::to_string(size) + " bytes; a scene file may have at most " +
+                              std::to_string(inputLimits().sceneFileBytes) + " (meshes go in OBJ files)" +
+                              inputLimitHint("scene-bytes"),
                           path});
     std::ifstream in(path, std::ios::binary);
     if (!in) throw SceneError({path, 0, element, "cannot open the scene file", path});

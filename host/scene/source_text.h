@@ -9,14 +9,11 @@
 
 namespace vkrt {
 
-// The largest scene file read: 64 MiB, over 300 times the largest course file (dragons00.json,
-// 214 KiB). A file is read whole and parsed into a tree several times its size, so a 1 GiB file
-// (a sparse file, a mistaken path) would take gigabytes and a minute before its first error; its
-// size is checked before a byte is read.
-inline constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t(64) << 20;
-
 // The whole file. Throws SceneError (`element` names the format: "xml", "json", "scene") when
-// the file is missing, not a regular file, larger than kMaxSceneFileBytes or unreadable.
+// the file is missing, not a regular file, larger than the scene-bytes input limit
+// (input_limits.h: a file is parsed into a tree several times its size, so a 1 GiB sparse file
+// would take gigabytes and a minute before its first error; the size is checked before a byte is
+// read) or unreadable.
 std::string readSourceFile(const std::string& path, const char* element);
 
 // 1-based line and byte column of offsets into one text.

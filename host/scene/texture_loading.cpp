@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "codec_module.h"
+#include "exr_header_check.h"
+#include "input_limits.h"
 #include "png_reader.h"
 #include "scene_rules.h"
 
@@ -16,14 +18,19 @@ std::optional<Texture> loadTextureImage(const std::string& path, std::string& er
         error = "texture file not found";
         return std::nullopt;
     }
+    const std::size_t maxTexels = static_cast<std::size_t>(inputLimits().imageTexels);
+    if (const std::string problem = exrHeaderProblem(path, maxTexels, inputLimitHint("image-texels")); !problem.empty()) {
+        error = "cannot read texture image (" + problem + ")";
+        return std::nullopt;
+    }
     oiio::Pixels image;
     std::string detail;
     oiio::ReadResult result = oiio::ReadResult::CannotOpen;
     if (isPngFile(path)) {
-        result = readPng8(path, kMaxTextureTexels, image, detail);  // no module needed (png_reader.h)
+        result = readPng8(path, maxTexels, image, detail);  // no module needed (png_reader.h)
     } else {
         try {
-            result = oiioCodec().readBytes(path, kMaxTextureTexels, image, detail);
+            result = oiioCodec().readBytes(path, maxTexels, image, detail);
         } catch (const std::runtime_error& e) {  // the module itself is missing
             detail = e.what();
         }
@@ -36,7 +43,7 @@ std::optional<Texture> loadTextureImage(const std::string& path, std::string& er
         // zero-fill gigabytes before the decoder finds no data.
         case oiio::ReadResult::TooLarge:
             error = "texture image claims " + std::to_string(image.width) + "x" + std::to_string(image.height) +
-                    " texels, more than the " + std::to_string(kMaxTextureTexels) + " (128 MiB as RGBA8) vkrt loads";
+                    " texels, more than the " + std::to_string(maxTexels) + " vkrt loads" + inputLimitHint("image-texels");
             return std::nullopt;
         case oiio::ReadResult::CannotDecode: error = "cannot decode texture image (" + detail + ")"; return std::nullopt;
     }
@@ -83,12 +90,12 @@ TextureDefinition defineTexture(Scene& scene, TextureTable& textures, const std:
     }
     std::size_t total = static_cast<std::size_t>(texture->width) * static_cast<std::size_t>(texture->height);
     for (const Texture& loaded : scene.textures) total += static_cast<std::size_t>(loaded.width) * static_cast<std::size_t>(loaded.height);
-    if (total > kMaxSceneTextureTexels) {
+    if (total > inputLimits().sceneTexels) {
         textures[name] = kNoTexture;
         return {TextureDefinition::Missing,
                 rules::missingTextureProblem("with it the scene's textures would hold " + std::to_string(total) +
-                                                 " texels, more than the " + std::to_string(kMaxSceneTextureTexels) +
-                                                 " (256 MiB as RGBA8) vkrt loads for one scene",
+                                                 " texels, more than the " + std::to_string(inputLimits().sceneTexels) +
+                                                 " vkrt loads for one scene" + inputLimitHint("scene-texels"),
                                              name)};
     }
     texture->name = name;

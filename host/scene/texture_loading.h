@@ -11,20 +11,14 @@
 
 namespace vkrt {
 
-// 2^25 texels: 128 MiB as RGBA8, one storage binding on lavapipe (the course's largest image is
-// 2048 x 2048, 1/8 of it).
-inline constexpr std::size_t kMaxTextureTexels = std::size_t(1) << 25;
-
-// All of a scene's textures together: 2^26 texels, 256 MiB as RGBA8 (two per-image limits). Many
-// images each under the per-image limit (eight of 2^25 texels took 1.25 GB) would otherwise add up
-// without bound; a texture past the total is left out with a warning, as a missing one is.
-inline constexpr std::size_t kMaxSceneTextureTexels = std::size_t(1) << 26;
-
 // Reads a PNG natively, any other image OpenImageIO can read (JPEG, EXR, ...) through its module: 1 channel is grey, 2 grey+alpha,
 // 3 RGB, 4+ RGBA (extra channels dropped); alpha defaults to opaque. Values are converted to 8
 // bits by OpenImageIO (no colour-space change: textures are used linearly, as the course did).
 // Returns nullopt and sets `error` when the file is missing, unreadable, empty or claims more
-// than kMaxTextureTexels (checked from the header, before any texel is allocated).
+// than the image-texels input limit (input_limits.h; checked from the header, before any texel is
+// allocated). A scene's textures together hold at most the scene-texels limit: many images each
+// under the per-image limit would otherwise add up without bound (eight took 1.25 GB); the texture
+// past the total is left out with a warning, as a missing one is.
 std::optional<Texture> loadTextureImage(const std::string& path, std::string& error);
 
 // Texture name -> index into Scene::textures, or kNoTexture for a texture that was defined but

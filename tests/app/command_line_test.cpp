@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "command_line.h"
+#include "input_limits.h"
 
 namespace vkrt {
 namespace {
@@ -257,6 +258,28 @@ TEST(CommandLineOptions, ExposureTakesStopsAndRefusesWhatIsNotAFiniteSmallNumber
                   std::string::npos)
             << bad;
     EXPECT_NE(describeSettings(parseOk({"s.xml", "--exposure", "-1"})).find("exposure: -1 stops (x0.5)"), std::string::npos);
+}
+
+// --input-limit sets the process-wide limits (input_limits.h) in every command that reads files,
+// and each command line starts from the defaults again.
+TEST(CommandLineOptions, InputLimitIsRepeatableInEveryCommandAndResetsPerParse) {
+    parseOk({"s.xml", "--input-limit", "scene-bytes=1K", "--input-limit", "read-pixels=2M"});
+    EXPECT_EQ(inputLimits().sceneFileBytes, 1024u);
+    EXPECT_EQ(inputLimits().readPixels, 2u << 20);
+    parseOk({"s.xml"});
+    EXPECT_EQ(inputLimits().sceneFileBytes, 64u << 20);
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"compare", "s.xml"}, {"check", "s.xml", "i.png"}, {"sweep", "s.xml", "--out", "d"},
+          {"convert", "s.xml", "-o", "t.json"}, {"merge", "a.exr", "-o", "m.png"}}) {
+        std::vector<std::string> with = args;
+        with.insert(with.end(), {"--input-limit", "mesh-bytes=5"});
+        resetInputLimits();
+        parseOk(with);
+        EXPECT_EQ(inputLimits().meshFileBytes, 5u) << args[0];
+    }
+    resetInputLimits();
+    EXPECT_NE(parseRefused({"s.xml", "--input-limit", "texels=5"}).find("no input limit 'texels'"), std::string::npos);
+    EXPECT_NE(parseRefused({"s.xml", "--input-limit", "scene-bytes=0"}).find("would refuse every file"), std::string::npos);
 }
 
 TEST(CourseCommandLine, CourseFlagsWorkInCompareAndSweep) {

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <iterator>
+
 #include <gtest/gtest.h>
 
 #include "image.h"
@@ -100,7 +102,7 @@ TEST(MergeRefuses, FilesThatAreNotExrBeforeDecodingThem) {
 }
 
 // The same header check guards every image read: a file that claims more pixels than
-// kMaxReadPixels is refused from its header, naming its size.
+// the limit given is refused from its header, naming its size.
 TEST(ReadImage, RefusesAClaimedSizeBeyondTheCapBeforeAllocating) {
     const std::string path = writePart("capped.exr", {});
     try {
@@ -110,6 +112,59 @@ TEST(ReadImage, RefusesAClaimedSizeBeyondTheCapBeforeAllocating) {
         EXPECT_NE(std::string(e.what()).find("claims 8x6 pixels, more than the 47"), std::string::npos) << e.what();
     }
     EXPECT_EQ(readImage(path, nullptr, 48).width, 8);
+}
+
+// The bytes of a file, with `patch` written over them right after the first `after`.
+std::string patched(const std::string& source, const std::string& name, const std::string& after, const std::string& patch) {
+    std::ifstream in(source, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t at = bytes.find(after);
+    EXPECT_NE(at, std::string::npos) << after;
+    bytes.replace(at + after.size(), patch.size(), patch);
+    const std::string path = scratch(name);
+    std::ofstream(path, std::ios::binary) << bytes;
+    return path;
+}
+
+std::string le32(std::uint32_t v) { return {char(v), char(v >> 8), char(v >> 16), char(v >> 24)}; }
+
+std::string readError(const std::string& path) {
+    const auto start = std::chrono::steady_clock::now();
+    std::string error;
+    try {
+        readImage(path);
+    } catch (const std::runtime_error& e) {
+        error = e.what();
+    }
+    // OpenEXR would zero-fill what the header claims (1.6 GB: 6-15 s) before failing.
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0) << path;
+    return error;
+}
+
+// OpenEXR allocates what a header claims before reading it (fuzz_merge_part found an 875-byte
+// part whose string attribute claimed 1.6 GB: 15 s of zero-filling under the sanitizers). Each
+// claim is bounded by the file's size before OpenImageIO opens it (exr_header_check.h).
+TEST(ReadImage, AnEXRHeaderClaimingMoreThanTheFileHoldsIsRefusedFromItsHeader) {
+    const std::string honest = writePart("honest.exr", {{"vkrt:part", "1/1"}, {"vkrt:rows", "0 6"}, {"vkrt:render", kRender}});
+    EXPECT_EQ(readImage(honest).width, 8);
+    const std::string attribute = patched(honest, "attribute.exr", std::string("vkrt:render\0string\0", 19), le32(0x63610000));
+    EXPECT_NE(readError(attribute).find("attribute.exr: attribute 'vkrt:render' claims 1667301376 bytes, more than the"),
+              std::string::npos)
+        << readError(attribute);
+    EXPECT_NE(mergeError({attribute}).find("claims 1667301376 bytes"), std::string::npos) << mergeError({attribute});
+    // 100000 x 100000 pixels: past the read-pixels limit, with the flag that raises it named.
+    const std::string window = std::string("dataWindow\0box2i\0", 17) + le32(16);
+    const std::string wide = patched(honest, "wide.exr", window, le32(0) + le32(0) + le32(99999) + le32(99999));
+    EXPECT_NE(readError(wide).find("claims 100000x100000 pixels, more than the 268435456 vkrt reads (--input-limit read-pixels=N"),
+              std::string::npos)
+        << readError(wide);
+    // One column of 2^27 rows is within the pixel limit, but its chunks' offset table (8 bytes a
+    // chunk) cannot fit in a file of a few hundred bytes: OpenEXR would allocate it first.
+    const std::string tall = patched(honest, "tall.exr", window, le32(0) + le32(0) + le32(0) + le32((1u << 27) - 1));
+    EXPECT_NE(readError(tall).find("chunks need an offset table larger than the"), std::string::npos) << readError(tall);
+    // A negative-size and an empty window.
+    const std::string empty = patched(honest, "empty.exr", window, le32(5) + le32(0) + le32(4) + le32(5));
+    EXPECT_NE(readError(empty).find("the data window 5,0 .. 4,5 is empty"), std::string::npos) << readError(empty);
 }
 
 }  // namespace

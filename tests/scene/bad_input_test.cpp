@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "input_limits.h"
 #include "scene_test_files.h"
 
 namespace vkrt::test {
@@ -192,15 +193,44 @@ TEST_F(BadInput, HugeSceneAndMeshFilesAreRefusedFromTheirSize) {
         FAIL() << "a 1 GiB scene file loaded";
     } catch (const SceneError& error) {
         EXPECT_EQ(error.issue().file, huge.string());
-        EXPECT_NE(std::string(error.what()).find("1024 MiB; a scene file may have at most 64 MiB"), std::string::npos)
+        EXPECT_NE(std::string(error.what()).find("1073741824 bytes; a scene file may have at most 67108864"), std::string::npos)
             << error.what();
+        EXPECT_NE(std::string(error.what()).find("--input-limit scene-bytes=N raises it"), std::string::npos) << error.what();
     }
     const std::filesystem::path mesh = dir / "huge.obj";
     std::filesystem::resize_file((std::ofstream(mesh), mesh), std::uintmax_t(2) << 30);
     const std::string xml = sceneWith(kShader + "<shape name=\"m\" type=\"mesh\"><file>huge.obj</file><shader ref=\"s\"/></shape>");
     const Issue issue = errorOf(xml);
-    EXPECT_NE(issue.problem.find("2048 MiB; an OBJ file may have at most 1024 MiB"), std::string::npos) << issue.problem;
+    EXPECT_NE(issue.problem.find("2147483648 bytes; an OBJ file may have at most 1073741824 (--input-limit mesh-bytes=N"),
+              std::string::npos)
+        << issue.problem;
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+}
+
+// The limits are one policy that --input-limit moves: a scene and a mesh just over lowered limits
+// are refused, and load again once the limits are raised to their sizes.
+TEST_F(BadInput, InputLimitsCanBeLoweredAndRaised) {
+    write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");  // 32 bytes
+    const std::string xml = sceneWith(kShader + "<shape type=\"mesh\"><shader ref=\"s\"/>\n<file>tri.obj</file></shape>");
+    const std::filesystem::path scene = dir / "limits.xml";
+    std::ofstream(scene) << xml;
+    const std::uint64_t sceneBytes = std::filesystem::file_size(scene);
+    struct Reset {
+        ~Reset() { resetInputLimits(); }
+    } reset;
+    setInputLimit("mesh-bytes=31");
+    Diagnostics diagnostics;
+    try {
+        loadScene(scene.string(), {}, diagnostics);
+        FAIL() << "a 32-byte mesh loaded under a 31-byte limit";
+    } catch (const SceneError& error) {
+        EXPECT_NE(std::string(error.what()).find("32 bytes; an OBJ file may have at most 31"), std::string::npos) << error.what();
+    }
+    setInputLimit("mesh-bytes=32");
+    setInputLimit("scene-bytes=" + std::to_string(sceneBytes - 1));
+    EXPECT_THROW(loadScene(scene.string(), {}, diagnostics), SceneError);
+    setInputLimit("scene-bytes=" + std::to_string(sceneBytes));
+    EXPECT_EQ(loadScene(scene.string(), {}, diagnostics).meshes.size(), 1u);
 }
 
 TEST_F(BadInput, MissingMeshFile) {
