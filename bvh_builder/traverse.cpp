@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "bvh.h"
+#include "hit_order.h"
 #include "intersect_inline.h"
 #include "node_layout.h"
 
@@ -180,12 +181,15 @@ bool trace(const SceneBvh& bvh, const Ray& ray, Hit* out) {
                 for (std::uint32_t p = first; p < first + n; ++p) {
                     PrimHit h;
                     if (!intersectPrim(bvh.prims[p], wr, o, d, tmax, h)) continue;
-                    found = true;
                     if constexpr (AnyHit) {
-                        stop = true;
+                        found = stop = true;
                         return true;
                     } else {
-                        tmax = h.t;
+                        // The kernels' rule for hits whose distances differ by rounding only
+                        // (shaders/shared/hit_order.h); tmax becomes the end of the best's bucket.
+                        if (found && !gpu::hitWins(h.t, i, p, out->t, out->instance, out->prim)) continue;
+                        found = true;
+                        tmax = std::min(gpu::hitBucketLimit(h.t), ray.tmax);
                         *out = {h.t, i, p, h.u, h.v, h.face};
                     }
                 }

@@ -23,6 +23,8 @@
 // Letting a lane that holds a leaf walk on while the others look for theirs (speculative,
 // subgroupAll to end the walk, or a lane stopping at its second leaf) was slower, and so was a
 // 4-wide node (docs/BENCHMARKS.md, "Tried and not kept").
+#include "hit_order.h"  // which of two candidates at (nearly) one distance wins
+
 #ifndef VKRT_TRAVERSE_GLSL
 #define VKRT_TRAVERSE_GLSL
 
@@ -167,6 +169,9 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
     hit.prim = 0u;
     hit.bary = vec2(0.0);
     bool found = false;
+    // Boxes and primitives are tested against tLimit: the end of the best hit's bucket
+    // (hit_order.h), where a farther candidate may still win on its indices.
+    float tLimit = tMax;
 
     TraceRay worldRay = makeTraceRay(origin, dir);
     TraceRay ray = worldRay;
@@ -227,8 +232,8 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
             vec4 fxy1 = uintBitsToFloat(xy1);
             vec4 fz = uintBitsToFloat(z01);
             float tNear0, tNear1;
-            bool box0 = hitsBox(boxOrigin, boxInvDir, vec3(fxy0.x, fxy0.z, fz.x), vec3(fxy0.y, fxy0.w, fz.y), hit.t, tNear0);
-            bool box1 = hitsBox(boxOrigin, boxInvDir, vec3(fxy1.x, fxy1.z, fz.z), vec3(fxy1.y, fxy1.w, fz.w), hit.t, tNear1);
+            bool box0 = hitsBox(boxOrigin, boxInvDir, vec3(fxy0.x, fxy0.z, fz.x), vec3(fxy0.y, fxy0.w, fz.y), tLimit, tNear0);
+            bool box1 = hitsBox(boxOrigin, boxInvDir, vec3(fxy1.x, fxy1.z, fz.z), vec3(fxy1.y, fxy1.w, fz.w), tLimit, tNear1);
             uint next0, next1;
             if (PACKED_NODES) {
                 next0 = nodeChildEntry(xy0, z01.xy);
@@ -282,13 +287,15 @@ bool traceScene(vec3 origin, vec3 dir, float tMax, bool anyHit, out Hit hit) {
                 if (!chargeLoop()) break;
                 float t;
                 vec2 bary;
-                if (intersectPrimitive(ray, base, hit.t, t, bary)) {
+                if (intersectPrimitive(ray, base, tLimit, t, bary) &&
+                    (anyHit || !found || hitWins(t, instance, first + i, hit.t, hit.instance, hit.prim))) {
                     hit.t = t;
                     hit.instance = instance;
                     hit.prim = first + i;
                     hit.bary = bary;
                     found = true;
                     if (anyHit) return true;
+                    tLimit = fmin(hitBucketLimit(t), tMax);
                 }
             }
             if (i < count) markLoopCutOff();

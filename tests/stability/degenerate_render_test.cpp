@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include "both_paths.h"
@@ -192,9 +193,10 @@ bool litRed(glm::vec3 c) { return std::fabs(c.x - kLit) < 1e-3f && c.y == 0.0f &
 bool litGreen(glm::vec3 c) { return c.x == 0.0f && std::fabs(c.y - kLit) < 1e-3f && c.z == 0.0f; }
 
 TEST(CoincidentFaces, ShowOneOfTheTwoSurfacesFullyLit) {
-    // Which of two coincident faces a ray reports is a tie the traversal order decides, and the two
-    // paths traverse differently, so either colour is right. What is never right: a face shadowing
-    // its twin (acne from a coincident surface: black) or the background showing through.
+    // Which of two coincident faces a ray reports is decided by the rule of hit_order.h (the
+    // lower primitive of the one build both devices read), so both show the same colour. What is
+    // never right: a face shadowing its twin (acne from a coincident surface: black) or the
+    // background showing through.
     Scene scene;
     scene.path = "coincident faces (built in code)";
     scene.background = glm::vec3(0.0f, 0.0f, 1.0f);
@@ -224,7 +226,44 @@ TEST(CoincidentFaces, ShowOneOfTheTwoSurfacesFullyLit) {
             }
     EXPECT_EQ(dev[0].wrong, 0) << "CPU: " << dev[0].first;
     EXPECT_EQ(dev[1].wrong, 0) << "GPU: " << dev[1].first;
+    EXPECT_TRUE(agrees(distance(im.gpu, im.cpu))) << distance(im.gpu, im.cpu).describe();
     recordRow("coincident faces (vs the nearer lit twin)", dev[0].asDistance(), dev[1].asDistance(), distance(im.gpu, im.cpu));
+}
+
+// Two instances whose faces coincide, seen from inside: a red cube scaled to 6 x 3.4 x 4.6 and
+// a green box of that size, both turned 20 degrees. Their distances differ by rounding, which each
+// device does its own way (the CPU moves a ray into an instance in double), so "the smaller t"
+// showed red or green pixel by pixel and differently on each device (issue 38, item 8: 2-5% of
+// pixels apart here, 70% in the report). The rule of shaders/shared/hit_order.h gives the first
+// instance, red, wherever the distances fall in one 256-ulp bucket: both devices show red, and
+// they differ only where the two distances straddle a bucket's edge (0.11% measured).
+TEST(CoincidentFaces, OfTwoInstancesShowTheFirstOnBothDevices) {
+    Scene scene;
+    scene.path = "coincident faces of two instances (built in code)";
+    scene.background = glm::vec3(0.0f, 0.0f, 1.0f);
+    scene.cameras.push_back(perspective({0.3f, 0.2f, 0.1f}, {1.0f, -0.5f, -2.0f}, 0.3f, 1.0f));
+    scene.lights.push_back(pointLight({0.1f, 0.3f, 0.2f}, glm::vec3(1.0f)));
+    const int red = add(scene, lambertian({0.9f, 0.1f, 0.1f}));
+    const int green = add(scene, lambertian({0.1f, 0.9f, 0.1f}));
+    const glm::mat4 turn = glm::rotate(glm::mat4(1.0f), glm::radians(20.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    scene.prototypes.push_back(box(glm::vec3(-1.0f), glm::vec3(1.0f), red));
+    scene.prototypes.push_back(box({-3.0f, -1.7f, -2.3f}, {3.0f, 1.7f, 2.3f}, green));
+    Instance scaled, plain;
+    scaled.prototype = 0;
+    scaled.objectToWorld = glm::scale(turn, glm::vec3(3.0f, 1.7f, 2.3f));
+    plain.prototype = 1;
+    plain.objectToWorld = turn;
+    scene.instances = {scaled, plain};
+    const BothImages im = renderBoth(scene, centreRays(200, 200));
+    for (const auto& [name, image] : {std::pair{"CPU", &im.cpu}, std::pair{"GPU", &im.gpu}}) {
+        int greenPixels = 0;
+        for (const glm::vec3& c : image->pixels) greenPixels += c.y > c.x;
+        // 0.5%: twice the straddles measured, far below the 2-5% that distance alone gives.
+        EXPECT_LE(greenPixels, image->width * image->height / 200) << name << ": " << greenPixels << " pixels show the second instance";
+    }
+    const Distance apart = distance(im.gpu, im.cpu);
+    EXPECT_TRUE(agrees(apart)) << apart.describe();
+    recordRow("coincident faces of two instances (GPU vs CPU)", apart);
 }
 
 TEST(ZeroThicknessBoxes, AreTwoSidedTiles) {
