@@ -16,6 +16,14 @@ vk::PipelineCacheCreateInfo cacheInfo(const PipelineCacheFile& file) {
 
 }  // namespace
 
+std::vector<SpecConstant> kernelConstants(const FeatureSet& features, std::uint32_t samplesPerDispatch, const DeviceInfo& device) {
+    auto values = features.specializationValues(samplesPerDispatch);
+    values[gpu::SPEC_UNIFORM_INDEX_FROM_GROUPS] = device.lavapipe ? 1u : 0u;  // a device's, not a scene's
+    std::vector<SpecConstant> constants;
+    for (std::uint32_t id = 0; id < values.size(); ++id) constants.push_back({id, values[id]});
+    return constants;
+}
+
 KernelCache::KernelCache(const Context& context, const KernelLayout& layout, const std::vector<std::uint32_t>& spirv)
     : context_(context), layout_(layout), module_(makeShaderModule(context, spirv)),
       file_(openPipelineCacheFile(context.info())), cache_(context.device(), cacheInfo(file_)) {
@@ -44,10 +52,7 @@ const vk::raii::Pipeline& KernelCache::pipeline(const FeatureSet& features, std:
     if (auto found = pipelines_.find(key); found != pipelines_.end()) return found->second;
 
     const auto start = std::chrono::steady_clock::now();
-    auto values = features.specializationValues(samplesPerDispatch);
-    values[gpu::SPEC_UNIFORM_INDEX_FROM_GROUPS] = context_.info().lavapipe ? 1u : 0u;  // a device's, not a scene's
-    std::vector<SpecConstant> constants;
-    for (std::uint32_t id = 0; id < values.size(); ++id) constants.push_back({id, values[id]});
+    const std::vector<SpecConstant> constants = kernelConstants(features, samplesPerDispatch, context_.info());
     vk::raii::Pipeline created = makeComputePipeline(context_, &cache_, layout_.pipelineLayout(), *module_, constants,
                                                      vk::PipelineCreateFlagBits::eDispatchBase);
     if (creationSeconds) *creationSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -19,6 +19,10 @@
 
 namespace vkrt {
 
+// The render kernel's specialization constants for `features` at `samplesPerDispatch`, on `device`
+// (one constant is the device's, not the scene's).
+std::vector<SpecConstant> kernelConstants(const FeatureSet& features, std::uint32_t samplesPerDispatch, const DeviceInfo& device);
+
 class KernelCache {
 public:
     KernelCache(const Context& context, const KernelLayout& layout, const std::vector<std::uint32_t>& spirv);

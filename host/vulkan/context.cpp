@@ -33,11 +33,19 @@ Context::Context(const ContextOptions& options) : log_(makeLog(options.validatio
     // A driver may list a device and then fail to open it. With fallBack (--device auto) the next
     // one is tried and stderr says so; without it (--device gpu) the best device must open: a user
     // who asked for the GPU must not get lavapipe silently.
+    std::vector<int> candidates;
+    if (options.compileOnly) {
+        // A compiler's verdict is wanted, not a render: a compile-only device (by --gpu, or the
+        // first there is) before the usable ones.
+        for (std::size_t i = 0; i < devices.size(); ++i)
+            if (devices[i].compileOnly && (options.gpu < 0 || options.gpu == static_cast<int>(i))) candidates.push_back(static_cast<int>(i));
+    }
+    if (candidates.empty()) candidates = deviceCandidates(devices, options.gpu);
     std::string failures;
-    for (const int candidate : deviceCandidates(devices, options.gpu)) {
+    for (const int candidate : candidates) {
         if (!failures.empty() && !options.fallBack) break;
         try {
-            openDevice(std::move(physical[candidate]), devices[candidate]);
+            openDevice(std::move(physical[candidate]), devices[candidate], options.compileOnly);
             if (!failures.empty())
                 std::fprintf(stderr, "note: could not open a Vulkan device (%s ); using %s\n", failures.c_str(),
                              devices[candidate].name.c_str());
@@ -62,11 +70,19 @@ Context::Context(const ContextOptions& options) : log_(makeLog(options.validatio
     mapsDeviceMemory_ = !options.forceStaging && info_.type == "cpu" && deviceLocalIsMappable(memory_);
 }
 
-void Context::openDevice(vk::raii::PhysicalDevice physical, const DeviceInfo& info) {
+void Context::openDevice(vk::raii::PhysicalDevice physical, const DeviceInfo& info, bool compileOnly) {
     const auto family = static_cast<std::uint32_t>(computeQueueFamily(physical));
     const float priority = 1.0f;
     vk::DeviceQueueCreateInfo queueInfo({}, family, 1, &priority);
-    device_ = vk::raii::Device(physical, vk::DeviceCreateInfo({}, queueInfo));  // unchanged if this throws
+    vk::DeviceCreateInfo create({}, queueInfo);
+    vk::PhysicalDevicePipelineExecutablePropertiesFeaturesKHR statistics(VK_TRUE);
+    const char* statisticsExtension = VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME;
+    statisticsEnabled_ = compileOnly && info.pipelineStatistics;
+    if (statisticsEnabled_) {
+        create.setPEnabledExtensionNames(statisticsExtension);
+        create.setPNext(&statistics);
+    }
+    device_ = vk::raii::Device(physical, create);  // unchanged if this throws
     queue_ = vk::raii::Queue(device_, family, 0);
     info_ = info;
     queueFamily_ = family;
@@ -77,7 +93,8 @@ Context::~Context() {
     // Work still queued when the owner unwinds (an exception mid-render) must finish before its
     // buffers and pipelines are destroyed.
     try {
-        if (*device_) device_.waitIdle();
+        // Nothing ever runs on a compile-only device, and RADV's null device crashes in vkDeviceWaitIdle.
+        if (*device_ && !info_.compileOnly) device_.waitIdle();
     } catch (const vk::SystemError&) {
         // Device lost: nothing is running any more, destruction may proceed.
     }

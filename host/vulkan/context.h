@@ -26,6 +26,10 @@ struct ContextOptions {
     // Move data through staging buffers even when device memory can be mapped (tests of the
     // path discrete GPUs take).
     bool forceStaging = false;
+    // Compile kernels, never run them (vkrt-bench gpu kernels): compile-only devices (RADV's null
+    // device, DeviceInfo::compileOnly) may be opened, and are preferred; pipeline executable
+    // statistics (VK_KHR_pipeline_executable_properties) are enabled where the device offers them.
+    bool compileOnly = false;
 };
 
 // Not copyable or movable: the validation messenger points at the log.
@@ -51,9 +55,11 @@ public:
     std::shared_ptr<const ValidationLog> validationLog() const { return log_; }
     // Whether the validation layer runs (it may be absent under VKRT_VALIDATION=if-present).
     bool validating() const { return instance_.validating(); }
+    // Pipelines may be created with eCaptureStatisticsKHR and queried (pipeline_statistics.h).
+    bool statisticsEnabled() const { return statisticsEnabled_; }
 
 private:
-    void openDevice(vk::raii::PhysicalDevice physical, const DeviceInfo& info);
+    void openDevice(vk::raii::PhysicalDevice physical, const DeviceInfo& info, bool compileOnly);
 
     std::shared_ptr<ValidationLog> log_;  // declared first: outlives the messenger
     VulkanInstance instance_;
@@ -64,6 +70,7 @@ private:
     BufferLimits limits_;
     vk::PhysicalDeviceMemoryProperties memory_;
     bool mapsDeviceMemory_ = false;
+    bool statisticsEnabled_ = false;
 };
 
 }  // namespace vkrt

@@ -31,7 +31,13 @@ struct DeviceInfo {
     bool computeOnlyQueue = false; // that family has no graphics
     std::uint32_t timestampValidBits = 0;  // 0: the family cannot write timestamps
     float timestampPeriodNs = 0.0f;        // nanoseconds per timestamp tick
-    bool usable = false;           // Vulkan 1.2 with a compute queue
+    // No device-local memory at all: a device that compiles pipelines and cannot run them (RADV's
+    // null device, RADV_FORCE_FAMILY=navi21 without AMD hardware). Not usable for renders (RADV
+    // crashes on the first command pool there); `vkrt-bench gpu kernels` opens it for its
+    // compiler's statistics (ContextOptions::compileOnly).
+    bool compileOnly = false;
+    bool pipelineStatistics = false;  // offers VK_KHR_pipeline_executable_properties (registers, spills)
+    bool usable = false;           // Vulkan 1.2 with a compute queue and device memory
     std::string unusableReason;    // why not, when !usable
 };
 

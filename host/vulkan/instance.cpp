@@ -204,6 +204,14 @@ DeviceInfo describePhysicalDevice(const vk::raii::PhysicalDevice& device, int in
     info.computeOnlyQueue = !(queues.queueFlags & vk::QueueFlagBits::eGraphics);
     info.timestampValidBits = queues.timestampValidBits;
     info.timestampPeriodNs = props.limits.timestampPeriod;
+    for (const vk::ExtensionProperties& e : device.enumerateDeviceExtensionProperties())
+        if (std::string(e.extensionName.data()) == VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME) info.pipelineStatistics = true;
+    if (info.deviceLocalHeapBytes == 0) {
+        info.compileOnly = true;
+        info.unusableReason = "has no device memory: it compiles kernels but cannot run them (RADV's null device, "
+                              "RADV_FORCE_FAMILY); vkrt-bench gpu kernels reads its compiler's statistics";
+        return info;
+    }
     info.usable = true;
     return info;
 }

@@ -9,7 +9,9 @@ namespace vkrt::bench {
 int runGpuBench(const std::vector<std::string>& args) {
     if (!args.empty() && args[0] == "rays") return runGpuRaysBench({args.begin() + 1, args.end()});
     if (!args.empty() && args[0] == "scenes") return runGpuScenesBench({args.begin() + 1, args.end()});
-    throw std::runtime_error("usage: vkrt-bench gpu rays MESH.obj|sphere:N [W H SPP] ... | vkrt-bench gpu scenes [DIR] ...");
+    if (!args.empty() && args[0] == "kernels") return runGpuKernelsBench({args.begin() + 1, args.end()});
+    throw std::runtime_error("usage: vkrt-bench gpu rays MESH.obj|sphere:N [W H SPP] ... | vkrt-bench gpu scenes [DIR] ... | "
+                             "vkrt-bench gpu kernels [SCENES|DIRS...] ...");
 }
 
 }  // namespace vkrt::bench

@@ -11,5 +11,7 @@ namespace vkrt::bench {
 int runGpuRaysBench(const std::vector<std::string>& args);
 // `vkrt-bench gpu scenes [DIR] [-w W -h H -r RPP] [options]` (bench_gpu_scenes.cpp).
 int runGpuScenesBench(const std::vector<std::string>& args);
+// `vkrt-bench gpu kernels [SCENES|DIRS...] [options]` (bench_gpu_kernels.cpp).
+int runGpuKernelsBench(const std::vector<std::string>& args);
 
 }  // namespace vkrt::bench

@@ -20,7 +20,8 @@ constexpr Subcommand kSubcommands[] = {
      vkrt::bench::runBvhBench},
     {"gpu", "gpu rays MESH.obj|sphere:N [W H SPP] [--rounds R] [--threads T] [--peer PATH | --build-peer | --no-peer]\n"
             "               [--max-mismatch-fraction F] [--shader-dir DIR]\n"
-            "  vkrt-bench gpu scenes [DIR] [-w W] [-h H] [-r RPP] [--repeat N]",
+            "  vkrt-bench gpu scenes [DIR] [-w W] [-h H] [-r RPP] [--repeat N]\n"
+            "  vkrt-bench gpu kernels [SCENES|DIRS...] [--general] [--gpu N] [--shader-dir DIR] [-k DEPTH]",
      vkrt::bench::runGpuBench},
 };
 
