@@ -1,5 +1,6 @@
 #include "exr_header_check.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -31,8 +32,15 @@ std::uint64_t linesPerChunk(int compression) {
     }
 }
 
+// OpenImageIO reads an OpenEXR file in blocks of 64 scan lines of the full width, whatever the
+// image's height (a 4-row part claiming 2,752,518 columns made it allocate 8.4 GB: found by
+// fuzz_merge_part). Width x channels is bounded so that such a block stays within 256 MiB: 2^18
+// values a row, a 65536-wide RGBA image (vkrt renders at most 65536 wide).
+constexpr std::uint64_t kMaxRowValues = std::uint64_t(1) << 18;
+
 struct Part {
     bool hasWindow = false, hasTiles = false, hasChunkCount = false;
+    std::uint64_t channels = 0;
     std::int64_t x0 = 0, y0 = 0, x1 = -1, y1 = -1;
     std::uint32_t tileX = 0, tileY = 0;
     int compression = 0;
@@ -125,6 +133,15 @@ std::string exrHeaderProblem(const std::string& path, std::uint64_t maxPixels, c
                 part.hasTiles = true;
                 part.tileX = le32(v);
                 part.tileY = le32(v + 4);
+            } else if (name == "channels" && type == "chlist") {
+                // Each channel: its name, then 16 bytes (type, pLinear, reserved, x and y sampling);
+                // a NUL ends the list. Counted within the attribute's own bytes.
+                std::string channel;
+                for (std::uint64_t at = in.offset(); at < valueEnd; at = in.offset()) {
+                    if (!in.name(channel, 255) || channel.empty()) break;
+                    ++part.channels;
+                    if (in.offset() + 16 > valueEnd || !in.skip(16)) break;
+                }
             } else if (name == "compression" && type == "compression" && claimed == 1 && in.bytes(v, 1)) {
                 part.compression = v[0];
             } else if (name == "chunkCount" && type == "int" && claimed == 4 && in.bytes(v, 4)) {
@@ -154,6 +171,9 @@ std::string exrHeaderProblem(const std::string& path, std::uint64_t maxPixels, c
         if (w * h > maxPixels)
             return which + "the image claims " + std::to_string(w) + "x" + std::to_string(h) + " pixels, more than the " +
                    std::to_string(maxPixels) + " vkrt reads" + limitHint;
+        if (w * std::max<std::uint64_t>(p.channels, 1) > kMaxRowValues)
+            return which + "rows of " + std::to_string(w) + " pixels x " + std::to_string(p.channels) + " channels: more than the " +
+                   std::to_string(kMaxRowValues) + " values a row vkrt reads";
         // Each chunk has an 8-byte entry in the offset table that follows the headers: its least
         // possible number of chunks bounds what the table may hold.
         std::uint64_t chunks = 0;

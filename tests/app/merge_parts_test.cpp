@@ -162,6 +162,11 @@ TEST(ReadImage, AnEXRHeaderClaimingMoreThanTheFileHoldsIsRefusedFromItsHeader) {
     // chunk) cannot fit in a file of a few hundred bytes: OpenEXR would allocate it first.
     const std::string tall = patched(honest, "tall.exr", window, le32(0) + le32(0) + le32(0) + le32((1u << 27) - 1));
     EXPECT_NE(readError(tall).find("chunks need an offset table larger than the"), std::string::npos) << readError(tall);
+    // A 6-row part 2,752,518 pixels wide: within the pixel limit, but OpenImageIO reads 64 rows of the
+    // full width at a time (8.4 GB; found by fuzz_merge_part).
+    const std::string wideRows = patched(honest, "wide_rows.exr", window, le32(0) + le32(0) + le32(2752517) + le32(5));
+    EXPECT_NE(readError(wideRows).find("rows of 2752518 pixels x 3 channels: more than the 262144 values a row"), std::string::npos)
+        << readError(wideRows);
     // A negative-size and an empty window.
     const std::string empty = patched(honest, "empty.exr", window, le32(5) + le32(0) + le32(4) + le32(5));
     EXPECT_NE(readError(empty).find("the data window 5,0 .. 4,5 is empty"), std::string::npos) << readError(empty);
