@@ -94,11 +94,19 @@ GpuRendererOptions gpuOptions(const CommandLine& cl) {
 }
 
 
+// The render's samples that were not finite, and its pixels whose finite samples summed past float
+// (RENDERING.md §8): both devices count them alike.
+static void warnAboutRadiance(std::uint64_t nonFiniteSamples, std::uint64_t overflowedPixels) {
+    if (nonFiniteSamples > 0) std::cerr << "warning: " << nonFiniteSamples << " samples were NaN/Inf and were replaced by black\n";
+    if (overflowedPixels > 0)
+        std::cerr << "warning: " << overflowedPixels << " pixel(s) summed their samples past float's range (radiance near 3.4e38): "
+                  << "clamped to 3.4e38 (docs/RENDERING.md §8)\n";
+}
+
 DeviceRender renderPreparedOnCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions& options) {
     RenderStats stats;
     Image image = renderCpu(scene, accel, options, &stats);
-    if (stats.nonFiniteSamples > 0)
-        std::cerr << "warning: " << stats.nonFiniteSamples << " samples were NaN/Inf and were replaced by black\n";
+    warnAboutRadiance(stats.nonFiniteSamples, stats.overflowedPixels);
     return {std::move(image), "cpu (" + std::to_string(stats.threads) + (stats.threads == 1 ? " thread)" : " threads)"), 0.0, stats.seconds};
 }
 
@@ -119,8 +127,7 @@ DeviceRender renderPreparedOnGpu(GpuRenderer& gpu, const GpuSceneData& data, con
     GpuRenderSettings settings;
     settings.variant = general ? KernelVariant::General : KernelVariant::Specialised;
     Image image = gpu.render(data, options, &stats, settings);
-    if (stats.nonFiniteSamples > 0)
-        std::cerr << "warning: " << stats.nonFiniteSamples << " samples were NaN/Inf and were replaced by black\n";
+    warnAboutRadiance(stats.nonFiniteSamples, stats.overflowedPixels);
     if (auto log = gpu.validationLog(); log && log->count() > 0)
         std::cerr << "warning: " << log->count() << " Vulkan validation message(s):\n" << log->joined();
     // The kernel variant that ran: what the scene needed (feature_set.h), and the samples each

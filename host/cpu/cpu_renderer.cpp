@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "camera.h"
+#include "float_range.h"
 #include "integrator.h"
 #include "progress.h"
 #include "render_context.h"
@@ -165,7 +166,11 @@ Image renderCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions
         if (failure) std::rethrow_exception(failure);
         if (cancelled) throw RenderCancelled{};
         if (last < ctx.samplesPerPixel && options.onCheckpoint)
-            options.onCheckpoint->checkpoint(meanOf(sums, rows, static_cast<int>(last)), static_cast<int>(last));
+            options.onCheckpoint->checkpoint([&] {
+                Image soFar = meanOf(sums, rows, static_cast<int>(last));
+                clampOverflowedPixels(soFar);
+                return soFar;
+            }(), static_cast<int>(last));
     }
     if (stats) {
         stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -176,7 +181,10 @@ Image renderCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions
         stats->refractionRays = totalRays.refraction;
         stats->nonFiniteSamples = totalNonFinite;
     }
-    return meanOf(sums, rows, ctx.samplesPerPixel);
+    Image image = meanOf(sums, rows, ctx.samplesPerPixel);
+    const std::size_t overflowed = clampOverflowedPixels(image);
+    if (stats) stats->overflowedPixels = overflowed;
+    return image;
 }
 
 }  // namespace vkrt

@@ -7,6 +7,7 @@
 #include "buffer.h"
 #include "commands.h"
 #include "compute_pipeline.h"
+#include "float_range.h"
 #include "context.h"
 #include "kernel_cache.h"
 #include "kernel_layouts.h"
@@ -157,9 +158,10 @@ Image GpuRenderer::render(const GpuSceneData& data, const RenderOptions& options
             if (!last && std::find(checkpoints.begin(), checkpoints.end(), passesDone) != checkpoints.end()) {
                 impl_->transfers.download(gpuScene.accum(), std::as_writable_bytes(std::span(sums)));
                 const int samplesDone = static_cast<int>(std::min(batching.samplesPerPixel, batching.first(passesDone)));
-                options.onCheckpoint->checkpoint(resolveSoFar(sums, options.width, options.height, planner.tiles(), submission.tileIndex,
-                                                  samplesDone, options.samplesPerPixel, rows.x),
-                                     samplesDone);
+                Image soFar = resolveSoFar(sums, options.width, options.height, planner.tiles(), submission.tileIndex, samplesDone,
+                                           options.samplesPerPixel, rows.x);
+                clampOverflowedPixels(soFar);
+                options.onCheckpoint->checkpoint(soFar, samplesDone);
             }
         }
     }
@@ -169,6 +171,7 @@ Image GpuRenderer::render(const GpuSceneData& data, const RenderOptions& options
     start = Clock::now();
     impl_->transfers.download(gpuScene.accum(), std::as_writable_bytes(std::span(sums)));
     Image image = resolve(sums, options.width, options.height, options.samplesPerPixel);
+    stats.overflowedPixels = clampOverflowedPixels(image);
     stats.readbackSeconds = secondsSince(start);
     if (statsOut) *statsOut = stats;
     return image;

@@ -52,6 +52,7 @@ struct GpuRenderStats {
     double maxSubmissionSeconds = 0.0;
     std::uint64_t sceneBytes = 0;        // device memory of the scene's buffers
     std::uint32_t nonFiniteSamples = 0;  // NaN/Inf radiance samples the kernel replaced by black
+    std::uint64_t overflowedPixels = 0;  // finite samples summed past float: clamped (float_range.h)
 };
 
 class GpuRenderer {

@@ -4,6 +4,8 @@
 // same warning for either. The values here are valid and finite: a diffuse colour and a light of
 // 3e38 each, whose product (9e76) overflows float to +Inf on any IEEE device. The expected count
 // is known independently: every sample that sees the lit wall, and only those.
+#include <cfloat>
+
 #include <gtest/gtest.h>
 
 #include "both_paths.h"
@@ -55,6 +57,31 @@ TEST(NonFiniteSamples, AWallThatOverflowsIsCountedSampleBySampleOnBothDevices) {
     // Replaced by black on both: the image is black, not Inf and not the background.
     for (const Image* image : {&c.cpu, &c.gpu})
         for (const glm::vec3& p : image->pixels) ASSERT_EQ(p, glm::vec3(0.0f));
+}
+
+// Each sample finite, their sum not: a wall of diffuse 0.5 under a light of 2e38 gives samples of
+// 1e38, and four of them sum past FLT_MAX (3.4e38) to +Inf. Both devices clamp such a pixel to
+// FLT_MAX (float_range.h: the true mean is at most that) and count it, so vkrt warns; no sample is
+// counted as non-finite (issue 37: the pixel was Inf, silently).
+TEST(NonFiniteSamples, FiniteSamplesSummingPastFloatAreClampedAndCountedOnBothDevices) {
+    Scene scene = overflowingWall(3.0f);
+    scene.lights[0].intensity = glm::vec3(2e38f, 1.0f, 1.0f);
+    scene.shaders[0].diffuse = glm::vec3(0.5f);
+    const RenderOptions options = smallOptions(16, 12, 4);
+    RenderStats cpuStats;
+    GpuRenderStats gpuStats;
+    const Image cpu = renderCpu(scene, prepareCpuScene(scene), options, &cpuStats);
+    const Image gpu = sharedGpu().render(GpuRenderer::prepare(scene), options, &gpuStats);
+    EXPECT_EQ(cpuStats.nonFiniteSamples, 0u);
+    EXPECT_EQ(gpuStats.nonFiniteSamples, 0u);
+    EXPECT_EQ(cpuStats.overflowedPixels, 16u * 12u);
+    EXPECT_EQ(gpuStats.overflowedPixels, 16u * 12u);
+    for (const Image* image : {&cpu, &gpu})
+        for (const glm::vec3& p : image->pixels) {
+            ASSERT_EQ(p.x, FLT_MAX);
+            // The light's other channels: 0.5 x 1 x N.L (0.99 or more here), untouched by the clamp.
+            ASSERT_TRUE(p.y > 0.49f && p.y <= 0.5f) << p.y;
+        }
 }
 
 TEST(NonFiniteSamples, HalfAWallGivesTheSameCountAndImageOnBothDevices) {
