@@ -47,7 +47,9 @@ Scene loadWithWarnings(CommandLine& cl) {
     Scene scene = [&] {
         const ExitAtOnceOnInterrupt scope;  // a large mesh or texture takes seconds to read
         try {
-            return loadScene(cl.scenePath, LoadOptions{cl.strict, /*localOrigin=*/true}, diagnostics);
+            LoadOptions load{cl.strict, /*localOrigin=*/true};
+            load.shaderEmitters = true;
+            return loadScene(cl.scenePath, load, diagnostics);
         } catch (...) {
             // The warnings before the error may say why it happened (`tpye="point"`, then
             // "missing required attribute type").

@@ -15,7 +15,6 @@
 #include "mesh_library.h"
 #include "missing_shaders.h"
 #include "name_suggestion.h"
-#include "render_fallbacks.h"
 #include "scene_rules.h"
 #include "texture_loading.h"
 
@@ -145,13 +144,11 @@ private:
                 context_.fail(e, p, quoted(context_, e));
         }
         if (type.emitter) {
-            shader.diffuse = glm::vec3(0.0f);  // an emitter reflects nothing (render_fallbacks.h)
+            shader.diffuse = glm::vec3(0.0f);  // an emitter reflects nothing (shader_emitters.h)
             if (const JsonNode e = parameter("emission")) shader.emission = readColourValue(e);
         }
         rules::resolveLegacyShaderType(shader);
 
-        if (shader.emission != glm::vec3(0.0f) && fallbacks_.first(Fallback::EmitterShader))
-            context_.warn(typeNode, fallbackProblem(Fallback::EmitterShader), name);
         if (const auto found = shaderByName_.find(name); found != shaderByName_.end()) {
             context_.warn(node, "duplicate shader name, the first definition (line " +
                                     std::to_string(scene_.shaders[found->second].where.line) + ") is kept", name);
@@ -668,7 +665,6 @@ private:
     std::map<std::string, int> shaderByName_;
     MissingShaders missingShaders_;
     std::map<std::string, int> prototypeByName_;    // -1: a skipped (unknown-type) prototype
-    FallbackNotes fallbacks_;
     NegZRule negZ_;
     bool environmentTexels_;  // LoadOptions::environmentTexels
 };

@@ -78,7 +78,7 @@ struct Shader {
     // parameters and its direct light are Lambertian's); the file said Diffuse.
     bool diffuseBounce = false;
     // An `Emitter` shader's radiance (J26; no course file uses one). type is Lambertian with a
-    // black diffuse colour until emission is rendered (render_fallbacks.h).
+    // black diffuse colour; for renders its shapes become shape emitters (shader_emitters.h).
     glm::vec3 emission{0.0f};
     // The file names this shader but never defines it: a grey Lambertian placeholder
     // (missing_shaders.h). Renderers ignore the flag; vkrt convert says it wrote a definition.

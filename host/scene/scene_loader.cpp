@@ -7,6 +7,7 @@
 #include "geometry_extent.h"
 #include "json_loader.h"
 #include "local_origin.h"
+#include "shader_emitters.h"
 #include "source_text.h"
 #include "xml_loader.h"
 
@@ -63,6 +64,7 @@ Scene loadScene(const std::string& path, const LoadOptions& options, Diagnostics
     // A known name with content of neither kind (empty, '['): that format's parser says what is wrong.
     Scene scene = format == Format::Xml ? loadXmlScene(path, text, options, diagnostics)
                                         : loadJsonScene(path, text, options, diagnostics);
+    if (options.shaderEmitters) rules::makeShaderEmitters(scene, diagnostics);
     if (options.localOrigin) rules::rebaseWorldMeshes(scene);
     rules::warnGeometryBeyondFloat(scene, options.strict, diagnostics);
     return scene;

@@ -26,6 +26,9 @@ struct LoadOptions {
     // but not read, and Scene::environment stays empty: what `vkrt convert` and the writers' tests
     // need (they write the names), without decoding six 1024^2 faces per load.
     bool environmentTexels = true;
+    // Shapes and still instances whose shader is an `Emitter` become shape emitters
+    // (shader_emitters.h): what renders use. Off, the model keeps the file's form (vkrt convert).
+    bool shaderEmitters = false;
 };
 
 Scene loadScene(const std::string& path, const LoadOptions& options, Diagnostics& diagnostics);

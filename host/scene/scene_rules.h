@@ -58,7 +58,7 @@ std::string lightSizeProblem(float size);
 
 // --- shaders ---
 // A shader type as a file spells it. Phong is BlinnPhong; the JSON-era Diffuse is Lambertian with
-// diffuseBounce, Emitter is Lambertian with an emission (scene.h, render_fallbacks.h).
+// diffuseBounce, Emitter is Lambertian with an emission (scene.h, shader_emitters.h).
 struct ShaderTypeName {
     ShaderType type = ShaderType::Lambertian;
     const char* display = "Lambertian";  // the name messages use

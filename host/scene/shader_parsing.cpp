@@ -101,7 +101,7 @@ Shader parseShader(const ParseContext& context, pugi::xml_node node, const Textu
             context.fail(e, p, elementText(e));
     }
     if (type.emitter) {
-        shader.diffuse = glm::vec3(0.0f);  // an emitter reflects nothing (render_fallbacks.h)
+        shader.diffuse = glm::vec3(0.0f);  // an emitter reflects nothing (shader_emitters.h)
         if (pugi::xml_node e = parameter("emission")) shader.emission = parseColour(context, e);
     }
 

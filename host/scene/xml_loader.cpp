@@ -16,7 +16,6 @@
 #include "missing_shaders.h"
 #include "name_suggestion.h"
 #include "parse_context.h"
-#include "render_fallbacks.h"
 #include "scene_rules.h"
 #include "shader_parsing.h"
 #include "shape_parsing.h"
@@ -125,8 +124,6 @@ private:
         const std::string name = node.attribute("name").value();
         if (name.empty() && !inlineInShape) context_.fail(node, "missing required attribute name");
         Shader shader = parseShader(context_, node, textures_);
-        if (shader.emission != glm::vec3(0.0f) && fallbacks_.first(Fallback::EmitterShader))
-            context_.warn(node, fallbackProblem(Fallback::EmitterShader), name);
         if (!name.empty()) {
             if (const auto found = shaderByName_.find(name); found != shaderByName_.end()) {
                 const int kept = found->second;
@@ -362,7 +359,6 @@ private:
     MissingShaders missingShaders_;
     std::map<const void*, int> inlineShaders_;   // inline <shader> node -> index into Scene::shaders
     std::map<std::string, int> prototypeByName_; // -1: a skipped (unknown-type) prototype
-    FallbackNotes fallbacks_;
     NegZRule negZ_;
     bool environmentTexels_;  // LoadOptions::environmentTexels
 };

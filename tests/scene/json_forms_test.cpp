@@ -1,6 +1,7 @@
 // Every JSON form the corpus uses (docs/JSON_FORMAT.md), one test each, on small files written
 // by the test; positions are computed from the text the test wrote.
 #include <cmath>
+#include <fstream>
 
 #include "scene_test_files.h"
 
@@ -324,9 +325,9 @@ TEST_F(JsonForms, ShaderTypesUnusedParametersAndUnknownTypes) {
     expectJsonIssueAt(diagnostics.warnings()[2], json, "\"Velvet\"", "scene.shader[6]._type", "Velvet");
 }
 
-// Diffuse renders as itself (path traced, docs/RENDERING.md §5): no warning. An Emitter shader
-// (J26; no course file uses one) still renders as black Lambertian, with one warning.
-TEST_F(JsonForms, DiffuseAndEmitterShadersKeepTheirMeaningAndTheEmitterShaderWarns) {
+// Diffuse renders as itself (path traced, docs/RENDERING.md §5), an Emitter shader as an emitter:
+// no warning. Loaded in the file's form, the Emitter is a black Lambertian with its emission.
+TEST_F(JsonForms, DiffuseAndEmitterShadersKeepTheirMeaningWithoutAWarning) {
     const std::string json = jsonWith(
         R"("shader": [{"_name": "d1", "_type": "Diffuse", "diffuse": "1 1 1"}, {"_name": "d2", "_type": "Diffuse", "diffuse": "1 0 0"},)" "\n"
         R"({"_name": "lamp", "_type": "Emitter", "emission": "3 3 3"}, {"_name": "lamp2", "_type": "Emitter", "emission": "1 1 1"}])");
@@ -336,8 +337,41 @@ TEST_F(JsonForms, DiffuseAndEmitterShadersKeepTheirMeaningAndTheEmitterShaderWar
     EXPECT_EQ(scene.shaders[0].type, ShaderType::Lambertian);
     EXPECT_EQ(scene.shaders[2].emission, glm::vec3(3));
     EXPECT_EQ(scene.shaders[2].diffuse, glm::vec3(0));
-    ASSERT_EQ(diagnostics.warnings().size(), 1u);
-    expectJsonIssueAt(diagnostics.warnings()[0], json, "\"Emitter\"", "scene.shader[2]._type", "lamp");
+    EXPECT_TRUE(diagnostics.warnings().empty());
+}
+
+// In the renders' form (LoadOptions::shaderEmitters), shapes and still instances with an Emitter
+// shader become shape emitters of radiance `emission`, after the file's lights; a moving one stays
+// a shape, with a warning; shapes of other shaders stay where they were.
+TEST_F(JsonForms, EmitterShadersMakeTheirShapesEmittersInTheRendersForm) {
+    const std::string flat = jsonWith(
+        R"("shader": [{"_name": "grey", "_type": "Diffuse", "diffuse": "0.5 0.5 0.5"}, {"_name": "lamp", "_type": "Emitter", "emission": "3 2 1"}],)" "\n"
+        R"("light": [{"_type": "point", "position": "0 9 0", "intensity": "1 1 1"}],)" "\n"
+        R"("instance": [{"_name": "panel", "_type": "box", "minPt": "0 0 0", "maxPt": "1 1 1", "shader": {"_ref": "grey"}}],)" "\n"
+        R"("shape": [{"_type": "sphere", "_name": "bulb", "center": "0 2 0", "radius": 0.5, "shader": {"_ref": "lamp"}},)" "\n"
+        R"({"_type": "sphere", "_name": "ball", "center": "0 0 0", "radius": 1, "shader": {"_ref": "grey"}},)" "\n"
+        R"({"_type": "instance", "_name": "p1", "_id": "panel", "shader": {"_ref": "lamp"}, "xform": [{"type": "translate", "amount": "5 0 0"}]},)" "\n"
+        R"({"_type": "instance", "_name": "p2", "_id": "panel"}])");
+    std::ofstream(jsonPath) << flat;
+    LoadOptions options;
+    options.shaderEmitters = true;
+    Diagnostics diagnostics;
+    const Scene scene = loadScene(jsonPath, options, diagnostics);
+    EXPECT_TRUE(diagnostics.warnings().empty());
+    ASSERT_EQ(scene.shapes.size(), 1u);
+    EXPECT_EQ(scene.shapes[0].name, "ball");
+    ASSERT_EQ(scene.instances.size(), 1u);
+    EXPECT_EQ(scene.instances[0].name, "p2");
+    ASSERT_EQ(scene.emitters.size(), 2u);
+    EXPECT_EQ(scene.emitters[0].name, "bulb");
+    EXPECT_EQ(scene.emitters[0].radiance, glm::vec3(3, 2, 1));
+    EXPECT_EQ(scene.emitters[0].shape.center, glm::vec3(0, 2, 0));
+    EXPECT_EQ(scene.emitters[0].prototype, -1);
+    EXPECT_EQ(scene.emitters[1].name, "p1");
+    EXPECT_EQ(scene.emitters[1].prototype, 0);
+    EXPECT_EQ(glm::vec3(scene.emitters[1].objectToWorld[3]), glm::vec3(5, 0, 0));
+    EXPECT_EQ(scene.emitters[1].lightsBefore, 1);  // after the point light
+    ASSERT_EQ(scene.lights.size(), 1u);
 }
 
 // A shape light is an emitter (rendered as geometry, docs/RENDERING.md §4), not a light; its place

@@ -6,7 +6,6 @@
 #include <sstream>
 
 #include "both_paths.h"
-#include "render_fallbacks.h"
 #include "scene_building.h"
 
 namespace vkrt::stability {

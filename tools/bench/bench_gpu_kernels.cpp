@@ -113,7 +113,9 @@ int runGpuKernelsBench(const std::vector<std::string>& argv) {
         const std::string label = file.filename().string();
         try {
             Diagnostics diagnostics;  // warnings of real course files are expected; not this tool's concern
-            const Scene scene = loadScene(file.string(), LoadOptions{false, /*localOrigin=*/true}, diagnostics);
+            LoadOptions load{false, /*localOrigin=*/true};
+            load.shaderEmitters = true;
+            const Scene scene = loadScene(file.string(), load, diagnostics);
             const GpuSceneData data = GpuRenderer::prepare(scene);
             RenderOptions options = a.render;
             options.camera = scene.defaultCamera;

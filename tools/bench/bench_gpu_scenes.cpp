@@ -151,7 +151,9 @@ int runGpuScenesBench(const std::vector<std::string>& argv) {
         std::fflush(stdout);
         try {
             Diagnostics diagnostics;  // warnings of real course files are expected; not this tool's concern
-            const Scene scene = loadScene(file.string(), LoadOptions{false, /*localOrigin=*/true}, diagnostics);
+            LoadOptions load{false, /*localOrigin=*/true};
+            load.shaderEmitters = true;
+            const Scene scene = loadScene(file.string(), load, diagnostics);
             double gpuPrepare = 0.0, cpuPrepare = 0.0;
             const GpuSceneData gpuData = timedPrepare([&] { return GpuRenderer::prepare(scene); }, &gpuPrepare);
             const SceneAccel cpuAccel = timedPrepare([&] { return prepareCpuScene(scene); }, &cpuPrepare);
