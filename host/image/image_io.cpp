@@ -82,17 +82,34 @@ void writeImage(const Image& image, const std::string& path, const ImageAttribut
     writeAtomically(path, [&](const std::string& temporary) { writeImageFile(image, path, temporary, attributes); });
 }
 
+namespace {
+
+constexpr std::uintmax_t kMaxPixelsPerByte = 2048;
+
+}  // namespace
+
 Image readImage(const std::string& path, ImageAttributes* attributes, std::optional<std::size_t> limit) {
     const std::size_t maxPixels = limit ? *limit : static_cast<std::size_t>(inputLimits().readPixels);
     const std::string hint = limit ? "" : inputLimitHint("read-pixels");
     if (const std::string problem = exrHeaderProblem(path, maxPixels, hint); !problem.empty())
         throw std::runtime_error(path + ": " + problem);
+    // Any other format is bounded by its file's size too: PNG's deflate expands at most 1032 times
+    // and JPEG's flattest blocks about 700 times, so more than kMaxPixelsPerByte pixels a byte is a
+    // forged header (a 69-byte PNG may claim 16000 x 16000: 3 GiB of floats).
+    std::size_t cap = maxPixels;
+    std::error_code ec;
+    const std::uintmax_t fileBytes = std::filesystem::file_size(path, ec);
+    if (!ec && !isExrFile(path)) cap = std::min<std::uintmax_t>(cap, fileBytes * kMaxPixelsPerByte);
     oiio::Pixels data;
     std::string detail;
-    switch (oiioCodec().readFloats(path, maxPixels, data, detail)) {
+    switch (oiioCodec().readFloats(path, cap, data, detail)) {
         case oiio::ReadResult::Ok: break;
         case oiio::ReadResult::Empty: throw std::runtime_error(path + ": the image has no pixels");
         case oiio::ReadResult::TooLarge:
+            if (static_cast<std::size_t>(data.width) * static_cast<std::size_t>(data.height) <= maxPixels)
+                throw std::runtime_error(path + ": the image claims " + std::to_string(data.width) + "x" + std::to_string(data.height) +
+                                         " pixels in a " + std::to_string(fileBytes) + "-byte file: more than " +
+                                         std::to_string(kMaxPixelsPerByte) + " a byte, which no PNG or JPEG compresses to");
             throw std::runtime_error(path + ": the image claims " + std::to_string(data.width) + "x" + std::to_string(data.height) +
                                      " pixels, more than the " + std::to_string(maxPixels) + " vkrt reads" + hint);
         case oiio::ReadResult::CannotDecode: throw std::runtime_error(path + ": read failed: " + detail);

@@ -141,6 +141,35 @@ std::string readError(const std::string& path) {
     return error;
 }
 
+// A PNG is bounded by its file's size too: deflate expands at most 1032 times, so a 69-byte
+// file claiming 16000 x 16000 (within the pixel limit: 3 GiB of floats) is a forged header.
+TEST(ReadImage, APngClaimingFarMorePixelsThanItsBytesCanHoldIsRefused) {
+    const std::string path = scratch("flat.png");
+    Image flat(250, 250);
+    for (glm::vec3& p : flat.pixels) p = glm::vec3(0.5f);
+    writeImage(flat, path);  // a flat image: the most compressible case, which must still be read
+    EXPECT_EQ(readImage(path).width, 250);
+    std::ifstream in(path, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const unsigned char claim[8] = {0, 0, 0x3e, 0x80, 0, 0, 0x3e, 0x80};  // 16000, 16000 big-endian at offset 16
+    for (int i = 0; i < 8; ++i) bytes[16 + i] = static_cast<char>(claim[i]);
+    // The IHDR chunk's CRC (over its type and 13 data bytes, offsets 12-28) made right again, so
+    // that the decoder reads the forged size instead of refusing a damaged chunk.
+    std::uint32_t crc = 0xffffffffu;
+    for (int i = 12; i < 29; ++i) {
+        crc ^= static_cast<unsigned char>(bytes[i]);
+        for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+    }
+    crc ^= 0xffffffffu;
+    for (int i = 0; i < 4; ++i) bytes[29 + i] = static_cast<char>(crc >> (24 - 8 * i));
+    const std::string bomb = scratch("bomb16k.png");
+    std::ofstream(bomb, std::ios::binary) << bytes;
+    const std::string error = readError(bomb);
+    EXPECT_NE(error.find("claims 16000x16000 pixels in a " + std::to_string(bytes.size()) + "-byte file: more than 2048 a byte"),
+              std::string::npos)
+        << error;
+}
+
 // OpenEXR allocates what a header claims before reading it (fuzz_merge_part found an 875-byte
 // part whose string attribute claimed 1.6 GB: 15 s of zero-filling under the sanitizers). Each
 // claim is bounded by the file's size before OpenImageIO opens it (exr_header_check.h).

@@ -1,5 +1,8 @@
 #include "brute_force.h"
 
+#include <algorithm>
+
+#include "hit_order.h"
 #include "intersect.h"
 
 namespace vkrt::bvh::test {
@@ -34,27 +37,47 @@ bool hitPrim(const PrimitiveInput& p, const ObjectRay& r, float tmax, float& t) 
 
 }  // namespace
 
-bool bruteClosest(const TestScene& scene, const Rows& rows, const Ray& ray, BruteHit& hit) {
-    float tmax = ray.tmax;
+FlatIndex flatIndexOf(const SceneBvh& bvh) {
+    FlatIndex flat(bvh.groups.size());
+    for (std::size_t g = 0; g < bvh.groups.size(); ++g) {
+        const GroupRange& range = bvh.groups[g];
+        flat[g].resize(range.primCount);
+        for (std::uint32_t k = range.firstPrim; k < range.firstPrim + range.primCount; ++k) flat[g][bvh.primSource[k]] = k;
+    }
+    return flat;
+}
+
+bool bruteClosest(const TestScene& scene, const Rows& rows, const FlatIndex& flat, const Ray& ray, BruteHit& hit) {
+    float limit = ray.tmax;
     bool found = false;
+    std::uint32_t bestFlat = 0;
     for (std::uint32_t i = 0; i < scene.instances.size(); ++i) {
         const ObjectRay r = toObject(rows[i], ray);
-        const auto& prims = scene.groups[scene.instances[i].group];
+        const std::uint32_t group = scene.instances[i].group;
+        const auto& prims = scene.groups[group];
         for (std::uint32_t p = 0; p < prims.size(); ++p) {
             float t;
-            if (hitPrim(prims[p], r, tmax, t)) {
-                tmax = t;
-                hit = {t, i, p};
-                found = true;
-            }
+            if (!hitPrim(prims[p], r, limit, t)) continue;
+            const std::uint32_t f = flat[group][p];
+            if (found && !gpu::hitWins(t, i, f, hit.t, hit.instance, bestFlat)) continue;
+            hit = {t, i, p};
+            bestFlat = f;
+            found = true;
+            limit = std::min(gpu::hitBucketLimit(t), ray.tmax);
         }
     }
     return found;
 }
 
 bool bruteAny(const TestScene& scene, const Rows& rows, const Ray& ray) {
-    BruteHit h;
-    return bruteClosest(scene, rows, ray, h);
+    for (std::uint32_t i = 0; i < scene.instances.size(); ++i) {
+        const ObjectRay r = toObject(rows[i], ray);
+        for (const PrimitiveInput& p : scene.groups[scene.instances[i].group]) {
+            float t;
+            if (hitPrim(p, r, ray.tmax, t)) return true;
+        }
+    }
+    return false;
 }
 
 bool bruteOne(const TestScene& scene, const Rows& rows, std::uint32_t instance, std::uint32_t sourcePrim,

@@ -20,7 +20,13 @@ struct BruteHit {
 
 using Rows = std::vector<gpu::Instance>;  // SceneBvh::instances (only worldToObject is read)
 
-bool bruteClosest(const TestScene& scene, const Rows& rows, const Ray& ray, BruteHit& hit);
+// Per group, a primitive's input index -> its index in SceneBvh::prims, by which the closest-hit
+// rule breaks ties of distance (shaders/shared/hit_order.h).
+using FlatIndex = std::vector<std::vector<std::uint32_t>>;
+FlatIndex flatIndexOf(const SceneBvh& bvh);
+
+// The closest hit by the traversal's rule: the least (256-ulp bucket of t, instance, flat primitive).
+bool bruteClosest(const TestScene& scene, const Rows& rows, const FlatIndex& flat, const Ray& ray, BruteHit& hit);
 bool bruteAny(const TestScene& scene, const Rows& rows, const Ray& ray);
 // t of one primitive of one instance against the ray (to judge ties), or false.
 bool bruteOne(const TestScene& scene, const Rows& rows, std::uint32_t instance, std::uint32_t sourcePrim,

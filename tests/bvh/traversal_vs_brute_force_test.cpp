@@ -1,4 +1,6 @@
 // intersectClosest / intersectAny against brute force (every primitive of every instance).
+// Both pick the closest hit by the rule of shaders/shared/hit_order.h (distances in 256-ulp
+// buckets, then the lower instance and primitive), so the same primitive is expected.
 // Tolerance: t within 1e-6 relative. Both sides run the same float primitive tests on the same
 // primitive and object-space ray (see brute_force.h), so t should agree to the last bit; the
 // tolerance only leaves room for a future change of evaluation order. A different primitive is accepted only as a tie: the BVH's primitive must be hit by the
@@ -29,12 +31,13 @@ std::string describe(const Ray& r) {
 std::size_t expectMatchesBruteForce(const TestScene& scene, const std::vector<Ray>& rays,
                                     const BuildOptions& options = {}) {
     const SceneBvh bvh = buildSceneBvh(scene.groups, scene.instances, options);
+    const FlatIndex flat = flatIndexOf(bvh);
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> u(0.0f, 2.0f);
     std::size_t hits = 0, ties = 0, anyChecked = 0;
     for (const Ray& ray : rays) {
         BruteHit ref;
-        const bool refHit = bruteClosest(scene, bvh.instances, ray, ref);
+        const bool refHit = bruteClosest(scene, bvh.instances, flat, ray, ref);
         Hit hit;
         const bool got = intersectClosest(bvh, ray, hit);
         EXPECT_EQ(got, refHit) << describe(ray) << (refHit ? " brute t=" + std::to_string(ref.t) : "");
@@ -178,10 +181,11 @@ TEST(TraversalVsBruteForce, IdenticalCentroids) {
     const TestScene scene = singleGroup(prims);
     // Copies of one triangle all tie: the tie rule accepts any of them, but they are 300 ties.
     const SceneBvh bvh = buildSceneBvh(scene.groups, scene.instances);
+    const FlatIndex flat = flatIndexOf(bvh);
     for (const Ray& ray : randomRays(rng, scene, 500)) {
         BruteHit ref;
         Hit hit;
-        const bool refHit = bruteClosest(scene, bvh.instances, ray, ref);
+        const bool refHit = bruteClosest(scene, bvh.instances, flat, ray, ref);
         ASSERT_EQ(intersectClosest(bvh, ray, hit), refHit) << describe(ray);
         if (refHit) {
             EXPECT_TRUE(close(hit.t, ref.t)) << describe(ray);
