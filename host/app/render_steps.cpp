@@ -98,7 +98,8 @@ GpuRendererOptions gpuOptions(const CommandLine& cl) {
 
 // The render's samples that were not finite, and its pixels whose finite samples summed past float
 // (RENDERING.md §8): both devices count them alike.
-static void warnAboutRadiance(std::uint64_t nonFiniteSamples, std::uint64_t overflowedPixels) {
+static void warnAboutRadiance(std::uint64_t nonFiniteSamples, std::uint64_t overflowedPixels, bool quiet) {
+    if (quiet) return;  // -q: "no progress bar, summary or warnings"
     if (nonFiniteSamples > 0) std::cerr << "warning: " << nonFiniteSamples << " samples were NaN/Inf and were replaced by black\n";
     if (overflowedPixels > 0)
         std::cerr << "warning: " << overflowedPixels << " pixel(s) summed their samples past float's range (radiance near 3.4e38): "
@@ -108,7 +109,7 @@ static void warnAboutRadiance(std::uint64_t nonFiniteSamples, std::uint64_t over
 DeviceRender renderPreparedOnCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions& options) {
     RenderStats stats;
     Image image = renderCpu(scene, accel, options, &stats);
-    warnAboutRadiance(stats.nonFiniteSamples, stats.overflowedPixels);
+    warnAboutRadiance(stats.nonFiniteSamples, stats.overflowedPixels, options.quiet);
     return {std::move(image), "cpu (" + std::to_string(stats.threads) + (stats.threads == 1 ? " thread)" : " threads)"), 0.0, stats.seconds};
 }
 
@@ -129,7 +130,7 @@ DeviceRender renderPreparedOnGpu(GpuRenderer& gpu, const GpuSceneData& data, con
     GpuRenderSettings settings;
     settings.variant = general ? KernelVariant::General : KernelVariant::Specialised;
     Image image = gpu.render(data, options, &stats, settings);
-    warnAboutRadiance(stats.nonFiniteSamples, stats.overflowedPixels);
+    warnAboutRadiance(stats.nonFiniteSamples, stats.overflowedPixels, options.quiet);
     if (auto log = gpu.validationLog(); log && log->count() > 0)
         std::cerr << "warning: " << log->count() << " Vulkan validation message(s):\n" << log->joined();
     // The kernel variant that ran: what the scene needed (feature_set.h), and the samples each

@@ -68,7 +68,7 @@ struct RenderOptions {
     int checkpoints = 0;
     CheckpointSink* onCheckpoint = nullptr;  // not owned; null: no images before the end
     int threads = 0;             // CPU threads, 0 = all hardware threads
-    bool quiet = false;          // no progress bar
+    bool quiet = false;          // -q: no progress bar, summary or warnings (errors are always printed)
     // Set asynchronously (Ctrl-C); renderers stop at the next tile or pass and throw RenderCancelled.
     const std::atomic<bool>* cancel = nullptr;
 };
