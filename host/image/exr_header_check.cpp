@@ -21,6 +21,20 @@ std::uint32_t le32(const unsigned char* b) {
     return std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 | std::uint32_t(b[3]) << 24;
 }
 
+// The most a compression can expand its chunks, rounded up: deflate's limit is 1032 (ZIP, ZIPS,
+// PXR24's 24-bit floats 4/3 of that), RLE's 64, B44's fixed 32/14 and B44A's flat blocks 32/3.
+// PIZ's Huffman run codes and DWA's flat blocks have no such bound: 0, unchecked.
+std::uint64_t maxExpansion(int compression) {
+    switch (compression) {
+        case 0: return 1;                 // none
+        case 1: return 64;                // RLE
+        case 2: case 3: return 1100;      // ZIPS, ZIP
+        case 5: return 1400;              // PXR24
+        case 6: case 7: return 11;        // B44, B44A
+        default: return 0;                // PIZ, DWAA, DWAB, newer
+    }
+}
+
 // Scan lines per chunk of each compression (OpenEXR's file layout); an unknown one counts as the
 // largest, so the offset-table bound stays a lower bound.
 std::uint64_t linesPerChunk(int compression) {
@@ -41,6 +55,7 @@ constexpr std::uint64_t kMaxRowValues = std::uint64_t(1) << 18;
 struct Part {
     bool hasWindow = false, hasTiles = false, hasChunkCount = false;
     std::uint64_t channels = 0;
+    std::uint64_t pixelBytes = 0;  // the channels' stored sizes: 2 for half, 4 for float and uint
     std::int64_t x0 = 0, y0 = 0, x1 = -1, y1 = -1;
     std::uint32_t tileX = 0, tileY = 0;
     int compression = 0;
@@ -140,7 +155,9 @@ std::string exrHeaderProblem(const std::string& path, std::uint64_t maxPixels, c
                 for (std::uint64_t at = in.offset(); at < valueEnd; at = in.offset()) {
                     if (!in.name(channel, 255) || channel.empty()) break;
                     ++part.channels;
-                    if (in.offset() + 16 > valueEnd || !in.skip(16)) break;
+                    unsigned char rest[16];
+                    if (in.offset() + 16 > valueEnd || !in.bytes(rest, 16)) break;
+                    part.pixelBytes += le32(rest) == 1 ? 2 : 4;
                 }
             } else if (name == "compression" && type == "compression" && claimed == 1 && in.bytes(v, 1)) {
                 part.compression = v[0];
@@ -189,6 +206,13 @@ std::string exrHeaderProblem(const std::string& path, std::uint64_t maxPixels, c
             return which + "its " + std::to_string(chunks) + " chunks need an offset table larger than the " +
                    std::to_string(in.left()) + " bytes left in the " + std::to_string(size) + "-byte file";
         tableBytes += chunks * 8;
+        // What the pixels take decoded cannot exceed what the compression can make of the file:
+        // an 861-byte part claiming 24070 x 769 float pixels (222 MB) is forged.
+        if (const std::uint64_t expansion = maxExpansion(p.compression);
+            expansion > 0 && w * h * p.pixelBytes > expansion * static_cast<std::uint64_t>(size))
+            return which + "the image claims " + std::to_string(w) + "x" + std::to_string(h) + " pixels of " +
+                   std::to_string(p.pixelBytes) + " bytes in a " + std::to_string(size) + "-byte file: more than its compression (" +
+                   std::to_string(p.compression) + ") can expand to";
     }
     return "";
 }
