@@ -60,7 +60,6 @@ KernelVariantReport KernelStatisticsCompiler::compile(const GpuSceneData& data, 
         makeComputePipeline(impl_->context, nullptr, impl_->layout.pipelineLayout(), *impl_->module, constants, flags);
     r.compileSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     for (const ExecutableStatistics& e : pipelineStatistics(impl_->context, *pipeline)) {
-        for (const ExecutableStatistics::Value& v : e.values) r.all.emplace_back(v.name, v.value);
         r.vgprs = e.get("VGPRs");
         r.sgprs = e.get("SGPRs");
         r.spilledVgprs = e.get("Spilled VGPRs");

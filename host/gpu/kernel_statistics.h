@@ -4,11 +4,8 @@
 // compiler's verdict without the GPU, docs/BENCHMARKS.md).
 #pragma once
 
-#include <map>
 #include <memory>
 #include <string>
-#include <utility>
-#include <vector>
 
 #include "gpu_options.h"
 #include "kernel_inputs.h"
@@ -24,7 +21,6 @@ struct KernelVariantReport {
     bool cached = false;            // the same variant was compiled for an earlier scene
     // Of the compute executable, -1 where the driver does not report it.
     double vgprs = -1, sgprs = -1, spilledVgprs = -1, spilledSgprs = -1, scratchBytes = -1, wavesPerSimd = -1;
-    std::vector<std::pair<std::string, double>> all;  // every statistic, as the driver names them
 };
 
 class KernelStatisticsCompiler {

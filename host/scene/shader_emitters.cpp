@@ -16,6 +16,15 @@ glm::vec3 emissionOf(const Scene& scene, int shader) {
 
 void makeShaderEmitters(Scene& scene, Diagnostics& diagnostics) {
     const int lightsBefore = static_cast<int>(scene.lights.size());
+    // Placed after the file's lights, as a shape light listed last would be.
+    const auto emitterOf = [&](const std::string& name, glm::vec3 radiance, const SourceLocation& where) {
+        Emitter emitter;
+        emitter.name = name;
+        emitter.radiance = radiance;
+        emitter.where = where;
+        emitter.lightsBefore = lightsBefore;
+        return emitter;
+    };
     std::vector<Shape> shapes;
     for (Shape& shape : scene.shapes) {
         const glm::vec3 emission = emissionOf(scene, shape.shader);
@@ -23,11 +32,7 @@ void makeShaderEmitters(Scene& scene, Diagnostics& diagnostics) {
             shapes.push_back(std::move(shape));
             continue;
         }
-        Emitter emitter;
-        emitter.name = shape.name;
-        emitter.radiance = emission;
-        emitter.where = shape.where;
-        emitter.lightsBefore = lightsBefore;
+        Emitter emitter = emitterOf(shape.name, emission, shape.where);
         emitter.shape = std::move(shape);
         scene.emitters.push_back(std::move(emitter));
     }
@@ -49,11 +54,7 @@ void makeShaderEmitters(Scene& scene, Diagnostics& diagnostics) {
             instances.push_back(std::move(instance));
             continue;
         }
-        Emitter emitter;
-        emitter.name = instance.name;
-        emitter.radiance = emission;
-        emitter.where = instance.where;
-        emitter.lightsBefore = lightsBefore;
+        Emitter emitter = emitterOf(instance.name, emission, instance.where);
         emitter.prototype = instance.prototype;
         emitter.shape.name = instance.name;
         emitter.shape.shader = shader;
