@@ -1,6 +1,8 @@
 #include "kernel_statistics.h"
 
 #include <chrono>
+#include <map>
+#include <utility>
 
 #include "compute_pipeline.h"
 #include "context.h"
