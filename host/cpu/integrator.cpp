@@ -220,13 +220,24 @@ glm::vec3 Integrator::diffuse(const Shader& shader, const SurfacePoint& sp, cons
     const glm::vec2 u = sampling::sample2D(ctx_.sampler, ctx_.pixelGrid, key.pixel, key.sample,
                                            sampling::dimBounce(static_cast<std::uint32_t>(depth)), ctx_.seed);
     const glm::vec3 dir = emitters::cosineDirection(n, u);
-    if (glm::dot(dir, ng) <= 0.0f || !worthTracing(weight * kd)) return radiance;  // no light from inside
+    if (glm::dot(dir, ng) <= 0.0f) return radiance;  // no light from inside
+    // Russian roulette where the path's weight has fallen below ROULETTE_WEIGHT (RENDERING.md §5).
+    glm::vec3 carried = kd;
+    const glm::vec3 bounceWeight = weight * kd;
+    const float m = glm::max(bounceWeight.x, glm::max(bounceWeight.y, bounceWeight.z));
+    if (m < emitters::ROULETTE_WEIGHT) {
+        const float u = sampling::sample1D(ctx_.sampler, ctx_.pixelGrid, key.pixel, key.sample,
+                                           sampling::dimRoulette(static_cast<std::uint32_t>(depth)), ctx_.seed);
+        const float factor = emitters::rouletteFactor(m, u);
+        if (!(factor > 0.0f)) return radiance;
+        carried *= factor;
+    }
     ++counts_.bounce;
     bvh::Ray next;
     next.origin = offsetRayOrigin(sp.position, sideOf(ng, dir), sp.errorMagnitude);
     next.dir = dir;
     const float bouncePdf = diffuseSamplesLights() ? std::max(emitters::cosinePdf(n, dir), 1e-30f) : 0.0f;
-    return radiance + kd * trace(next, depth + 1, weight * kd, key, bouncePdf);
+    return radiance + carried * trace(next, depth + 1, weight * carried, key, bouncePdf);
 }
 
 glm::vec3 Integrator::reflection(const bvh::Ray& ray, const SurfacePoint& sp, const glm::vec3& n, const glm::vec3& ng,

@@ -178,6 +178,21 @@ VKRT_FN EmitterSample sampleEmitterTriangle(EmitterTriangle t, float previousCdf
     return s;
 }
 
+// Russian roulette (docs/RENDERING.md §5): a Diffuse bounce whose path weight's largest component
+// m is below ROULETTE_WEIGHT goes on with probability m / ROULETTE_WEIGHT, carrying its weight
+// divided by that probability (so its expected contribution is unchanged), and ends otherwise.
+// The factor its weight takes for the roulette sample u (the caller draws u only below the
+// threshold): 0 (ended) or 1 / probability, which lifts the weight's largest component to
+// ROULETTE_WEIGHT. The threshold is measured (tools/time_to_error.py, docs/BENCHMARKS.md): at 1/4
+// a course scene's paths reach it only after several bounces, where it halves the cost of deep
+// renders; at 1/2 or 1 it ends paths whose light still counts and the noise grows faster than
+// the time falls.
+VKRT_CONST float ROULETTE_WEIGHT = 0.25f;
+VKRT_FN float rouletteFactor(float m, float u) {
+    float p = m / ROULETTE_WEIGHT;
+    return u < p ? 1.0f / p : 0.0f;
+}
+
 // Veach's multiple-importance weight of a strategy with density `a` (times its sample count)
 // against one with density `b`: the balance heuristic a / (a + b), or the power heuristic with
 // exponent 2. Densities can reach float's range on a tiny, far emitter (1 / (2 pi (1 - cos))),

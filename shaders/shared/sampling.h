@@ -79,6 +79,10 @@ VKRT_FN uint dimTranslucency(uint depth) { return ((depth + 1u) << 16u) | 0xffff
 // there (shape emitters take light ordinals after the area lights: dimLight).
 VKRT_FN uint dimBounce(uint depth) { return ((depth + 1u) << 16u) | 0xfffeu; }
 VKRT_FN uint dimEnvironment(uint depth) { return ((depth + 1u) << 16u) | 0xfffdu; }
+// Russian roulette of the Diffuse bounce leaving a hit of this depth (its x only), and the choice
+// of the shape emitter each light sample there goes to (its x only; docs/RENDERING.md §2).
+VKRT_FN uint dimRoulette(uint depth) { return ((depth + 1u) << 16u) | 0xfffcu; }
+VKRT_FN uint dimEmitterChoice(uint depth) { return ((depth + 1u) << 16u) | 0xfffbu; }
 
 // A pseudo-random permutation of [0, n): a bijection on the enclosing power of two, built from
 // steps that are each invertible modulo 2^k (xor with a key, multiply by an odd constant,
