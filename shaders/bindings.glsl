@@ -181,8 +181,11 @@ EmitterRecord loadEmitter(uint i) {
         e.toObject[r] = uintBitsToFloat(imageLoad(emitterTexels, t + 5 + r));
     }
     e.info = imageLoad(emitterTexels, t + 8);
+    e.choice = uintBitsToFloat(imageLoad(emitterTexels, t + 9));
     return e;
 }
+// Only the cumulative choice share, for the binary search.
+float emitterChoiceShare(uint i) { return uintBitsToFloat(imageLoad(emitterTexels, int(i * EMITTER_TEXELS) + 9).y); }
 
 EmitterTriangle loadEmitterTriangle(uint i) {
     int t = int(i * EMITTER_TRIANGLE_TEXELS);

@@ -20,6 +20,21 @@ uint pickEmitterTriangle(EmitterRecord e, float u) {
     return min(lo, last);
 }
 
+// The emitter a light sample u goes to: the first whose cumulative choice share exceeds u
+// (host/lighting/emitter_table.cpp pickEmitter is the same search).
+uint pickEmitter(uint count, float u) {
+    uint lo = 0u;
+    uint hi = count;
+    while (lo < hi) {
+        if (!chargeLoop()) break;
+        uint mid = (lo + hi) >> 1u;
+        if (u < emitterChoiceShare(mid)) hi = mid;
+        else lo = mid + 1u;
+    }
+    if (lo < hi) markLoopCutOff();
+    return min(lo, count - 1u);
+}
+
 EmitterSample sampleEmitter(EmitterRecord e, vec3 x, vec2 u) {
     uint kind = emitterKind(e);
     if (kind == EMITTER_SPHERE) return sampleSphereEmitter(x, e.sphere.xyz, e.sphere.w, u);
@@ -34,7 +49,8 @@ EmitterSample sampleEmitter(EmitterRecord e, vec3 x, vec2 u) {
     return sampleEmitterTriangle(loadEmitterTriangle(i), previous, emitterAreaPdf(e), x, u);
 }
 
-// The solid-angle density at x of the emitter's light samples reaching its point q (normal nq).
+// The solid-angle density at x of the emitter's light samples reaching its point q (normal nq),
+// given that they go to this emitter (times emitterChoicePdf: of any light sample).
 float emitterPdf(EmitterRecord e, vec3 x, vec3 q, vec3 nq) {
     uint kind = emitterKind(e);
     if (kind == EMITTER_SPHERE) return sphereEmitterPdf(x, e.sphere.xyz, e.sphere.w, q, nq);

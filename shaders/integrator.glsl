@@ -169,7 +169,8 @@ vec3 emittedRadiance(PathRay ray, Surface s, Material m) {
     if (!(ray.bouncePdf > 0.0)) return L;
     uint estimator = estimatorKind();
     if (estimator == ESTIMATOR_NEE) return vec3(0.0);  // next-event estimation counted it already
-    float lightPdf = float(frameLightSamples()) * emitterPdf(loadEmitter(materialEmitter(m)), ray.origin, s.position, s.geomNormal);
+    EmitterRecord e = loadEmitter(materialEmitter(m));
+    float lightPdf = float(frameLightSamples()) * emitterChoicePdf(e) * emitterPdf(e, ray.origin, s.position, s.geomNormal);
     return L * misWeight(ray.bouncePdf, lightPdf, estimator == ESTIMATOR_MIS_POWER);
 }
 

@@ -47,8 +47,9 @@ vec3 lightFrom(Surface s, vec3 N, vec3 V, uint type, vec3 kd, vec3 ks, float pho
 }
 
 // Shape emitters as a continuum of the course's point lights (RENDERING.md §4): a light sample of
-// density p (per steradian) stands for intensity L / (pi p). A Diffuse surface samples them only
-// as the estimator says, weighted against its bounce.
+// density p (per steradian) stands for intensity L / (pi p). Each of the k light samples goes to
+// one emitter, chosen by its share of the emitters' power (p includes that share). A Diffuse
+// surface samples them only as the estimator says, weighted against its bounce.
 vec3 emitterLighting(Surface s, vec3 N, vec3 V, uint type, vec3 kd, vec3 ks, float phongExp, uint depth, SampleKey key) {
     bool diffuseSurface = HAS_DIFFUSE && type == SHADER_DIFFUSE;
     uint estimator = estimatorKind();
@@ -56,34 +57,32 @@ vec3 emitterLighting(Surface s, vec3 N, vec3 V, uint type, vec3 kd, vec3 ks, flo
     bool weighs = diffuseSurface && (estimator == ESTIMATOR_MIS_BALANCE || estimator == ESTIMATOR_MIS_POWER);
     uint count = frameEmitterCount();
     uint k = frameLightSamples();
+    if (count == 0u) return vec3(0.0);
     vec3 sum = vec3(0.0);
-    uint e = 0u;
-    for (; e < count; ++e) {
+    uint j = 0u;
+    for (; j < k; ++j) {
         if (!chargeLoop()) break;
+        uint e = count == 1u ? 0u
+                             : pickEmitter(count, sample1D(samplerKind(), frame.lightGrid, key.pixel, key.index * k + j,
+                                                           dimEmitterChoice(depth), key.seed));
         EmitterRecord r = loadEmitter(e);
-        vec3 acc = vec3(0.0);
-        uint j = 0u;
-        for (; j < k; ++j) {
-            if (!chargeLoop()) break;
-            vec2 u = sample2D(samplerKind(), frame.lightGrid, key.pixel, key.index * k + j,
-                              dimLight(depth, emitterLightOrdinal(r)), key.seed);
-            EmitterSample es = sampleEmitter(r, s.position, u);
-            if (!(es.pdf > 0.0) || isinf(es.pdf)) continue;
-            float w = 1.0;
-            if (weighs) {
-                // The bounce reaches this direction with its cosine density, or not at all below
-                // the geometric surface (emitBounce does not trace those).
-                vec3 l = normalize(es.point - s.position);
-                float bouncePdf = dot(l, s.geomNormal) > 0.0 ? cosinePdf(N, l) : 0.0;
-                w = misWeight(float(k) * es.pdf, bouncePdf, estimator == ESTIMATOR_MIS_POWER);
-            }
-            if (w > 0.0) acc += lightFrom(s, N, V, type, kd, ks, phongExp, es.point, r.radiance.rgb * (w * EMITTER_INV_PI / es.pdf));
+        vec2 u = sample2D(samplerKind(), frame.lightGrid, key.pixel, key.index * k + j,
+                          dimLight(depth, emitterLightOrdinal(r)), key.seed);
+        EmitterSample es = sampleEmitter(r, s.position, u);
+        float pdf = emitterChoicePdf(r) * es.pdf;
+        if (!(pdf > 0.0) || isinf(pdf)) continue;
+        float w = 1.0;
+        if (weighs) {
+            // The bounce reaches this direction with its cosine density, or not at all below
+            // the geometric surface (emitBounce does not trace those).
+            vec3 l = normalize(es.point - s.position);
+            float bouncePdf = dot(l, s.geomNormal) > 0.0 ? cosinePdf(N, l) : 0.0;
+            w = misWeight(float(k) * pdf, bouncePdf, estimator == ESTIMATOR_MIS_POWER);
         }
-        if (j < k) markLoopCutOff();
-        sum += acc / float(k);
+        if (w > 0.0) sum += lightFrom(s, N, V, type, kd, ks, phongExp, es.point, r.radiance.rgb * (w * EMITTER_INV_PI / pdf));
     }
-    if (e < count) markLoopCutOff();
-    return sum;
+    if (j < k) markLoopCutOff();
+    return sum / float(k);
 }
 
 vec3 directLighting(Surface s, vec3 N, vec3 V, uint type, vec3 kd, vec3 ks, float phongExp, uint depth, SampleKey key) {

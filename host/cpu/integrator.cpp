@@ -85,8 +85,9 @@ glm::vec3 Integrator::emitted(const bvh::Ray& ray, const SurfacePoint& sp, float
     const glm::vec3 radiance = glm::vec3(ctx_.lighting->emitters.records[static_cast<std::size_t>(sp.emitter)].radiance);
     if (!(bouncePdf > 0.0f)) return radiance;  // not a Diffuse bounce that sampled lights: seen in full
     if (!diffuseWeighs()) return glm::vec3(0.0f);  // next-event estimation counted it already
-    const float lightPdf = static_cast<float>(ctx_.lightSamples) * emitterPdf(ctx_.lighting->emitters.records[static_cast<std::size_t>(sp.emitter)], ray.origin,
-                                                                                     sp.position, sp.geometricNormal);
+    const gpu::EmitterRecord& r = ctx_.lighting->emitters.records[static_cast<std::size_t>(sp.emitter)];
+    const float lightPdf = static_cast<float>(ctx_.lightSamples) * gpu::emitterChoicePdf(r) *
+                           emitterPdf(r, ray.origin, sp.position, sp.geometricNormal);
     return radiance * emitters::misWeight(bouncePdf, lightPdf, ctx_.estimator == Estimator::MisPower);
 }
 
@@ -182,30 +183,37 @@ glm::vec3 Integrator::directLight(const Shader& shader, const SurfacePoint& sp, 
     // integral of L cos over the emitter's solid angle: what a Diffuse bounce that hits it sees.
     const bool isDiffuse = shader.diffuseBounce;
     if (ctx_.lighting->emitters.records.empty() || (isDiffuse && !diffuseSamplesLights())) return sum;
+    // Each of the k light samples goes to one emitter, chosen by its share of the emitters' power
+    // (RENDERING.md §4); the sample's density includes that share.
     const bool weighs = isDiffuse && diffuseWeighs();
     const float k = static_cast<float>(ctx_.lightSamples);
-    for (const gpu::EmitterRecord& r : ctx_.lighting->emitters.records) {
-        const glm::vec3 radiance(r.radiance);
-        const std::uint32_t dim = sampling::dimLight(static_cast<std::uint32_t>(depth), gpu::emitterLightOrdinal(r));
-        glm::vec3 emitterSum(0.0f);
-        for (std::uint32_t j = 0; j < ctx_.lightSamples; ++j) {
-            const glm::vec2 u = sampling::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel,
-                                                   key.sample * ctx_.lightSamples + j, dim, ctx_.seed);
-            const emitters::EmitterSample s = sampleEmitter(ctx_.lighting->emitters, r, sp.position, u);
-            if (!(s.pdf > 0.0f) || !std::isfinite(s.pdf)) continue;
-            float w = 1.0f;
-            if (weighs) {
-                // The bounce reaches this direction with its cosine density, or not at all below
-                // the geometric surface (diffuse() does not trace those).
-                const glm::vec3 l = glm::normalize(s.point - sp.position);
-                const float bouncePdf = glm::dot(l, ng) > 0.0f ? emitters::cosinePdf(n, l) : 0.0f;
-                w = emitters::misWeight(k * s.pdf, bouncePdf, ctx_.estimator == Estimator::MisPower);
-            }
-            if (w > 0.0f) emitterSum += contribution(s.point, radiance * (w * emitters::EMITTER_INV_PI / s.pdf));
+    const EmitterTable& table = ctx_.lighting->emitters;
+    glm::vec3 emitterSum(0.0f);
+    for (std::uint32_t j = 0; j < ctx_.lightSamples; ++j) {
+        const std::uint32_t index = key.sample * ctx_.lightSamples + j;
+        const std::uint32_t e =
+            table.records.size() == 1
+                ? 0u
+                : pickEmitter(table, sampling::sample1D(ctx_.sampler, ctx_.lightGrid, key.pixel, index,
+                                                        sampling::dimEmitterChoice(static_cast<std::uint32_t>(depth)), ctx_.seed));
+        const gpu::EmitterRecord& r = table.records[e];
+        const glm::vec2 u = sampling::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel, index,
+                                               sampling::dimLight(static_cast<std::uint32_t>(depth), gpu::emitterLightOrdinal(r)),
+                                               ctx_.seed);
+        const emitters::EmitterSample s = sampleEmitter(table, r, sp.position, u);
+        const float pdf = gpu::emitterChoicePdf(r) * s.pdf;
+        if (!(pdf > 0.0f) || !std::isfinite(pdf)) continue;
+        float w = 1.0f;
+        if (weighs) {
+            // The bounce reaches this direction with its cosine density, or not at all below
+            // the geometric surface (diffuse() does not trace those).
+            const glm::vec3 l = glm::normalize(s.point - sp.position);
+            const float bouncePdf = glm::dot(l, ng) > 0.0f ? emitters::cosinePdf(n, l) : 0.0f;
+            w = emitters::misWeight(k * pdf, bouncePdf, ctx_.estimator == Estimator::MisPower);
         }
-        sum += emitterSum / k;
+        if (w > 0.0f) emitterSum += contribution(s.point, glm::vec3(r.radiance) * (w * emitters::EMITTER_INV_PI / pdf));
     }
-    return sum;
+    return sum + emitterSum / k;
 }
 
 glm::vec3 Integrator::diffuse(const Shader& shader, const SurfacePoint& sp, const glm::vec3& n, const glm::vec3& ng,

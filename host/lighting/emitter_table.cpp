@@ -90,6 +90,36 @@ void addTriangles(EmitterTable& table, gpu::EmitterRecord& record, const std::ve
     }
 }
 
+// An emitter's world area, to estimate its power: a triangle set's is exact, a sphere's 4 pi r^2,
+// an ellipsoid's by Knud Thomsen's formula (within 1.1% of the true area) over the lengths of the
+// transform's columns, exact for an axis-aligned one and an estimate for a sheared one.
+double emitterArea(const gpu::EmitterRecord& r, const glm::mat4& toWorld) {
+    const double sphere = 4.0 * std::numbers::pi * double(r.sphere.w) * double(r.sphere.w);
+    switch (gpu::emitterKind(r)) {
+    case gpu::EMITTER_SPHERE: return sphere;
+    case gpu::EMITTER_ELLIPSOID: {
+        const glm::mat3 a(toWorld);
+        const double x = glm::length(a[0]), y = glm::length(a[1]), z = glm::length(a[2]), p = 1.6075;
+        return sphere * std::pow((std::pow(x * y, p) + std::pow(x * z, p) + std::pow(y * z, p)) / 3.0, 1.0 / p);
+    }
+    default: return gpu::emitterTriangleCount(r) == 0 ? 0.0 : 1.0 / double(r.radiance.w);
+    }
+}
+
+// Every record's choice share: its power over the total, or 1 / count when no emitter has any
+// (black emitters: every light sample then adds nothing, whichever it picks).
+void setChoiceShares(EmitterTable& table, const std::vector<double>& powers) {
+    double total = 0.0;
+    for (double p : powers) total += p;
+    const std::size_t n = table.records.size();
+    double running = 0.0;
+    for (std::size_t e = 0; e < n; ++e) {
+        const double share = total > 0.0 ? powers[e] / total : 1.0 / double(n);
+        running += share;
+        table.records[e].choice = glm::vec4(static_cast<float>(share), e + 1 == n ? 1.0f : static_cast<float>(running), 0.0f, 0.0f);
+    }
+}
+
 }  // namespace
 
 std::uint32_t areaLightCount(const Scene& scene) {
@@ -99,6 +129,7 @@ std::uint32_t areaLightCount(const Scene& scene) {
 
 EmitterTable buildEmitterTable(const Scene& scene) {
     EmitterTable table;
+    std::vector<double> powers;
     const std::uint32_t firstOrdinal = areaLightCount(scene);
     for (std::size_t e = 0; e < scene.emitters.size(); ++e) {
         const Emitter& emitter = scene.emitters[e];
@@ -124,8 +155,12 @@ EmitterTable buildEmitterTable(const Scene& scene) {
         } else {
             addTriangles(table, record, worldTriangles(scene, shape, emitter.objectToWorld));
         }
+        const glm::dvec3 radiance(emitter.radiance);
+        const double power = std::max(0.0, (radiance.r + radiance.g + radiance.b) / 3.0) * emitterArea(record, emitter.objectToWorld);
+        powers.push_back(std::isfinite(power) ? power : 0.0);
         table.records.push_back(record);
     }
+    setChoiceShares(table, powers);
     return table;
 }
 
@@ -149,6 +184,12 @@ float emitterPdf(const gpu::EmitterRecord& r, const glm::vec3& x, const glm::vec
     default: break;
     }
     return gpu::emitterTriangleCount(r) == 0 ? 0.0f : emitters::solidAnglePdf(gpu::emitterAreaPdf(r), x, q, nq);
+}
+
+std::uint32_t pickEmitter(const EmitterTable& table, float u) {
+    const auto first = table.records.begin(), last = table.records.end();
+    const auto it = std::upper_bound(first, last, u, [](float x, const gpu::EmitterRecord& r) { return x < r.choice.y; });
+    return static_cast<std::uint32_t>(std::min(it, last - 1) - first);
 }
 
 std::uint32_t pickEmitterTriangle(const EmitterTable& table, const gpu::EmitterRecord& record, float u) {

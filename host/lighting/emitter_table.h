@@ -21,8 +21,14 @@ struct EmitterTable {
 std::uint32_t areaLightCount(const Scene& scene);
 
 // A sphere stays a sphere (sampled by its cone) under a similarity; any other affine map makes it
-// an ellipsoid (sampled by area). Boxes are their twelve triangles, meshes their triangles.
+// an ellipsoid (sampled by area). Boxes are their twelve triangles, meshes their triangles. Each
+// record's choice share is its estimated power (mean radiance of r, g, b times area) over the
+// emitters' total: the emitter a light sample goes to (docs/RENDERING.md §4).
 EmitterTable buildEmitterTable(const Scene& scene);
+
+// The emitter a light sample u in [0, 1) goes to: the first whose cumulative choice share exceeds
+// u (the GLSL kernel's pickEmitter is the same search).
+std::uint32_t pickEmitter(const EmitterTable& table, float u);
 
 // The index of the triangle an EMITTER_TRIANGLES sample u.x picks: the first whose cumulative
 // share exceeds u (the GLSL kernel's search is the same: the same triangle on both devices).

@@ -260,13 +260,17 @@ struct EmitterRecord {
     vec4 toObject[3];  // ELLIPSOID: rows of its inverse
     uvec4 info;        // x: EMITTER_* kind, y: first EmitterTriangle, z: triangle count,
                        // w: light ordinal (its sampling dimension, after the area lights)
+    vec4 choice;       // x: the probability that a light sample goes to this emitter (its share
+                       // of the emitters' estimated power), y: the cumulative share up to and
+                       // including it (the last is exactly 1)
 };
-VKRT_CONST uint EMITTER_TEXELS = 9;
+VKRT_CONST uint EMITTER_TEXELS = 10;
 VKRT_FN uint emitterKind(EmitterRecord e) { return e.info.x; }
 VKRT_FN uint emitterFirstTriangle(EmitterRecord e) { return e.info.y; }
 VKRT_FN uint emitterTriangleCount(EmitterRecord e) { return e.info.z; }
 VKRT_FN uint emitterLightOrdinal(EmitterRecord e) { return e.info.w; }
 VKRT_FN float emitterAreaPdf(EmitterRecord e) { return e.radiance.w; }
+VKRT_FN float emitterChoicePdf(EmitterRecord e) { return e.choice.x; }
 struct EmitterTriangle {
     vec4 corner;  // xyz v0 (world), w: the emitter's area share of its triangles up to and including this one
     vec4 edge1;   // xyz v1 - v0
