@@ -35,6 +35,64 @@ uint pickEmitter(uint count, float u) {
     return min(lo, count - 1u);
 }
 
+// The total solid angle at x of an EMITTER_TRIANGLES emitter's triangles (emitter_sampling.h).
+float emitterSolidAngle(EmitterRecord e, vec3 x) {
+    uint first = emitterFirstTriangle(e);
+    uint n = emitterTriangleCount(e);
+    float total = 0.0;
+    uint i = 0u;
+    for (; i < n; ++i) {
+        if (!chargeLoop()) break;
+        total += triangleSolidAngle(loadEmitterTriangle(first + i), x);
+    }
+    if (i < n) markLoopCutOff();
+    return total;
+}
+
+// Whether x samples the emitter's triangles by solid angle, and then their total `omega`.
+bool samplesBySolidAngle(EmitterRecord e, vec3 x, out float omega) {
+    omega = 0.0;
+    if (emitterTriangleCount(e) > SOLID_ANGLE_MAX_TRIANGLES) return false;
+    omega = emitterSolidAngle(e, x);
+    return omega >= SOLID_ANGLE_MIN;
+}
+
+// A direction in the solid angle `omega` of the emitter's triangles: the triangle whose running
+// solid angle first exceeds u.x omega (host/lighting/emitter_table.cpp is the same walk).
+EmitterSample sampleEmitterBySolidAngle(EmitterRecord e, vec3 x, vec2 u, float omega) {
+    uint first = emitterFirstTriangle(e);
+    uint n = emitterTriangleCount(e);
+    float target = u.x * omega;
+    float running = 0.0;
+    uint chosen = n;  // the last triangle with any solid angle, should rounding leave target beyond the sum
+    float chosenStart = 0.0;
+    float chosenOmega = 0.0;
+    bool picked = false;
+    uint i = 0u;
+    for (; i < n; ++i) {
+        if (!chargeLoop()) break;
+        float w = triangleSolidAngle(loadEmitterTriangle(first + i), x);
+        if (w > 0.0) {
+            chosen = i;
+            chosenStart = running;
+            chosenOmega = w;
+            if (target < running + w) {
+                picked = true;
+                break;
+            }
+        }
+        running += w;
+    }
+    if (!picked && i < n) markLoopCutOff();
+    EmitterSample none;
+    none.point = x;
+    none.normal = vec3(0.0, 0.0, 1.0);
+    none.pdf = 0.0;
+    if (chosen == n || g_budgetExceeded) return none;
+    float ux = clamp((target - chosenStart) / chosenOmega, 0.0, 0.99999994);
+    return sampleSphericalTriangle(loadEmitterTriangle(first + chosen), x, vec2(ux, u.y), chosenOmega, 1.0 / omega);
+}
+
 EmitterSample sampleEmitter(EmitterRecord e, vec3 x, vec2 u) {
     uint kind = emitterKind(e);
     if (kind == EMITTER_SPHERE) return sampleSphereEmitter(x, e.sphere.xyz, e.sphere.w, u);
@@ -44,6 +102,8 @@ EmitterSample sampleEmitter(EmitterRecord e, vec3 x, vec2 u) {
     none.normal = vec3(0.0, 0.0, 1.0);
     none.pdf = 0.0;
     if (emitterTriangleCount(e) == 0u) return none;
+    float omega;
+    if (samplesBySolidAngle(e, x, omega)) return sampleEmitterBySolidAngle(e, x, u, omega);
     uint i = pickEmitterTriangle(e, u.x);
     float previous = i > emitterFirstTriangle(e) ? emitterTriangleShare(i - 1u) : 0.0;
     return sampleEmitterTriangle(loadEmitterTriangle(i), previous, emitterAreaPdf(e), x, u);
@@ -55,7 +115,10 @@ float emitterPdf(EmitterRecord e, vec3 x, vec3 q, vec3 nq) {
     uint kind = emitterKind(e);
     if (kind == EMITTER_SPHERE) return sphereEmitterPdf(x, e.sphere.xyz, e.sphere.w, q, nq);
     if (kind == EMITTER_ELLIPSOID) return ellipsoidEmitterPdf(e, x, q, nq);
-    return emitterTriangleCount(e) == 0u ? 0.0 : solidAnglePdf(emitterAreaPdf(e), x, q, nq);
+    if (emitterTriangleCount(e) == 0u) return 0.0;
+    float omega;
+    if (samplesBySolidAngle(e, x, omega)) return 1.0 / omega;
+    return solidAnglePdf(emitterAreaPdf(e), x, q, nq);
 }
 
 #endif

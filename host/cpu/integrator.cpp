@@ -87,7 +87,7 @@ glm::vec3 Integrator::emitted(const bvh::Ray& ray, const SurfacePoint& sp, float
     if (!diffuseWeighs()) return glm::vec3(0.0f);  // next-event estimation counted it already
     const gpu::EmitterRecord& r = ctx_.lighting->emitters.records[static_cast<std::size_t>(sp.emitter)];
     const float lightPdf = static_cast<float>(ctx_.lightSamples) * gpu::emitterChoicePdf(r) *
-                           emitterPdf(r, ray.origin, sp.position, sp.geometricNormal);
+                           emitterPdf(ctx_.lighting->emitters, r, ray.origin, sp.position, sp.geometricNormal);
     return radiance * emitters::misWeight(bouncePdf, lightPdf, ctx_.estimator == Estimator::MisPower);
 }
 

@@ -164,6 +164,40 @@ EmitterTable buildEmitterTable(const Scene& scene) {
     return table;
 }
 
+namespace {
+
+// The kernel's emitterSolidAngle and samplesBySolidAngle (shaders/emitters.glsl).
+bool samplesBySolidAngle(const EmitterTable& table, const gpu::EmitterRecord& r, const glm::vec3& x, float& omega) {
+    omega = 0.0f;
+    if (gpu::emitterTriangleCount(r) > emitters::SOLID_ANGLE_MAX_TRIANGLES) return false;
+    const std::uint32_t first = gpu::emitterFirstTriangle(r), n = gpu::emitterTriangleCount(r);
+    for (std::uint32_t i = 0; i < n; ++i) omega += emitters::triangleSolidAngle(table.triangles[first + i], x);
+    return omega >= emitters::SOLID_ANGLE_MIN;
+}
+
+// The kernel's sampleEmitterBySolidAngle: the triangle whose running solid angle first exceeds
+// u.x omega (or the last with any, should rounding leave u.x omega beyond the sum).
+emitters::EmitterSample sampleBySolidAngle(const EmitterTable& table, const gpu::EmitterRecord& r, const glm::vec3& x,
+                                           glm::vec2 u, float omega) {
+    const std::uint32_t first = gpu::emitterFirstTriangle(r), n = gpu::emitterTriangleCount(r);
+    const float target = u.x * omega;
+    float running = 0.0f, chosenStart = 0.0f, chosenOmega = 0.0f;
+    std::uint32_t chosen = n;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const float w = emitters::triangleSolidAngle(table.triangles[first + i], x);
+        if (w > 0.0f) {
+            chosen = i, chosenStart = running, chosenOmega = w;
+            if (target < running + w) break;
+        }
+        running += w;
+    }
+    if (chosen == n) return emitters::EmitterSample{x, glm::vec3(0.0f, 0.0f, 1.0f), 0.0f};
+    const float ux = std::clamp((target - chosenStart) / chosenOmega, 0.0f, 0.99999994f);
+    return emitters::sampleSphericalTriangle(table.triangles[first + chosen], x, glm::vec2(ux, u.y), chosenOmega, 1.0f / omega);
+}
+
+}  // namespace
+
 emitters::EmitterSample sampleEmitter(const EmitterTable& table, const gpu::EmitterRecord& r, const glm::vec3& x,
                                       glm::vec2 u) {
     switch (gpu::emitterKind(r)) {
@@ -172,18 +206,24 @@ emitters::EmitterSample sampleEmitter(const EmitterTable& table, const gpu::Emit
     default: break;
     }
     if (gpu::emitterTriangleCount(r) == 0) return emitters::EmitterSample{x, glm::vec3(0.0f, 0.0f, 1.0f), 0.0f};
+    float omega = 0.0f;
+    if (samplesBySolidAngle(table, r, x, omega)) return sampleBySolidAngle(table, r, x, u, omega);
     const std::uint32_t i = pickEmitterTriangle(table, r, u.x);
     const float previous = i > gpu::emitterFirstTriangle(r) ? gpu::emitterTriangleCdf(table.triangles[i - 1]) : 0.0f;
     return emitters::sampleEmitterTriangle(table.triangles[i], previous, gpu::emitterAreaPdf(r), x, u);
 }
 
-float emitterPdf(const gpu::EmitterRecord& r, const glm::vec3& x, const glm::vec3& q, const glm::vec3& nq) {
+float emitterPdf(const EmitterTable& table, const gpu::EmitterRecord& r, const glm::vec3& x, const glm::vec3& q,
+                 const glm::vec3& nq) {
     switch (gpu::emitterKind(r)) {
     case gpu::EMITTER_SPHERE: return emitters::sphereEmitterPdf(x, glm::vec3(r.sphere), r.sphere.w, q, nq);
     case gpu::EMITTER_ELLIPSOID: return emitters::ellipsoidEmitterPdf(r, x, q, nq);
     default: break;
     }
-    return gpu::emitterTriangleCount(r) == 0 ? 0.0f : emitters::solidAnglePdf(gpu::emitterAreaPdf(r), x, q, nq);
+    if (gpu::emitterTriangleCount(r) == 0) return 0.0f;
+    float omega = 0.0f;
+    if (samplesBySolidAngle(table, r, x, omega)) return 1.0f / omega;
+    return emitters::solidAnglePdf(gpu::emitterAreaPdf(r), x, q, nq);
 }
 
 std::uint32_t pickEmitter(const EmitterTable& table, float u) {

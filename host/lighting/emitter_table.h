@@ -39,6 +39,7 @@ std::uint32_t pickEmitterTriangle(const EmitterTable& table, const gpu::EmitterR
 emitters::EmitterSample sampleEmitter(const EmitterTable& table, const gpu::EmitterRecord& record, const glm::vec3& x,
                                       glm::vec2 u);
 // The solid-angle density at x with which sampleEmitter reaches the record's point q (normal nq).
-float emitterPdf(const gpu::EmitterRecord& record, const glm::vec3& x, const glm::vec3& q, const glm::vec3& nq);
+float emitterPdf(const EmitterTable& table, const gpu::EmitterRecord& record, const glm::vec3& x, const glm::vec3& q,
+                 const glm::vec3& nq);
 
 }  // namespace vkrt

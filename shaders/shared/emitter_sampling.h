@@ -16,6 +16,8 @@
 #include "sampling.h"
 namespace vkrt::emitters {
 using glm::abs;
+using glm::atan;
+using glm::clamp;
 using glm::cos;
 using glm::cross;
 using glm::dot;
@@ -141,16 +143,42 @@ VKRT_FN vec3 applyTransposed(vec4 r0, vec4 r1, vec4 r2, vec3 v) {
     return v.x * vec3(r0) + v.y * vec3(r1) + v.z * vec3(r2);
 }
 
-// EMITTER_ELLIPSOID: uniformly over the object sphere's area, mapped to the world. A patch dA of
-// the object sphere with unit normal n becomes |det M| |M^-T n| dA in the world (Nanson's
-// formula), so the world area density is 1 / (4 pi r^2 |det M|) (the record's constant) divided
-// by |M^-T n|.
+// EMITTER_ELLIPSOID (the object sphere (centre, radius) = e.sphere under the affine map M =
+// toWorld): by the cone of the object sphere seen from x's object-space image x' = M^-1 x, when x'
+// is outside it. Visibility is affine-invariant, so the cone's directions reach exactly the
+// ellipsoid's visible side; a linear map A = M^-1 takes a world direction w to A w / |A w| and
+// solid angle by |det A| / |A w|^3 (the Jacobian of Heitz et al. 2016's linearly transformed
+// distributions), so the world density is the cone's times |det A| (|q - x| / |q' - x'|)^3. It is
+// bounded (by the cone's density times cond(M)^3), where area sampling's grows as distance^2 near
+// the surface. From inside the ellipsoid or on it: uniformly over the object sphere's area, a
+// patch dA with unit object normal n becoming |det M| |M^-T n| dA (Nanson's formula), so the world
+// area density is 1 / (4 pi r^2 |det M|) (the record's constant) over |M^-T n|.
 VKRT_FN float ellipsoidAreaPdf(EmitterRecord e, vec3 objectNormal) {
     float stretch = length(applyTransposed(e.toObject[0], e.toObject[1], e.toObject[2], objectNormal));
     return stretch > 0.0f ? emitterAreaPdf(e) / stretch : 0.0f;
 }
+VKRT_FN float ellipsoidInverseDeterminant(EmitterRecord e) {
+    return abs(dot(vec3(e.toObject[0]), cross(vec3(e.toObject[1]), vec3(e.toObject[2]))));
+}
+// The world density of a cone sample of object density `conePdf` from x (object x') to q (object q').
+VKRT_FN float ellipsoidConePdf(EmitterRecord e, float conePdf, vec3 x, vec3 xo, vec3 q, vec3 qo) {
+    vec3 dw = q - x;
+    vec3 dobj = qo - xo;
+    float lo2 = dot(dobj, dobj);
+    if (!(lo2 > 0.0f)) return 0.0f;
+    float ratio = sqrt(dot(dw, dw) / lo2);
+    return conePdf * ellipsoidInverseDeterminant(e) * ratio * ratio * ratio;
+}
 VKRT_FN EmitterSample sampleEllipsoidEmitter(EmitterRecord e, vec3 x, vec2 u) {
+    vec3 xo = applyRows(e.toObject[0], e.toObject[1], e.toObject[2], x);
     EmitterSample s;
+    if (sphereConeApplies(xo, vec3(e.sphere), e.sphere.w)) {
+        EmitterSample so = sampleSphereEmitter(xo, vec3(e.sphere), e.sphere.w, u);
+        s.point = applyRows(e.toWorld[0], e.toWorld[1], e.toWorld[2], so.point);
+        s.normal = normalize(applyTransposed(e.toObject[0], e.toObject[1], e.toObject[2], so.normal));
+        s.pdf = ellipsoidConePdf(e, so.pdf, x, xo, s.point, so.point);
+        return s;
+    }
     vec3 n = uniformSphereDirection(u);
     s.point = applyRows(e.toWorld[0], e.toWorld[1], e.toWorld[2], vec3(e.sphere) + e.sphere.w * n);
     s.normal = normalize(applyTransposed(e.toObject[0], e.toObject[1], e.toObject[2], n));
@@ -159,7 +187,14 @@ VKRT_FN EmitterSample sampleEllipsoidEmitter(EmitterRecord e, vec3 x, vec2 u) {
 }
 // The density sampleEllipsoidEmitter gives the world point q (unit normal nq) it reaches from x.
 VKRT_FN float ellipsoidEmitterPdf(EmitterRecord e, vec3 x, vec3 q, vec3 nq) {
-    vec3 n = normalize(applyRows(e.toObject[0], e.toObject[1], e.toObject[2], q) - vec3(e.sphere));
+    vec3 xo = applyRows(e.toObject[0], e.toObject[1], e.toObject[2], x);
+    vec3 qo = applyRows(e.toObject[0], e.toObject[1], e.toObject[2], q);
+    if (sphereConeApplies(xo, vec3(e.sphere), e.sphere.w)) {
+        vec3 toC = vec3(e.sphere) - xo;
+        float conePdf = 1.0f / (2.0f * EMITTER_PI * coneOneMinusCos(dot(toC, toC), e.sphere.w));
+        return ellipsoidConePdf(e, conePdf, x, xo, q, qo);
+    }
+    vec3 n = normalize(qo - vec3(e.sphere));
     return solidAnglePdf(ellipsoidAreaPdf(e, n), x, q, nq);
 }
 
@@ -176,6 +211,88 @@ VKRT_FN EmitterSample sampleEmitterTriangle(EmitterTriangle t, float previousCdf
     s.normal = normalize(cross(vec3(t.edge1), vec3(t.edge2)));
     s.pdf = solidAnglePdf(areaPdf, x, s.point, s.normal);
     return s;
+}
+
+// EMITTER_TRIANGLES with at most SOLID_ANGLE_MAX_TRIANGLES triangles (a triangle, a quad, a
+// box): by solid angle. Each light sample picks a triangle in proportion to the solid angle it
+// subtends at x and a direction uniformly inside it (Arvo 1995), so the density is 1 / (the
+// triangles' total solid angle) wherever the sample lands: no 1 / distance^2 tail near the
+// emitter, where area sampling's samples are heavy-tailed (docs/RENDERING.md §4). Larger meshes
+// keep area sampling (the per-sample loop over their triangles would cost more than it saves).
+// Below SOLID_ANGLE_MIN steradians (an emitter ~70 times its size away) Arvo's construction loses
+// its digits in float (sin of the sampled arc from 1 - q^2) and area sampling is near-uniform in
+// solid angle anyway, so the emitter is sampled by area there; the rule depends on x alone, so
+// a bounce's hit is weighed with the density of the same rule.
+VKRT_CONST uint SOLID_ANGLE_MAX_TRIANGLES = 12u;
+VKRT_CONST float SOLID_ANGLE_MIN = 1e-4f;
+
+// The solid angle of triangle t at x (Van Oosterom & Strackee 1983: tan(omega / 2) =
+// |a . (b x c)| / (|a||b||c| + (a.b)|c| + (b.c)|a| + (c.a)|b|) for the corners a, b, c relative to
+// x). The triple product is written a . (e1 x e2), which keeps its digits for a far triangle where
+// the three directions nearly coincide.
+VKRT_FN float triangleSolidAngle(EmitterTriangle t, vec3 x) {
+    vec3 a = vec3(t.corner) - x;
+    vec3 b = a + vec3(t.edge1);
+    vec3 c = a + vec3(t.edge2);
+    float la = length(a);
+    float lb = length(b);
+    float lc = length(c);
+    float num = abs(dot(a, cross(vec3(t.edge1), vec3(t.edge2))));
+    float den = la * lb * lc + dot(a, b) * lc + dot(b, c) * la + dot(c, a) * lb;
+    return num > 0.0f ? 2.0f * atan(num, den) : 0.0f;
+}
+
+// A direction uniform inside triangle t's solid angle `omega` (> 0) at x, for u in [0, 1)^2, and
+// the point of t it reaches (Arvo 1995, "Stratified sampling of spherical triangles": u.x picks
+// the sub-triangle of area u.x omega sharing the corner A, u.y a point on the arc from B to its
+// third corner). Differences of nearly equal cosines are rewritten as products of sines:
+// cos(s - alpha) - cos(alpha) = -2 sin(s / 2) sin(s / 2 - alpha), 1 - cos(arc) = |p - q|^2 / 2.
+// `pdf` is the caller's density (1 / the emitter's total solid angle): uniform over every
+// triangle's share.
+VKRT_FN EmitterSample sampleSphericalTriangle(EmitterTriangle t, vec3 x, vec2 u, float omega, float pdf) {
+    vec3 e1 = vec3(t.edge1);
+    vec3 e2 = vec3(t.edge2);
+    vec3 toA = vec3(t.corner) - x;
+    vec3 A = normalize(toA);
+    vec3 B = normalize(toA + e1);
+    vec3 C = normalize(toA + e2);
+    // The corner angle alpha at A, between the arcs AB and AC.
+    vec3 nAB = cross(A, B);
+    vec3 nAC = cross(A, C);
+    float alpha = atan(abs(dot(cross(nAB, nAC), A)), dot(nAB, nAC));
+    float sinAlpha = sin(alpha);
+    float cosAlpha = cos(alpha);
+    vec3 AB = A - B;
+    float oneMinusCosC = 0.5f * dot(AB, AB);  // c: the arc from A to B
+    float s = u.x * omega;                    // the sub-triangle's area
+    float sinHalf = sin(0.5f * s);
+    float sinS = sin(s - alpha);
+    float cosS = cos(s - alpha);
+    float du = -2.0f * sinHalf * sin(0.5f * s - alpha);                          // cos(s - alpha) - cos(alpha)
+    float dv = 2.0f * sinHalf * cos(0.5f * s - alpha) - sinAlpha * oneMinusCosC; // sin(s - alpha) + sin(alpha) cos(c)
+    float den = (dv * sinS + du * cosS) * sinAlpha;
+    float q = den != 0.0f ? ((dv * cosS - du * sinS) * cosAlpha - dv) / den : 1.0f;
+    q = clamp(q, -1.0f, 1.0f);
+    // C': the sub-triangle's third corner, on the arc from A towards C at cos(arc) = q.
+    vec3 towardsC = C - dot(C, A) * A;
+    float lt = length(towardsC);
+    vec3 Cp = lt > 0.0f ? q * A + sqrt(max(0.0f, 1.0f - q * q)) * (towardsC / lt) : A;
+    vec3 CB = Cp - B;
+    float oneMinusZ = u.y * 0.5f * dot(CB, CB);
+    float z = 1.0f - oneMinusZ;
+    vec3 towardsCp = Cp - dot(Cp, B) * B;
+    float lp = length(towardsCp);
+    vec3 dir = lp > 0.0f ? z * B + sqrt(max(0.0f, oneMinusZ * (2.0f - oneMinusZ))) * (towardsCp / lp) : B;
+    vec3 n = cross(e1, e2);
+    float along = dot(n, dir);
+    EmitterSample r;
+    r.normal = normalize(n);
+    r.point = x;
+    r.pdf = 0.0f;
+    if (along == 0.0f) return r;  // grazing: the plane is not reached
+    r.point = x + (dot(n, toA) / along) * dir;
+    r.pdf = pdf;
+    return r;
 }
 
 // Russian roulette (docs/RENDERING.md §5): a Diffuse bounce whose path weight's largest component
