@@ -150,11 +150,12 @@ void emitBounce(inout PathQueue q, PathRay ray, Surface s, vec3 N, vec3 kd, Samp
     vec2 u = sample2D(samplerKind(), frame.pixelGrid, key.pixel, key.index, dimBounce(ray.depth), key.seed);
     vec3 dir = cosineDirection(N, u);
     if (dot(dir, s.geomNormal) <= 0.0) return;
-    // Russian roulette where the path's weight has fallen below ROULETTE_WEIGHT (RENDERING.md §5).
+    // Russian roulette where the path's weight has fallen below its depth's threshold (RENDERING.md §5).
     vec3 weight = ray.weight * kd;
     float m = max(max(weight.x, weight.y), weight.z);
-    if (m < ROULETTE_WEIGHT) {
-        float factor = rouletteFactor(m, sample1D(samplerKind(), frame.pixelGrid, key.pixel, key.index, dimRoulette(ray.depth), key.seed));
+    float threshold = rouletteThreshold(ray.depth);
+    if (m < threshold) {
+        float factor = rouletteFactor(m, threshold, sample1D(samplerKind(), frame.pixelGrid, key.pixel, key.index, dimRoulette(ray.depth), key.seed));
         if (!(factor > 0.0)) return;
         weight *= factor;
     }

@@ -229,14 +229,15 @@ glm::vec3 Integrator::diffuse(const Shader& shader, const SurfacePoint& sp, cons
                                            sampling::dimBounce(static_cast<std::uint32_t>(depth)), ctx_.seed);
     const glm::vec3 dir = emitters::cosineDirection(n, u);
     if (glm::dot(dir, ng) <= 0.0f) return radiance;  // no light from inside
-    // Russian roulette where the path's weight has fallen below ROULETTE_WEIGHT (RENDERING.md §5).
+    // Russian roulette where the path's weight has fallen below its depth's threshold (RENDERING.md §5).
     glm::vec3 carried = kd;
     const glm::vec3 bounceWeight = weight * kd;
     const float m = glm::max(bounceWeight.x, glm::max(bounceWeight.y, bounceWeight.z));
-    if (m < emitters::ROULETTE_WEIGHT) {
+    const float threshold = emitters::rouletteThreshold(static_cast<std::uint32_t>(depth));
+    if (m < threshold) {
         const float u = sampling::sample1D(ctx_.sampler, ctx_.pixelGrid, key.pixel, key.sample,
                                            sampling::dimRoulette(static_cast<std::uint32_t>(depth)), ctx_.seed);
-        const float factor = emitters::rouletteFactor(m, u);
+        const float factor = emitters::rouletteFactor(m, threshold, u);
         if (!(factor > 0.0f)) return radiance;
         carried *= factor;
     }

@@ -296,17 +296,23 @@ VKRT_FN EmitterSample sampleSphericalTriangle(EmitterTriangle t, vec3 x, vec2 u,
 }
 
 // Russian roulette (docs/RENDERING.md §5): a Diffuse bounce whose path weight's largest component
-// m is below ROULETTE_WEIGHT goes on with probability m / ROULETTE_WEIGHT, carrying its weight
+// m is below its depth's threshold goes on with probability m / threshold, carrying its weight
 // divided by that probability (so its expected contribution is unchanged), and ends otherwise.
 // The factor its weight takes for the roulette sample u (the caller draws u only below the
-// threshold): 0 (ended) or 1 / probability, which lifts the weight's largest component to
-// ROULETTE_WEIGHT. The threshold is measured (tools/time_to_error.py, docs/BENCHMARKS.md): at 1/4
-// a course scene's paths reach it only after several bounces, where it halves the cost of deep
-// renders; at 1/2 or 1 it ends paths whose light still counts and the noise grows faster than
-// the time falls.
+// threshold): 0 (ended) or 1 / probability, which lifts the weight's largest component to the
+// threshold. The thresholds are measured (tools/time_to_error.py, docs/BENCHMARKS.md): from the
+// bounce leaving a hit of depth ROULETTE_DEEP_DEPTH on, 1/4 halves the cost of the long tail of
+// deep renders (-k 16: 1.3-2.4x faster to a given error); before it, where the samplers stratify
+// the bounces that carry most of the image, a roulette sample (1D, not stratified with them) adds
+// more noise than it saves time, and only paths below 1/64 play (at 1/4 there, diffuseScene's
+// kd 0.5 took 2x the time to an error under sobol at the default depth 4, where no deep bounce
+// follows).
 VKRT_CONST float ROULETTE_WEIGHT = 0.25f;
-VKRT_FN float rouletteFactor(float m, float u) {
-    float p = m / ROULETTE_WEIGHT;
+VKRT_CONST float ROULETTE_SHALLOW_WEIGHT = 0.015625f;
+VKRT_CONST uint ROULETTE_DEEP_DEPTH = 4u;
+VKRT_FN float rouletteThreshold(uint depth) { return depth >= ROULETTE_DEEP_DEPTH ? ROULETTE_WEIGHT : ROULETTE_SHALLOW_WEIGHT; }
+VKRT_FN float rouletteFactor(float m, float threshold, float u) {
+    float p = m / threshold;
     return u < p ? 1.0f / p : 0.0f;
 }
 
