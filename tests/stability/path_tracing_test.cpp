@@ -173,15 +173,16 @@ TEST(PathTracing, AWhiteDiffuseSphereVanishesInAUniformSkyAndOneOfColourRShowsRT
 // Bug targeted: a dark path cut off instead of played for (the old 1/1024 cut-off: these pixels
 // were black), a survivor not divided by its probability (4x too bright), or roulette keyed to
 // a dimension that correlates with the bounce (a biased mean).
-// A sphere of colour 2^-12 in the furnace: its bounce's weight 2^-12 is below RENDERING.md §5's
-// threshold for a bounce from a camera hit (1/64), so it goes on with probability 2^-6 and then
+// A sphere of colour 2^-16 in the furnace: its bounce's weight 2^-16 is below RENDERING.md §5's
+// threshold for a bounce from a camera hit (1/64), so it goes on with probability 2^-10 and then
 // carries exactly 1/64: every sample is 0 or sky / 64, and the pixel's expectation is
 // colour * sky, as for a bright sphere. The wholly covered pixels are independent estimates of
 // it; their mean has the standard error of their spread / sqrt(count) (~1430 pixels x 64
-// samples: ~1430 survivors, a 2.6% error).
+// samples: ~90 survivors, a 10% error). (At a survival of 1/64 or more each pixel's 64
+// stratified roulette samples hold exactly 64 p survivors and the test would not see them.)
 TEST(PathTracing, ADarkPathPlaysRussianRouletteAndKeepsItsExpectation) {
     const glm::vec3 sky(0.5f, 1.0f, 2.0f);
-    const float colour = 1.0f / 4096.0f;
+    const float colour = 1.0f / 65536.0f;
     const int n = 64;
     const BothImages images = renderBoth(furnace(glm::vec3(colour), sky), pathOptions(n, 64, 1, Estimator::MisPower));
     const double z = zLimitFor(2, 1e-3);
@@ -200,10 +201,9 @@ TEST(PathTracing, ADarkPathPlaysRussianRouletteAndKeepsItsExpectation) {
                 sum += v, sum2 += v * v, ++count, lit += got.g > 0.0f;
             }
         const double mean = sum / count, se = std::sqrt(std::max(0.0, sum2 / count - mean * mean) / (count - 1));
-        // A pixel is lit with probability 1 - (1 - 2^-6)^64 = 0.63.
-        EXPECT_GT(lit, count / 2) << device;
+        EXPECT_GT(lit, 30) << device;
         EXPECT_NEAR(mean, colour, z * se) << device << ": " << lit << " of " << count << " pixels lit";
-        recordNote(std::string("roulette furnace, colour 2^-12 (") + device + ")",
+        recordNote(std::string("roulette furnace, colour 2^-16 (") + device + ")",
                    "pixel mean / sky " + std::to_string(mean / colour) + " x colour +- " + std::to_string(se / colour) + ", " +
                        std::to_string(lit) + " of " + std::to_string(count) + " pixels lit");
     }
