@@ -62,6 +62,7 @@ bool samplesBySolidAngle(EmitterRecord e, vec3 x, out float omega) {
 EmitterSample sampleEmitterBySolidAngle(EmitterRecord e, vec3 x, vec2 u, float omega) {
     uint first = emitterFirstTriangle(e);
     uint n = emitterTriangleCount(e);
+    if (n == 1u) return sampleSphericalTriangle(loadEmitterTriangle(first), x, u, omega, 1.0 / omega);
     float target = u.x * omega;
     float running = 0.0;
     uint chosen = n;  // the last triangle with any solid angle, should rounding leave target beyond the sum

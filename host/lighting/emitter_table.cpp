@@ -180,6 +180,7 @@ bool samplesBySolidAngle(const EmitterTable& table, const gpu::EmitterRecord& r,
 emitters::EmitterSample sampleBySolidAngle(const EmitterTable& table, const gpu::EmitterRecord& r, const glm::vec3& x,
                                            glm::vec2 u, float omega) {
     const std::uint32_t first = gpu::emitterFirstTriangle(r), n = gpu::emitterTriangleCount(r);
+    if (n == 1) return emitters::sampleSphericalTriangle(table.triangles[first], x, u, omega, 1.0f / omega);
     const float target = u.x * omega;
     float running = 0.0f, chosenStart = 0.0f, chosenOmega = 0.0f;
     std::uint32_t chosen = n;

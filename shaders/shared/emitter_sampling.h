@@ -256,20 +256,35 @@ VKRT_FN EmitterSample sampleSphericalTriangle(EmitterTriangle t, vec3 x, vec2 u,
     vec3 A = normalize(toA);
     vec3 B = normalize(toA + e1);
     vec3 C = normalize(toA + e2);
-    // The corner angle alpha at A, between the arcs AB and AC.
+    // The corner angle alpha at A, between the arcs AB and AC: nAB x nAC is along A, of length
+    // |nAB||nAC| sin(alpha), and nAB . nAC = |nAB||nAC| cos(alpha).
     vec3 nAB = cross(A, B);
     vec3 nAC = cross(A, C);
-    float alpha = atan(abs(dot(cross(nAB, nAC), A)), dot(nAB, nAC));
-    float sinAlpha = sin(alpha);
-    float cosAlpha = cos(alpha);
+    float ya = abs(dot(cross(nAB, nAC), A));
+    float xa = dot(nAB, nAC);
+    float ha = sqrt(ya * ya + xa * xa);
+    EmitterSample r;
+    r.normal = normalize(cross(e1, e2));
+    r.point = x;
+    r.pdf = 0.0f;
+    if (!(ha > 0.0f)) return r;  // a degenerate corner: no sub-triangle to pick
+    float sinAlpha = ya / ha;
+    float cosAlpha = xa / ha;
     vec3 AB = A - B;
     float oneMinusCosC = 0.5f * dot(AB, AB);  // c: the arc from A to B
-    float s = u.x * omega;                    // the sub-triangle's area
-    float sinHalf = sin(0.5f * s);
-    float sinS = sin(s - alpha);
-    float cosS = cos(s - alpha);
-    float du = -2.0f * sinHalf * sin(0.5f * s - alpha);                          // cos(s - alpha) - cos(alpha)
-    float dv = 2.0f * sinHalf * cos(0.5f * s - alpha) - sinAlpha * oneMinusCosC; // sin(s - alpha) + sin(alpha) cos(c)
+    // s = u.x omega, the sub-triangle's area: every sine and cosine below from those of s / 2 and
+    // alpha by the angle-sum identities (one sin and one cos; no inverse trigonometry for alpha).
+    float halfS = 0.5f * u.x * omega;
+    float sinHalf = sin(halfS);
+    float cosHalf = cos(halfS);
+    float sinS0 = 2.0f * sinHalf * cosHalf;           // sin(s)
+    float cosS0 = 1.0f - 2.0f * sinHalf * sinHalf;    // cos(s)
+    float sinS = sinS0 * cosAlpha - cosS0 * sinAlpha; // sin(s - alpha)
+    float cosS = cosS0 * cosAlpha + sinS0 * sinAlpha; // cos(s - alpha)
+    float sinHalfMinus = sinHalf * cosAlpha - cosHalf * sinAlpha;  // sin(s / 2 - alpha)
+    float cosHalfMinus = cosHalf * cosAlpha + sinHalf * sinAlpha;  // cos(s / 2 - alpha)
+    float du = -2.0f * sinHalf * sinHalfMinus;                         // cos(s - alpha) - cos(alpha)
+    float dv = 2.0f * sinHalf * cosHalfMinus - sinAlpha * oneMinusCosC; // sin(s - alpha) + sin(alpha) cos(c)
     float den = (dv * sinS + du * cosS) * sinAlpha;
     float q = den != 0.0f ? ((dv * cosS - du * sinS) * cosAlpha - dv) / den : 1.0f;
     q = clamp(q, -1.0f, 1.0f);
@@ -285,10 +300,6 @@ VKRT_FN EmitterSample sampleSphericalTriangle(EmitterTriangle t, vec3 x, vec2 u,
     vec3 dir = lp > 0.0f ? z * B + sqrt(max(0.0f, oneMinusZ * (2.0f - oneMinusZ))) * (towardsCp / lp) : B;
     vec3 n = cross(e1, e2);
     float along = dot(n, dir);
-    EmitterSample r;
-    r.normal = normalize(n);
-    r.point = x;
-    r.pdf = 0.0f;
     if (along == 0.0f) return r;  // grazing: the plane is not reached
     r.point = x + (dot(n, toA) / along) * dir;
     r.pdf = pdf;
