@@ -313,7 +313,7 @@ VKRT_FN EmitterSample sampleSphericalTriangle(EmitterTriangle t, vec3 x, vec2 u,
 // threshold): 0 (ended) or 1 / probability, which lifts the weight's largest component to the
 // threshold. The thresholds are measured (tools/time_to_error.py, docs/BENCHMARKS.md): from the
 // bounce leaving a hit of depth ROULETTE_DEEP_DEPTH on, 1/4 halves the cost of the long tail of
-// deep renders (-k 16: 1.3-2.4x faster to a given error); before it, where the samplers stratify
+// deep renders (-k 16: 1.3-2.9x faster to a given error); before it, where the samplers stratify
 // the bounces that carry most of the image, a roulette sample (1D, not stratified with them) adds
 // more noise than it saves time, and only paths below 1/64 play (at 1/4 there, diffuseScene's
 // kd 0.5 took 2x the time to an error under sobol at the default depth 4, where no deep bounce
