@@ -124,7 +124,9 @@ void addImageOptions(CLI::App& app, CommandLine& cl, std::string& bg) {
     app.add_option("-h,--height", cl.render.height, "Image height in pixels")->check(CLI::Range(1, 1 << 16));
     app.add_option("-k,--max-depth,--recursionDepth", cl.render.maxDepth, "Reflection/refraction recursion depth")
         ->check(CLI::Range(0, 64));
-    app.add_option("--light-samples", cl.render.lightSamples, "Light samples per pixel sample: per area light, and for all shape emitters together (each goes to one, chosen by power)")
+    app.add_option("--light-samples", cl.render.lightSamples,
+                   "Light samples per pixel sample: per area light, and for all shape emitters together (each "
+                   "goes to one, chosen by power)")
         ->check(CLI::Range(1, 4096));
     app.add_option("--gloss-samples", cl.render.glossSamples,
                    "Glossy reflection directions per pixel sample (at primary hits)")
