@@ -171,7 +171,7 @@ TEST(PathTracing, AWhiteDiffuseSphereVanishesInAUniformSkyAndOneOfColourRShowsRT
 
 // ---- Russian roulette ----
 // Bug targeted: a dark path cut off instead of played for (the old 1/1024 cut-off: these pixels
-// were black), a survivor not divided by its probability (4x too bright), or roulette keyed to
+// were black), a survivor not divided by its probability (2^10 times too dark), or roulette keyed to
 // a dimension that correlates with the bounce (a biased mean).
 // A sphere of colour 2^-16 in the furnace: its bounce's weight 2^-16 is below RENDERING.md §5's
 // threshold for a bounce from a camera hit (1/64), so it goes on with probability 2^-10 and then
