@@ -32,7 +32,8 @@ const uint NO_SAMPLE = 0xffffffffu;
 // Sample `index` of pixel (x, y), added to the pixel's running sum; a NaN or Inf sample is counted
 // and added as black, and the first sample with a failure is remembered for the host's message.
 void addSample(uint x, uint y, uint index, inout SampleKey key, inout vec4 sum, inout uint nonFinite, inout uint failedSample) {
-    key.index = index;
+    key.index = sampleIndex(samplerKind(), index);
+    key.seed = sampleSeed(samplerKind(), frameSeed(), index);
     vec2 subPixel = sample2D(samplerKind(), frame.pixelGrid, key.pixel, key.index, DIM_CAMERA, key.seed);
     vec2 lens = HAS_THIN_LENS ? sample2D(samplerKind(), frame.pixelGrid, key.pixel, key.index, DIM_LENS, key.seed) : vec2(0.5);
     if (HAS_MOTION) {

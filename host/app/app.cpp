@@ -13,6 +13,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include "adaptive_command.h"
 #include "check_command.h"
 #include "command_line.h"
 #include "image_parts.h"
@@ -140,12 +141,15 @@ int runRenderAsMpiRank(CommandLine& cl) {
 
 int runRender(CommandLine& cl) {
     if (launchedAsMpiRank()) {
+        if (cl.adaptiveSampling)
+            throw std::runtime_error("adaptive sampling decides each pixel's samples from the whole image: run it without mpirun");
         if (cl.watch || cl.render.checkpoints > 1)
             throw std::runtime_error(std::string(cl.watch ? "--watch" : "--progressive") +
                                      " writes the image from one process, not from MPI ranks (run it without mpirun)");
         return runRenderAsMpiRank(cl);
     }
     if (cl.watch) return runWatch(cl);
+    if (cl.adaptiveSampling) return runAdaptiveRender(cl);
     const auto start = std::chrono::steady_clock::now();
     checkOutputBeforeRendering(cl.outputPath, cl.scenePath);
     checkImageFitsInMemory(cl.render.width, cl.render.height);

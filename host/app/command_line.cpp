@@ -181,8 +181,8 @@ void addRenderOptions(CLI::App& app, CommandLine& cl, std::string& bg, std::stri
                    "Samples per pixel; n*n jittered sub-pixel samples when it is a square")
         ->check(CLI::Range(1, 1 << 20));
     app.add_option("--sampler", sampler,
-                   "Sample pattern: jittered (Cook 1984), regular, random or sobol (Owen-scrambled, Burley 2020)")
-        ->check(CLI::IsMember({"jittered", "regular", "random", "sobol"}));
+                   "Sample pattern: jittered (Cook 1984), regular, random, sobol (Owen-scrambled, Burley 2020) or sobol2 (two independent Sobol sequences interleaved; the default of --target-error and --time)")
+        ->check(CLI::IsMember({"jittered", "regular", "random", "sobol", "sobol2"}));
     app.add_option_function<std::string>(
            "--estimator",
            [&cl](const std::string& name) {
@@ -221,7 +221,7 @@ void addSweepOptions(CLI::App& app, CommandLine& cl, std::string& bg, SweepText&
     app.add_option("--seeds", sw.seeds, "Seeds per setting (--seed, --seed + 1, ...)")->check(CLI::Range(1, 1000));
     app.add_option("--samplers", text.samplers, "Samplers to sweep, comma-separated")
         ->delimiter(',')
-        ->check(CLI::IsMember({"jittered", "regular", "random", "sobol"}));
+        ->check(CLI::IsMember({"jittered", "regular", "random", "sobol", "sobol2"}));
     app.add_option("--estimators,--estimator", text.estimators,
                    "Diffuse surfaces' estimators to sweep, comma-separated: bounce, nee, mis-balance, mis (vkrt --estimator; "
                    "all have the same expectation, so they share the reference). Default: the renders' default only")
@@ -322,6 +322,42 @@ void applyCourseOptions(const CLI::App& app, CommandLine& cl, const CourseText& 
                              " ignored: it sizes the course's preview window, and vkrt has none (it writes the image only)");
 }
 
+// --target-error / --time: adaptive sampling, and the options it cannot go with.
+void applyAdaptiveOptions(const CLI::App& app, CommandLine& cl, std::optional<double> targetError, std::optional<double> seconds) {
+    cl.adaptiveSampling = targetError || seconds;
+    const char* adaptiveOnly[] = {"--min-rpp", "--max-rpp", "--error-map", "--sample-map"};
+    if (!cl.adaptiveSampling) {
+        for (const char* name : adaptiveOnly)
+            if (app.count(name) > 0)
+                throw CLI::ValidationError(name, "belongs to adaptive sampling: add --target-error E or --time SECONDS");
+        return;
+    }
+    const char* flag = targetError ? "--target-error" : "--time";
+    cl.adaptive.targetError = targetError;
+    cl.adaptive.seconds = seconds;
+    try {
+        adaptive::checkAdaptiveOptions(cl.adaptive);
+    } catch (const std::invalid_argument& e) {
+        throw CLI::ValidationError(flag, e.what());
+    }
+    if (app.count("--rpp") > 0)
+        throw CLI::ValidationError("--rpp", std::string("sets one count for every pixel; ") + flag +
+                                                " chooses each pixel's: bound it with --min-rpp and --max-rpp");
+    // The first N samples of a pixel must be those of an N-rpp render, and its two halves
+    // independent: jittered and regular strata depend on the rpp, plain sobol's halves are one net.
+    if (app.count("--sampler") == 0) cl.render.sampler = SamplerKind::Sobol2;
+    if (cl.render.sampler != SamplerKind::Sobol2 && cl.render.sampler != SamplerKind::Random)
+        throw CLI::ValidationError("--sampler", samplerName(cl.render.sampler) + " with " + flag +
+                                                    ": adaptive sampling needs sobol2 (its default) or random, whose first N "
+                                                    "samples of a pixel are an N-rpp render's and whose even and odd samples "
+                                                    "are independent (docs/SAMPLING.md §7)");
+    if (cl.parts > 0)
+        throw CLI::ValidationError("--part", std::string("adaptive sampling (") + flag +
+                                                 ") decides each pixel's samples from the whole image; render it in one process");
+    if (cl.watch) throw CLI::ValidationError("--watch", std::string("is not offered with ") + flag + " yet");
+    cl.render.samplesPerPixel = static_cast<int>(cl.adaptive.maxRpp);
+}
+
 }  // namespace
 
 std::string describeSettings(const CommandLine& cl) {
@@ -332,7 +368,14 @@ std::string describeSettings(const CommandLine& cl) {
     if (cl.command == Command::Compare) out << "heat map: " << (cl.heatMapPath.empty() ? "none" : cl.heatMapPath) << "\n";
     if (cl.command == Command::Sweep) out << "sweep out: " << cl.sweep.outDir << "\n";
     out << "image: " << r.width << "x" << r.height << " (aspect " << number(double(r.width) / r.height) << ")\n";
-    if (cl.command != Command::Sweep) out << "rays per pixel: " << r.samplesPerPixel << " (" << samplerName(r.sampler) << ")\n";
+    if (cl.adaptiveSampling) {
+        out << "adaptive sampling: " << samplerName(r.sampler) << ", " << cl.adaptive.minRpp << "-" << cl.adaptive.maxRpp << " rpp";
+        if (cl.adaptive.targetError) out << ", target error " << *cl.adaptive.targetError;
+        if (cl.adaptive.seconds) out << ", time " << *cl.adaptive.seconds << " s";
+        out << "\n";
+    } else if (cl.command != Command::Sweep) {
+        out << "rays per pixel: " << r.samplesPerPixel << " (" << samplerName(r.sampler) << ")\n";
+    }
     if (cl.command != Command::Sweep) out << "estimator: " << estimatorName(r.estimator) << "\n";
     if (cl.command == Command::Sweep) {
         out << "estimators:";
@@ -439,6 +482,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
     app.set_version_flag("--version", versionLine(), "Print vkrt's version (and the git commit it was built from) and exit");
     app.option_defaults()->always_capture_default();
     std::string bg, sampler = "jittered", device = "auto";
+    std::optional<double> targetError, timeBudget;  // --target-error, --time
     SweepText sweepText;
     if (sweep) {
         addSweepOptions(app, cl, bg, sweepText);
@@ -486,6 +530,23 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
                        "error, refreshed as renders finish (0: any free port, printed)")
             ->check(CLI::Range(0, 65535))
             ->default_str("none");
+        app.add_option("--target-error", targetError,
+                       "Adaptive sampling: render in rounds until the image's estimated relative RMSE (RMSE over pixels "
+                       "and channels / mean luminance, docs/SAMPLING.md §7) is at most E (>= 1e-4), samples going where "
+                       "the noise is; deterministic. Uses --sampler sobol2 unless random is given");
+        app.add_option("--time", timeBudget,
+                       "Adaptive sampling: render in rounds for about SECONDS of render time (with --target-error: "
+                       "whichever comes first); the only input that makes an image differ between runs");
+        app.add_option("--min-rpp", cl.adaptive.minRpp, "Adaptive sampling: every pixel's first round (even)")
+            ->default_val(cl.adaptive.minRpp);
+        app.add_option("--max-rpp", cl.adaptive.maxRpp, "Adaptive sampling: no pixel gets more samples (even)")
+            ->default_val(cl.adaptive.maxRpp);
+        app.add_option("--error-map", cl.errorMapPath,
+                       "Adaptive sampling: write each pixel's estimated standard error (per channel, linear) to this "
+                       "image (.exr keeps the floats)");
+        app.add_option("--sample-map", cl.sampleMapPath,
+                       "Adaptive sampling: write each pixel's sample count to this image: .exr the counts as floats, "
+                       ".png/.jpg/.ppm a heat map with its legend");
         addExposureOption(app, cl,
                           "Scale the image by 2^EV before it is written (EV in stops: 1 doubles it, -1 halves it), in "
                           "every format: PNG/JPEG/PPM then clamp to [0,1] and truncate to 8 bits (no gamma), EXR stays "
@@ -537,6 +598,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
         if (cl.referenceLook) applyReferenceLook(cl.render);  // before --bg, which overrides its colour
         if (!bg.empty()) cl.render.background = parseColour(bg);
         cl.render.sampler = parseSampler(sampler);  // CLI11 checked the name
+        if (!compare && !sweep && !check) applyAdaptiveOptions(app, cl, targetError, timeBudget);
         cl.device = device == "cpu" ? DeviceChoice::Cpu : device == "gpu" ? DeviceChoice::Gpu : DeviceChoice::Auto;
         if (sweep) {
             study::SweepOptions& sw = cl.sweep;

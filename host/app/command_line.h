@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "adaptive_render.h"
 #include "render_options.h"
 #include "sweep.h"
 
@@ -45,6 +46,11 @@ struct CommandLine {
     bool watch = false;           // --watch: render again whenever an input changes (watch_mode.h)
     int previewPort = -1;         // --preview PORT (with --watch): the page on 127.0.0.1; -1: none, 0: any port
     float exposure = 0.0f;        // --exposure EV: the written image is scaled by 2^EV (exposure.h)
+    // --target-error / --time: adaptive sampling (adaptive_render.h) instead of a uniform --rpp.
+    bool adaptiveSampling = false;
+    adaptive::AdaptiveOptions adaptive;
+    std::string errorMapPath;     // --error-map: each pixel's estimated standard error (adaptive)
+    std::string sampleMapPath;    // --sample-map: each pixel's sample count (adaptive)
 };
 
 // The settings a run will use, one per line (what -v prints).

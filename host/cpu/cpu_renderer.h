@@ -3,13 +3,20 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <vector>
 
 #include "image.h"
+#include "pixel_accumulation.h"
 #include "render_options.h"
 #include "scene.h"
 #include "scene_accel.h"
 
 namespace vkrt {
+
+namespace cpu {
+struct RenderContext;  // render_context.h
+}
 
 struct RenderStats {
     double seconds = 0.0;
@@ -32,5 +39,24 @@ SceneAccel prepareCpuScene(const Scene& scene);
 // variance of the pixel's rpp sample radiances (0 when rpp = 1); the image itself is unchanged.
 Image renderCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions& options,
                 RenderStats* stats = nullptr, Image* sampleVariance = nullptr);
+
+// Adaptive sampling's device on the CPU (adaptive_render.h AddSamples): adds samples
+// [acc.count[p], next[p]) of each pixel of options' rows, in sample order, as renderCpu computes
+// them (a pixel's N samples sum to renderCpu's pixel at N rpp, bit for bit). The options' sampler
+// must be one whose first N samples do not depend on the rpp (sobol2 or random).
+class CpuSampleRanges {
+public:
+    CpuSampleRanges(const Scene& scene, const SceneAccel& accel, const RenderOptions& options);
+    ~CpuSampleRanges();
+    void add(const std::vector<std::uint32_t>& next, adaptive::PixelAccumulation& acc);
+    const RenderStats& stats() const { return stats_; }  // all rounds so far
+
+private:
+    RenderOptions options_;
+    std::unique_ptr<cpu::RenderContext> ctx_;
+    glm::ivec2 rows_;
+    int threads_;
+    RenderStats stats_;
+};
 
 }  // namespace vkrt

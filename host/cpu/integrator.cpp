@@ -61,7 +61,7 @@ glm::vec3 Integrator::environmentLight(const SurfacePoint& sp, const glm::vec3& 
     glm::vec3 sum(0.0f);
     for (std::uint32_t j = 0; j < ctx_.lightSamples; ++j) {
         const glm::vec2 u = sampling::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel, key.sample * ctx_.lightSamples + j,
-                                               dim, ctx_.seed);
+                                               dim, key.seed);
         const EnvironmentSample s = sampleEnvironment(ctx_.lighting->environmentLights, u);
         const float cosine = glm::dot(n, s.direction);
         // No light from inside the surface, as for the bounce.
@@ -172,7 +172,7 @@ glm::vec3 Integrator::directLight(const Shader& shader, const SurfacePoint& sp, 
         const std::uint32_t dim = sampling::dimLight(static_cast<std::uint32_t>(depth), light.areaOrdinal);
         for (std::uint32_t j = 0; j < ctx_.lightSamples; ++j) {
             const glm::vec2 s = sampling::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel,
-                                              key.sample * ctx_.lightSamples + j, dim, ctx_.seed);
+                                              key.sample * ctx_.lightSamples + j, dim, key.seed);
             lightSum += contribution(lightPoint(light, s), light.intensity);
         }
         sum += lightSum / static_cast<float>(ctx_.lightSamples);
@@ -195,11 +195,11 @@ glm::vec3 Integrator::directLight(const Shader& shader, const SurfacePoint& sp, 
             table.records.size() == 1
                 ? 0u
                 : pickEmitter(table, sampling::sample1D(ctx_.sampler, ctx_.lightGrid, key.pixel, index,
-                                                        sampling::dimEmitterChoice(static_cast<std::uint32_t>(depth)), ctx_.seed));
+                                                        sampling::dimEmitterChoice(static_cast<std::uint32_t>(depth)), key.seed));
         const gpu::EmitterRecord& r = table.records[e];
         const glm::vec2 u = sampling::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel, index,
                                                sampling::dimLight(static_cast<std::uint32_t>(depth), gpu::emitterLightOrdinal(r)),
-                                               ctx_.seed);
+                                               key.seed);
         const emitters::EmitterSample s = sampleEmitter(table, r, sp.position, u);
         const float pdf = gpu::emitterChoicePdf(r) * s.pdf;
         if (!(pdf > 0.0f) || !std::isfinite(pdf)) continue;
@@ -226,7 +226,7 @@ glm::vec3 Integrator::diffuse(const Shader& shader, const SurfacePoint& sp, cons
 
     // One cosine-weighted bounce per pixel sample: f cos / pdf = (kd / pi) cos / (cos / pi) = kd.
     const glm::vec2 u = sampling::sample2D(ctx_.sampler, ctx_.pixelGrid, key.pixel, key.sample,
-                                           sampling::dimBounce(static_cast<std::uint32_t>(depth)), ctx_.seed);
+                                           sampling::dimBounce(static_cast<std::uint32_t>(depth)), key.seed);
     const glm::vec3 dir = emitters::cosineDirection(n, u);
     if (glm::dot(dir, ng) <= 0.0f) return radiance;  // no light from inside
     // Russian roulette where the path's weight has fallen below its depth's threshold (RENDERING.md §5).
@@ -236,7 +236,7 @@ glm::vec3 Integrator::diffuse(const Shader& shader, const SurfacePoint& sp, cons
     const float threshold = emitters::rouletteThreshold(static_cast<std::uint32_t>(depth));
     if (m < threshold) {
         const float u = sampling::sample1D(ctx_.sampler, ctx_.pixelGrid, key.pixel, key.sample,
-                                           sampling::dimRoulette(static_cast<std::uint32_t>(depth)), ctx_.seed);
+                                           sampling::dimRoulette(static_cast<std::uint32_t>(depth)), key.seed);
         const float factor = emitters::rouletteFactor(m, threshold, u);
         if (!(factor > 0.0f)) return radiance;
         carried *= factor;
@@ -275,7 +275,7 @@ glm::vec3 Integrator::reflection(const bvh::Ray& ray, const SurfacePoint& sp, co
     const std::uint32_t dim = sampling::dimGloss(static_cast<std::uint32_t>(depth));
     glm::vec3 sum(0.0f);
     for (std::uint32_t j = 0; j < g; ++j) {
-        const glm::vec2 s = sampling::sample2D(ctx_.sampler, grid, key.pixel, key.sample * g + j, dim, ctx_.seed);
+        const glm::vec2 s = sampling::sample2D(ctx_.sampler, grid, key.pixel, key.sample * g + j, dim, key.seed);
         sum += traceFrom(glossyDirection(r, roughness, s), weight * invG);
     }
     return sum / static_cast<float>(g);
@@ -311,7 +311,7 @@ glm::vec3 Integrator::dielectric(const bvh::Ray& ray, const bvh::Hit& hit, const
                 // perturbs the mirror one, one direction per pixel sample; a direction that leaves
                 // on the incoming side carries no light.
                 const glm::vec2 s = sampling::sample2D(ctx_.sampler, ctx_.pixelGrid, key.pixel, key.sample,
-                                                       sampling::dimTranslucency(static_cast<std::uint32_t>(depth)), ctx_.seed);
+                                                       sampling::dimTranslucency(static_cast<std::uint32_t>(depth)), key.seed);
                 next.dir = glossyDirection(next.dir, shader.roughness, s);
                 transmits = glm::dot(next.dir, n) < 0.0f;
             }

@@ -34,7 +34,8 @@ struct RayCounts {
 // The key of every random number drawn for one pixel sample (sampling.h).
 struct SampleKey {
     std::uint32_t pixel = 0;   // j * width + i
-    std::uint32_t sample = 0;  // s in [0, rpp)
+    std::uint32_t sample = 0;  // the sample's index in its sequence: s in [0, rpp), sobol2's s / 2 (sampling.h)
+    std::uint32_t seed = 0;    // the render's seed, or sobol2's seed of sample s (sampleSeed)
     float time = 0.0f;         // the sample's time in the shutter: every ray of its tree has it
 };
 

@@ -13,14 +13,15 @@ std::string samplerName(SamplerKind sampler) {
     case SamplerKind::Regular: return "regular";
     case SamplerKind::Random: return "random";
     case SamplerKind::Sobol: return "sobol";
+    case SamplerKind::Sobol2: return "sobol2";
     }
     return "unknown";
 }
 
 SamplerKind parseSampler(const std::string& name) {
-    for (SamplerKind s : {SamplerKind::Jittered, SamplerKind::Regular, SamplerKind::Random, SamplerKind::Sobol})
+    for (SamplerKind s : {SamplerKind::Jittered, SamplerKind::Regular, SamplerKind::Random, SamplerKind::Sobol, SamplerKind::Sobol2})
         if (samplerName(s) == name) return s;
-    throw std::invalid_argument("unknown sampler '" + name + "' (expected jittered, regular, random or sobol)");
+    throw std::invalid_argument("unknown sampler '" + name + "' (expected jittered, regular, random, sobol or sobol2)");
 }
 
 std::string estimatorName(Estimator estimator) {

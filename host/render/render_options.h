@@ -22,9 +22,11 @@ public:
 };
 
 // Values match gpu::SAMPLER_* in shaders/shared/device_host.h.
-enum class SamplerKind : std::uint32_t { Jittered = 0, Regular = 1, Random = 2, Sobol = 3 };
+// Sobol2: two independently scrambled Sobol sequences interleaved (sampling.h sampleSeed), whose
+// halves measure the error (adaptive sampling, docs/SAMPLING.md §7).
+enum class SamplerKind : std::uint32_t { Jittered = 0, Regular = 1, Random = 2, Sobol = 3, Sobol2 = 4 };
 
-std::string samplerName(SamplerKind sampler);  // "jittered", "regular", "random", "sobol"
+std::string samplerName(SamplerKind sampler);  // "jittered", "regular", "random", "sobol", "sobol2"
 // Throws std::invalid_argument naming the text when it is not a sampler's name.
 SamplerKind parseSampler(const std::string& name);
 

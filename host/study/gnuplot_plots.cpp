@@ -25,6 +25,7 @@ std::string colour(SamplerKind s) {
     case SamplerKind::Regular: return "#7f7f7f";
     case SamplerKind::Jittered: return "#1f77b4";
     case SamplerKind::Sobol: return "#2ca02c";
+    case SamplerKind::Sobol2: return "#8c564b";
     }
     return "#000000";
 }
@@ -42,7 +43,7 @@ std::string colour(Estimator e) {
     return "#000000";
 }
 
-// gnuplot point types: circle, square, triangle, diamond, each filled (GPU) or open (CPU).
+// gnuplot point types: circle, square, triangle, diamond, triangle down, each filled (GPU) or open (CPU).
 int pointType(SamplerKind s, bool gpu) {
     int filled = 7;
     switch (s) {
@@ -50,6 +51,7 @@ int pointType(SamplerKind s, bool gpu) {
     case SamplerKind::Regular: filled = 5; break;
     case SamplerKind::Jittered: filled = 9; break;
     case SamplerKind::Sobol: filled = 13; break;
+    case SamplerKind::Sobol2: filled = 11; break;  // triangle pointing down
     }
     return gpu ? filled : filled - 1;
 }

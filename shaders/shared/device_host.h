@@ -297,6 +297,9 @@ VKRT_CONST uint SAMPLER_JITTERED = 0u;
 VKRT_CONST uint SAMPLER_REGULAR = 1u;
 VKRT_CONST uint SAMPLER_RANDOM = 2u;
 VKRT_CONST uint SAMPLER_SOBOL = 3u;
+// Two independently scrambled Sobol sequences interleaved (sampling.h, replicaSeed): the two halves
+// of a pixel's samples are independent, so their difference measures the error (adaptive sampling).
+VKRT_CONST uint SAMPLER_SOBOL2 = 4u;
 // SPEC_SAMPLER's value for "any": the kernel reads the sampler from FrameParams::sampling.x (the
 // general kernel). A specialised kernel gets the render's sampler as a constant instead, so only
 // that sampler's code is compiled: sample2D's branches on the kind are not skipped on lavapipe,

@@ -31,6 +31,7 @@ using gpu::vec2;
 using gpu::SAMPLER_RANDOM;
 using gpu::SAMPLER_REGULAR;
 using gpu::SAMPLER_SOBOL;
+using gpu::SAMPLER_SOBOL2;
 #endif
 
 // How a loop reports that a driver's loop limiter ended it early: the GLSL kernels define it
@@ -197,6 +198,20 @@ VKRT_FN vec2 sobolSample2D(uint pixel, uint index, uint dim, uint seed) {
     return vec2(unitFloat(reverseBits32(x)), unitFloat(reverseBits32(y)));
 }
 
+// sobol2: pixel sample s is sample s / 2 of one of two Sobol renders whose scrambles are keyed by
+// two different seeds (s % 2 picks which). The even and the odd samples are then two independent
+// randomised-QMC estimates of the pixel, each a (0, m, 2)-net at a power of two, and half their
+// difference is an unbiased estimate of the error of their mean (docs/SAMPLING.md §7); the first
+// N samples of a pixel are the same in every render of N or more. Callers turn the pixel sample
+// into the index and seed every dimension of that sample is drawn with; other samplers keep both.
+VKRT_CONST uint SOBOL2_REPLICA_KEY = 0x9e3779b9u;
+VKRT_FN uint sampleSeed(uint samplerKind, uint seed, uint pixelSample) {
+    return samplerKind == SAMPLER_SOBOL2 ? seed ^ ((pixelSample & 1u) * SOBOL2_REPLICA_KEY) : seed;
+}
+VKRT_FN uint sampleIndex(uint samplerKind, uint pixelSample) {
+    return samplerKind == SAMPLER_SOBOL2 ? pixelSample >> 1u : pixelSample;
+}
+
 // The 2D sample number `index` of a pixel's `grid.x` samples in dimension `dim`.
 //  random:   independent uniform points.
 //  regular:  stratum centres.
@@ -204,9 +219,10 @@ VKRT_FN vec2 sobolSample2D(uint pixel, uint index, uint dim, uint seed) {
 // Camera samples take stratum = index; every other dimension shuffles the strata per pixel and
 // dimension, so light and gloss strata are paired with pixel strata at random (Cook's shuffle).
 //  sobol:    Owen-scrambled Sobol points, shuffled per pixel and dimension (sobolSample2D; the
-//            grid is not used: any count works, powers of two stratify best).
+//            grid is not used: any count works, powers of two stratify best). sobol2 the same, with
+//            index and seed from sampleIndex and sampleSeed.
 VKRT_FN vec2 sample2D(uint samplerKind, uvec4 grid, uint pixel, uint index, uint dim, uint seed) {
-    if (samplerKind == SAMPLER_SOBOL) return sobolSample2D(pixel, index, dim, seed);
+    if (samplerKind == SAMPLER_SOBOL || samplerKind == SAMPLER_SOBOL2) return sobolSample2D(pixel, index, dim, seed);
     uvec4 r = pcg4d(uvec4(pixel, index, dim, seed));
     vec2 jitter = vec2(unitFloat(r.x), unitFloat(r.y));
     if (samplerKind == SAMPLER_RANDOM) return jitter;
@@ -222,7 +238,7 @@ VKRT_FN vec2 sample2D(uint samplerKind, uvec4 grid, uint pixel, uint index, uint
 // Corput). 1 / count is the product of the grid's two host reciprocals: correctly rounded
 // multiplies, the same float on every device.
 VKRT_FN float sample1D(uint samplerKind, uvec4 grid, uint pixel, uint index, uint dim, uint seed) {
-    if (samplerKind == SAMPLER_SOBOL) return sobolSample2D(pixel, index, dim, seed).x;
+    if (samplerKind == SAMPLER_SOBOL || samplerKind == SAMPLER_SOBOL2) return sobolSample2D(pixel, index, dim, seed).x;
     uvec4 r = pcg4d(uvec4(pixel, index, dim, seed));
     float jitter = unitFloat(r.x);
     if (samplerKind == SAMPLER_RANDOM) return jitter;
