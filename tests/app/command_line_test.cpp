@@ -309,5 +309,33 @@ TEST(OutputPath, TwoScenesAreRefusedNamingBoth) {
     EXPECT_EQ(parseOk({"-i", "a.xml"}).scenePath, "a.xml");
 }
 
+// Issue 36: --target-error / --time turn adaptive sampling on with sobol2, and what cannot go with
+// it is refused naming the option.
+TEST(AdaptiveCommandLine, TargetErrorSelectsSobol2AndTheBounds) {
+    const CommandLine cl = parseOk({"s.xml", "--target-error", "0.01", "--max-rpp", "512"});
+    EXPECT_TRUE(cl.adaptiveSampling);
+    EXPECT_EQ(cl.render.sampler, SamplerKind::Sobol2);
+    EXPECT_EQ(cl.adaptive.targetError, 0.01);
+    EXPECT_EQ(cl.adaptive.maxRpp, 512u);
+    EXPECT_EQ(cl.render.samplesPerPixel, 512);
+    EXPECT_EQ(parseOk({"s.xml", "--time", "2", "--sampler", "random"}).render.sampler, SamplerKind::Random);
+    EXPECT_FALSE(parseOk({"s.xml"}).adaptiveSampling);
+}
+
+TEST(AdaptiveCommandLine, ConflictsAndBadValuesAreRefused) {
+    const auto refusedWith = [](const std::vector<std::string>& args, const std::string& text) {
+        const std::string message = parseRefused(args);
+        EXPECT_NE(message.find(text), std::string::npos) << message;
+    };
+    refusedWith({"s.xml", "--target-error", "0"}, "--target-error 0: must be a relative RMSE of at least 0.0001");
+    refusedWith({"s.xml", "--target-error", "0.00001"}, "float per-pixel sums cannot resolve less");
+    refusedWith({"s.xml", "--time", "-3"}, "--time -3: must be a number of seconds above 0");
+    refusedWith({"s.xml", "--target-error", "0.01", "--min-rpp", "7"}, "--min-rpp 7: must be an even number");
+    refusedWith({"s.xml", "--target-error", "0.01", "-r", "64"}, "bound it with --min-rpp and --max-rpp");
+    refusedWith({"s.xml", "--target-error", "0.01", "--sampler", "jittered"}, "adaptive sampling needs sobol2");
+    refusedWith({"s.xml", "--target-error", "0.01", "--part", "1/2", "-o", "p.exr"}, "render it in one process");
+    refusedWith({"s.xml", "--max-rpp", "64"}, "belongs to adaptive sampling");
+}
+
 }  // namespace
 }  // namespace vkrt

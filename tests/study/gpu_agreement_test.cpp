@@ -33,7 +33,8 @@ TEST(GpuAgreement, EverySamplerMatchesTheCpuReference) {
         const SceneAccel cpuAccel = prepareCpuScene(scene);
         const GpuSceneData gpuData = GpuRenderer::prepare(scene);
         Image previous;
-        for (SamplerKind sampler : {SamplerKind::Jittered, SamplerKind::Regular, SamplerKind::Random, SamplerKind::Sobol}) {
+        for (SamplerKind sampler :
+             {SamplerKind::Jittered, SamplerKind::Regular, SamplerKind::Random, SamplerKind::Sobol, SamplerKind::Sobol2}) {
             RenderOptions o;
             o.width = 64;
             o.height = 64;

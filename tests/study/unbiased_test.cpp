@@ -28,7 +28,7 @@ TEST(Unbiased, MeanOverSeedsConvergesToTheExactPixel) {
     const PixelScene penumbra = penumbraPixelScene();
     for (const PixelScene* scene : {&edge, &penumbra}) {
         const PixelStudy study(*scene);
-        for (SamplerKind sampler : {SamplerKind::Random, SamplerKind::Jittered, SamplerKind::Sobol})
+        for (SamplerKind sampler : {SamplerKind::Random, SamplerKind::Jittered, SamplerKind::Sobol, SamplerKind::Sobol2})
             for (int rpp : {1, 3, 4, 16}) {
                 glm::dvec3 sum(0.0), sumSq(0.0);
                 for (int s = 0; s < kSeeds; ++s) {
