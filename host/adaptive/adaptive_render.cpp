@@ -59,13 +59,14 @@ AdaptiveResult renderAdaptive(int width, int height, glm::ivec2 rows, const Adap
     std::vector<std::uint32_t> next = acc.count;
     for (int y = rows.x; y < rows.y; ++y)
         for (int x = 0; x < width; ++x) next[acc.index(x, y)] = options.minRpp;
+    // The time counts everything from here: the samples and each round's estimates and plan.
+    const auto start = std::chrono::steady_clock::now();
     double seconds = 0.0;
     std::uint64_t samples = 0;
     for (int round = 1;; ++round) {
-        const auto start = std::chrono::steady_clock::now();
         samples += addedSamples(acc, next);
         add(next, acc);
-        seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
         AdaptiveRound& r = result.last;
         r.number = round;

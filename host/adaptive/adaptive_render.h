@@ -40,7 +40,7 @@ struct AdaptiveRound {
     ImageErrorEstimate estimate;       // after the round
     std::uint64_t samples = 0;         // all the pixels' samples so far
     std::uint32_t minCount = 0, maxCount = 0;
-    double seconds = 0.0;              // rendering so far
+    double seconds = 0.0;              // rendering so far, the rounds' estimates and plans included
 };
 
 struct AdaptiveResult {

@@ -11,5 +11,6 @@ namespace vkrt::bench {
 // args: everything after the subcommand name. Returns the process exit code.
 int runBvhBench(const std::vector<std::string>& args);
 int runGpuBench(const std::vector<std::string>& args);
+int runAdaptiveBench(const std::vector<std::string>& args);
 
 }  // namespace vkrt::bench
