@@ -30,6 +30,9 @@ layout(constant_id = SPEC_HAS_EMITTERS) const bool HAS_EMITTERS = true;  // shap
 layout(constant_id = SPEC_HAS_ENVIRONMENT) const bool HAS_ENVIRONMENT = true;  // environment.glsl
 layout(constant_id = SPEC_ESTIMATOR) const uint ESTIMATOR_KIND = ESTIMATOR_FROM_FRAME;  // device_host.h
 layout(constant_id = SPEC_UNIFORM_INDEX_FROM_GROUPS) const bool UNIFORM_INDEX_FROM_GROUPS = true;  // VKRT_UNIFORM_INDEX
+// Adaptive sampling's rounds (host/adaptive): each invocation takes a pixel and its samples from the
+// round's work list, and the pixel's odd-numbered samples are also summed (render.comp).
+layout(constant_id = SPEC_ADAPTIVE) const bool ADAPTIVE = false;
 // 0: nothing in the scene pushes (feature_set.cpp), and the path stack's code is compiled out.
 const bool HAS_PATH_STACK = PATH_STACK_SIZE > 0u;
 const uint PATH_STACK_ENTRIES = HAS_PATH_STACK ? PATH_STACK_SIZE : 1u;  // an array needs one
@@ -105,9 +108,13 @@ PrimInfo loadPrimInfo(uint i) {
 }
 
 // A pixel's running sum (rgb; w unused), read and written by the one invocation that computes the
-// pixel's samples of a pass: no race.
-vec4 loadPixelSum(uint pixel) { return uintBitsToFloat(imageLoad(accumTexels, int(pixel))); }
-void storePixelSum(uint pixel, vec4 sum) { imageStore(accumTexels, int(pixel), floatBitsToUint(sum)); }
+// pixel's samples of a pass: no race. Adaptive, each pixel has two texels, the sum and the sum of
+// its odd-numbered samples, and the round's work list follows the pixels (device_host.h).
+const uint ACCUM_TEXELS_PER_PIXEL = ADAPTIVE ? 2u : 1u;
+vec4 loadPixelSum(uint pixel) { return uintBitsToFloat(imageLoad(accumTexels, int(pixel * ACCUM_TEXELS_PER_PIXEL))); }
+void storePixelSum(uint pixel, vec4 sum) { imageStore(accumTexels, int(pixel * ACCUM_TEXELS_PER_PIXEL), floatBitsToUint(sum)); }
+vec4 loadPixelOddSum(uint pixel) { return uintBitsToFloat(imageLoad(accumTexels, int(pixel * 2u + 1u))); }
+void storePixelOddSum(uint pixel, vec4 sum) { imageStore(accumTexels, int(pixel * 2u + 1u), floatBitsToUint(sum)); }
 
 VertexAttrib loadVertexAttrib(uint i) {
     int t = int(i * VERTEX_ATTRIB_TEXELS);

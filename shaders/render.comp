@@ -29,9 +29,11 @@ layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 
 const uint NO_SAMPLE = 0xffffffffu;
 
-// Sample `index` of pixel (x, y), added to the pixel's running sum; a NaN or Inf sample is counted
-// and added as black, and the first sample with a failure is remembered for the host's message.
-void addSample(uint x, uint y, uint index, inout SampleKey key, inout vec4 sum, inout uint nonFinite, inout uint failedSample) {
+// Sample `index` of pixel (x, y), added to the pixel's running sum (and, adaptive, an odd-numbered
+// one also to its odd sum); a NaN or Inf sample is counted and added as black, and the first
+// sample with a failure is remembered for the host's message.
+void addSample(uint x, uint y, uint index, inout SampleKey key, inout vec4 sum, inout vec4 oddSum, inout uint nonFinite,
+               inout uint failedSample) {
     key.index = sampleIndex(samplerKind(), index);
     key.seed = sampleSeed(samplerKind(), frameSeed(), index);
     vec2 subPixel = sample2D(samplerKind(), frame.pixelGrid, key.pixel, key.index, DIM_CAMERA, key.seed);
@@ -48,10 +50,11 @@ void addSample(uint x, uint y, uint index, inout SampleKey key, inout vec4 sum, 
         radiance = vec3(0.0);
     }
     sum.rgb += radiance;
+    if (ADAPTIVE && (index & 1u) != 0u) oddSum.rgb += radiance;
 }
 
-void main() {
-    PassParams pass = passes[VKRT_UNIFORM_INDEX];
+// The pixel of this invocation in the pass's tile (8x8 blocks of 4x2 lane patches); false outside it.
+bool tilePixel(PassParams pass, out uint x, out uint y) {
     uvec2 tileOrigin = passTileOrigin(pass);
     uvec2 tileSize = passTileSize(pass);
     // Workgroups are handed to lavapipe's threads in contiguous chunks; visiting blocks in a
@@ -66,9 +69,38 @@ void main() {
     uint py = (laneGroup >> 1u) * 2u + ((lane >> 2u) & 1u);
     uint localX = (block % blocksX) * 8u + px;
     uint localY = (block / blocksX) * 8u + py;
-    if (localX >= tileSize.x || localY >= tileSize.y) return;
-    uint x = tileOrigin.x + localX;
-    uint y = tileOrigin.y + localY;
+    if (localX >= tileSize.x || localY >= tileSize.y) return false;
+    x = tileOrigin.x + localX;
+    y = tileOrigin.y + localY;
+    return true;
+}
+
+// Adaptive sampling (host/adaptive): the invocation takes entry `index` of the round's work list
+// (after the pixels' sums in the accumulation buffer, device_host.h BINDING_ACCUM): the pixel and
+// its samples [first, end) of this round; pass p computes samples first + p k ... of it. False for
+// an invocation past the list or a pixel whose samples this round are done.
+bool adaptiveWork(PassParams pass, out uint x, out uint y, out uint first, out uint count) {
+    uint index = passTileOrigin(pass).x + gl_WorkGroupID.x * 64u + gl_LocalInvocationIndex;
+    if (index >= passTileOrigin(pass).x + passTileSize(pass).x) return false;
+    uvec4 work = imageLoad(accumTexels, int(ACCUM_TEXELS_PER_PIXEL * frameWidth() * frameHeight() + index));
+    first = work.y + passFirstSample(pass);
+    if (first >= work.z) return false;
+    count = min(passSamples(pass), work.z - first);
+    x = work.x % frameWidth();
+    y = work.x / frameWidth();
+    return true;
+}
+
+void main() {
+    PassParams pass = passes[VKRT_UNIFORM_INDEX];
+    uint x, y, firstSample, samples;
+    if (ADAPTIVE) {
+        if (!adaptiveWork(pass, x, y, firstSample, samples)) return;
+    } else {
+        firstSample = passFirstSample(pass);
+        samples = passSamples(pass);
+        if (!tilePixel(pass, x, y)) return;
+    }
 
     SampleKey key;
     key.pixel = y * frameWidth() + x;
@@ -77,18 +109,18 @@ void main() {
     // the lanes on lavapipe); the samples are added to it one by one in sample order, so the image
     // does not depend on the pass size (sample_batching.h).
     vec4 sum = loadPixelSum(key.pixel);
+    vec4 oddSum = ADAPTIVE ? loadPixelOddSum(key.pixel) : vec4(0.0);
     uint nonFinite = 0u;
     uint failedSample = NO_SAMPLE;
     if (SAMPLES_PER_DISPATCH == 1u) {
         // No loop: a loop around the path, even of one pass, made meshes slower
         // (docs/lab/2026-12-02-lavapipe-kernel.md).
-        addSample(x, y, passFirstSample(pass), key, sum, nonFinite, failedSample);
+        addSample(x, y, firstSample, key, sum, oddSum, nonFinite, failedSample);
     } else {
         uint j = 0u;
-        uint samples = passSamples(pass);
         for (; j < samples; ++j) {
             if (!chargeLoop()) break;
-            addSample(x, y, passFirstSample(pass) + j, key, sum, nonFinite, failedSample);
+            addSample(x, y, firstSample + j, key, sum, oddSum, nonFinite, failedSample);
         }
         if (j < samples) markLoopCutOff();
     }
@@ -99,8 +131,9 @@ void main() {
     if (failures != 0u) {
         atomicOr(status.flags.x, failures);
         if (atomicCompSwap(status.flags.y, 0u, key.pixel + 1u) == 0u)
-            status.flags.z = failedSample != NO_SAMPLE ? failedSample : passFirstSample(pass);
+            status.flags.z = failedSample != NO_SAMPLE ? failedSample : firstSample;
     }
     if (nonFinite != 0u) atomicAdd(status.flags.w, nonFinite);
     storePixelSum(key.pixel, sum);
+    if (ADAPTIVE) storePixelOddSum(key.pixel, oddSum);
 }

@@ -3,11 +3,12 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "cpu_renderer.h"
-#include "device_choice.h"
-#include "device_list.h"
+#include "gpu_renderer.h"
 #include "exposure.h"
 #include "float_range.h"
 #include "interrupt.h"
@@ -26,23 +27,6 @@ Image meanImage(const adaptive::PixelAccumulation& acc) {
     return image;
 }
 
-// The GPU renderer has no per-pixel sample ranges yet: adaptive sampling runs on the CPU
-// reference; asking for Vulkan is an error, and auto on a machine with a GPU says so.
-void checkDevice(const CommandLine& cl) {
-    const char* flag = cl.adaptive.targetError ? "--target-error" : "--time";
-    if (cl.device == DeviceChoice::Gpu || asksForVulkan(cl))
-        throw std::invalid_argument(std::string(flag) + " runs on the CPU reference only (the GPU renderer does not yet give "
-                                    "pixels their own sample counts): use --device cpu or auto");
-    if (cl.device == DeviceChoice::Auto && !cl.render.quiet) {
-        try {
-            if (!chooseAutoDevice(listDevices()).cpuReference)
-                std::cerr << "note: " << flag << " renders on the CPU reference (the GPU renderer does not yet give pixels "
-                          << "their own sample counts)\n";
-        } catch (const VulkanUnavailable&) {
-        }
-    }
-}
-
 std::string errorText(const adaptive::ImageErrorEstimate& e) {
     char text[64];
     std::snprintf(text, sizeof text, "%.4g", e.relative());
@@ -53,22 +37,38 @@ std::string errorText(const adaptive::ImageErrorEstimate& e) {
 
 int runAdaptiveRender(CommandLine& cl) {
     const auto start = std::chrono::steady_clock::now();
-    checkDevice(cl);
     checkOutputBeforeRendering(cl.outputPath, cl.scenePath);
     for (const std::string& map : {cl.errorMapPath, cl.sampleMapPath})
         if (!map.empty()) checkOutputBeforeRendering(map, cl.scenePath);
     checkImageFitsInMemory(cl.render.width, cl.render.height);
     const Scene scene = loadWithWarnings(cl);
-    const SceneAccel accel = [&] {
+    // The device as for a uniform render (render_steps.h openGpu): --device auto takes the CPU
+    // reference where Vulkan runs on the CPU.
+    std::unique_ptr<GpuRenderer> gpu = openGpu(cl);
+    std::optional<GpuSceneData> gpuData;
+    std::optional<SceneAccel> accel;
+    std::optional<CpuSampleRanges> cpu;
+    const auto onCpu = [&] {
+        gpu.reset();
         const ExitAtOnceOnInterrupt scope;
-        return prepareCpuScene(scene);
-    }();
-    CpuSampleRanges cpu(scene, accel, cl.render);
+        accel.emplace(prepareCpuScene(scene));
+        cpu.emplace(scene, *accel, cl.render);
+    };
+    if (gpu) {
+        const ExitAtOnceOnInterrupt scope;
+        gpuData.emplace(GpuRenderer::prepare(scene));
+    } else {
+        onCpu();
+    }
+    std::uint64_t gpuNonFinite = 0;
+    GpuRenderStats gpuStats;
+    const adaptive::AddSamples add = [&](const std::vector<std::uint32_t>& next, adaptive::PixelAccumulation& acc) {
+        if (!gpu) return cpu->add(next, acc);
+        gpu->addSampleRanges(*gpuData, cl.render, next, acc, &gpuStats);
+        gpuNonFinite += gpuStats.nonFiniteSamples;
+    };
     const bool quiet = cl.render.quiet;
-    const adaptive::AdaptiveResult result = adaptive::renderAdaptive(
-        cl.render.width, cl.render.height, rowsOf(cl.render), cl.adaptive,
-        [&](const std::vector<std::uint32_t>& next, adaptive::PixelAccumulation& acc) { cpu.add(next, acc); },
-        [&](const adaptive::AdaptiveRound& r, const adaptive::PixelAccumulation& acc) {
+    const adaptive::RoundDone onRound = [&](const adaptive::AdaptiveRound& r, const adaptive::PixelAccumulation& acc) {
             if (cl.render.checkpoints > 1) {
                 Image soFar = meanImage(acc);
                 clampOverflowedPixels(soFar);
@@ -82,7 +82,19 @@ int runAdaptiveRender(CommandLine& cl) {
                          errorText(r.estimate).c_str(), target,
                          r.minCount, r.maxCount, r.samples / pixels, r.seconds, cl.render.checkpoints > 1 ? " -> " : "",
                          cl.render.checkpoints > 1 ? cl.outputPath.c_str() : "");
-        });
+    };
+    const adaptive::AdaptiveResult result = [&] {
+        try {
+            return adaptive::renderAdaptive(cl.render.width, cl.render.height, rowsOf(cl.render), cl.adaptive, add, onRound);
+        } catch (const GpuKernelError& e) {
+            // The kernel refused this scene (lavapipe's loop limiter): under --device auto the CPU
+            // reference computes the same image from the start.
+            if (!gpu || cl.device != DeviceChoice::Auto) throw;
+            std::cerr << "note: " << e.what() << "\nnote: rendering on the CPU reference instead\n";
+            onCpu();
+            return adaptive::renderAdaptive(cl.render.width, cl.render.height, rowsOf(cl.render), cl.adaptive, add, onRound);
+        }
+    }();
 
     Image image = meanImage(result.acc);
     const std::size_t overflowed = clampOverflowedPixels(image);
@@ -102,17 +114,22 @@ int runAdaptiveRender(CommandLine& cl) {
         }
     }
     if (!quiet) {
-        const RenderStats& stats = cpu.stats();
-        if (stats.nonFiniteSamples > 0)
-            std::cerr << "warning: " << stats.nonFiniteSamples << " samples were NaN/Inf and were replaced by black\n";
+        const std::uint64_t nonFinite = gpu ? gpuNonFinite : cpu->stats().nonFiniteSamples;
+        if (nonFinite > 0) std::cerr << "warning: " << nonFinite << " samples were NaN/Inf and were replaced by black\n";
+        if (gpu)
+            if (auto log = gpu->validationLog(); log && log->count() > 0)
+                std::cerr << "warning: " << log->count() << " Vulkan validation message(s):\n" << log->joined();
+        const std::string device = gpu ? gpu->deviceName() + " [kernel: " + gpuStats.features + "; samples/dispatch=" +
+                                             std::to_string(gpuStats.samplesPerDispatch) + "]"
+                                       : "cpu (" + std::to_string(cpu->stats().threads) + " threads)";
         if (overflowed > 0)
             std::cerr << "warning: " << overflowed << " pixel(s) summed their samples past float's range: clamped to 3.4e38\n";
         const adaptive::AdaptiveRound& r = result.last;
         const double pixels = static_cast<double>(cl.render.width) * (rowsOf(cl.render).y - rowsOf(cl.render).x);
         std::fprintf(stderr,
-                     "%s: %dx%d, adaptive %s on cpu (%d threads): estimated error %s (%s) after %d rounds, %u-%u rpp "
+                     "%s: %dx%d, adaptive %s on %s: estimated error %s (%s) after %d rounds, %u-%u rpp "
                      "(mean %.1f): render %.3fs, total %.3fs -> %s\n",
-                     cl.scenePath.c_str(), cl.render.width, cl.render.height, samplerName(cl.render.sampler).c_str(), stats.threads,
+                     cl.scenePath.c_str(), cl.render.width, cl.render.height, samplerName(cl.render.sampler).c_str(), device.c_str(),
                      errorText(r.estimate).c_str(), adaptive::stopReasonText(result.stop).c_str(), r.number, r.minCount, r.maxCount,
                      r.samples / pixels, r.seconds, secondsSince(start), cl.outputPath.c_str());
     }

@@ -1,5 +1,5 @@
 // `vkrt scene.xml --target-error E` / `--time SECONDS`: adaptive sampling (adaptive_render.h) on the
-// CPU reference, with a line per round, the error and sample-count maps, and the summary.
+// device --device picks, with a line per round, the error and sample-count maps, and the summary.
 #pragma once
 
 #include "command_line.h"

@@ -79,6 +79,7 @@ std::array<std::uint32_t, gpu::SPEC_COUNT> FeatureSet::specializationValues(std:
     v[gpu::SPEC_HAS_EMITTERS] = emitters;
     v[gpu::SPEC_HAS_ENVIRONMENT] = environment;
     v[gpu::SPEC_ESTIMATOR] = estimator;
+    v[gpu::SPEC_ADAPTIVE] = adaptive;
     return v;
 }
 
@@ -106,6 +107,7 @@ std::string FeatureSet::describe() const {
     add(diffuse, "diffuse");
     add(emitters, "emitters");
     add(environment, "environment");
+    add(adaptive, "adaptive");
     add(diffuse && estimator != gpu::ESTIMATOR_FROM_FRAME,
         ("estimator=" + estimatorName(static_cast<Estimator>(estimator))).c_str());
     add(!packedNodes, "exact-nodes");

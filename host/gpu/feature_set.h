@@ -40,6 +40,9 @@ struct FeatureSet {
     bool environment = true;           // the scene has an environment map
     std::uint32_t estimator = gpu::ESTIMATOR_FROM_FRAME;  // the render's Estimator when the scene has
                                                           // Diffuse surfaces, else ESTIMATOR_BOUNCE
+    // Not a feature of the scene but the render's mode, off in every kernel but adaptive sampling's
+    // rounds (GpuRenderer::addSampleRanges): a work list of pixels and odd sums (render.comp).
+    bool adaptive = false;
 
     auto operator<=>(const FeatureSet&) const = default;
 

@@ -70,6 +70,17 @@ struct GpuRenderer::Impl {
     std::optional<KernelCache> kernels;  // replaced by reloadKernel()
     std::optional<SceneUpload> upload;   // the last prepared scene rendered (GpuSceneData::uploadKey)
     std::uint64_t uploadKey = 0;
+
+    // The scene's buffers: kept from the last render when it was the same prepared scene.
+    SceneUpload& uploadScene(const GpuSceneData& data, const gpu::FrameParams& frame, GpuRenderStats& stats) {
+        if (!upload || uploadKey != data.uploadKey) {
+            upload.reset();  // the last scene's buffers go before the next one's are made
+            upload.emplace(context, transfers, layout, data, frame);
+            uploadKey = data.uploadKey;
+            stats.sceneUploaded = true;
+        }
+        return *upload;
+    }
 };
 
 GpuRenderer::GpuRenderer(const GpuRendererOptions& options, const GpuTestHooks& hooks)
@@ -106,15 +117,9 @@ Image GpuRenderer::render(const GpuSceneData& data, const RenderOptions& options
     // The prepared scene's tables go to the device once; later renders of it (a sweep, watch mode's
     // option changes, --stat) upload only their frame and zero the sums.
     auto start = Clock::now();
-    if (impl_->upload && impl_->uploadKey == data.uploadKey) {
-        impl_->upload->beginRender(impl_->context, impl_->transfers, in.frame);
-    } else {
-        impl_->upload.reset();  // the last scene's buffers go before the next one's are made
-        impl_->upload.emplace(impl_->context, impl_->transfers, impl_->layout, data, in.frame);
-        impl_->uploadKey = data.uploadKey;
-        stats.sceneUploaded = true;
-    }
-    const SceneUpload& gpuScene = *impl_->upload;
+    const bool kept = impl_->upload && impl_->uploadKey == data.uploadKey;
+    SceneUpload& gpuScene = impl_->uploadScene(data, in.frame, stats);
+    if (kept) gpuScene.beginRender(impl_->context, impl_->transfers, in.frame);
     stats.uploadSeconds = secondsSince(start);
     stats.sceneBytes = gpuScene.bytes();
 
@@ -175,6 +180,90 @@ Image GpuRenderer::render(const GpuSceneData& data, const RenderOptions& options
     stats.readbackSeconds = secondsSince(start);
     if (statsOut) *statsOut = stats;
     return image;
+}
+
+void GpuRenderer::addSampleRanges(const GpuSceneData& data, const RenderOptions& options, const std::vector<std::uint32_t>& next,
+                                  adaptive::PixelAccumulation& acc, GpuRenderStats* statsOut) {
+    GpuRenderStats stats;
+    stats.device = impl_->context.info().name;
+    const std::uint64_t lockstep = impl_->context.info().loopLimiter ? kLockstepFactor : 1;
+    KernelInputs in = makeKernelInputs(data, options, KernelVariant::Specialised, 0, lockstep);
+    in.features.adaptive = true;
+    const std::uint32_t k = in.batching.perDispatch;
+    stats.features = in.features.describe();
+    stats.samplesPerDispatch = k;
+    const vk::raii::Pipeline& pipeline = impl_->kernels->pipeline(in.features, k, &stats.pipelineSeconds);
+
+    // The accumulation buffer of the ADAPTIVE kernel: per pixel its sum and its odd samples' sum
+    // (float bits), then the work list: the pixels with samples to add, most samples first (pass
+    // j then dispatches a prefix of it), in the image's 8x8 blocks within equal counts so that
+    // neighbouring lanes trace neighbouring pixels.
+    const std::size_t pixels = acc.pixels();
+    std::vector<glm::uvec4> contents(2 * pixels);
+    for (std::size_t p = 0; p < pixels; ++p) {
+        contents[2 * p] = glm::uvec4(glm::floatBitsToUint(acc.sum[p]), 0u);
+        contents[2 * p + 1] = glm::uvec4(glm::floatBitsToUint(acc.oddSum[p]), 0u);
+    }
+    std::vector<glm::uvec4> work;
+    for (int by = acc.rows.x; by < acc.rows.y; by += 8)
+        for (int bx = 0; bx < acc.width; bx += 8)
+            for (int y = by; y < std::min(by + 8, acc.rows.y); ++y)
+                for (int x = bx; x < std::min(bx + 8, acc.width); ++x) {
+                    const std::size_t p = acc.index(x, y);
+                    if (next[p] > acc.count[p]) work.emplace_back(static_cast<std::uint32_t>(p), acc.count[p], next[p], 0u);
+                }
+    std::stable_sort(work.begin(), work.end(), [](const glm::uvec4& a, const glm::uvec4& b) { return a.z - a.y > b.z - b.y; });
+    contents.insert(contents.end(), work.begin(), work.end());
+
+    auto start = Clock::now();
+    SceneUpload& gpuScene = impl_->uploadScene(data, in.frame, stats);
+    gpuScene.beginAdaptiveRound(impl_->context, impl_->transfers, in.frame, contents);
+    stats.uploadSeconds = secondsSince(start);
+    stats.warmUpSeconds = impl_->runner.run([&](const vk::raii::CommandBuffer& commands) {
+        recordWarmUp(commands, *pipeline, impl_->layout.pipelineLayout(), gpuScene.descriptorSet());
+    });
+
+    // Entries per dispatch: about a 256x256 tile's pixels, so that a submission stays short.
+    constexpr std::uint32_t kEntriesPerDispatch = 1u << 16;
+    const std::uint32_t most = work.empty() ? 0u : work.front().z - work.front().y;
+    const std::uint32_t passes = (most + k - 1) / k;
+    std::size_t active = work.size();
+    Progress progress("GPU round", options.quiet);
+    start = Clock::now();
+    for (std::uint32_t pass = 0; pass < passes; ++pass) {
+        while (active > 0 && work[active - 1].z - work[active - 1].y <= pass * k) --active;
+        for (std::size_t first = 0; first < active; first += kEntriesPerDispatch) {
+            if (options.cancel && options.cancel->load()) {
+                impl_->context.device().waitIdle();
+                throw RenderCancelled{};
+            }
+            const auto count = static_cast<std::uint32_t>(std::min<std::size_t>(kEntriesPerDispatch, active - first));
+            const double seconds = impl_->runner.run([&](const vk::raii::CommandBuffer& commands) {
+                recordAdaptivePass(commands, *pipeline, impl_->layout.pipelineLayout(), gpuScene.descriptorSet(),
+                                   static_cast<std::uint32_t>(first), count, pass * k, k);
+            });
+            stats.maxSubmissionSeconds = std::max(stats.maxSubmissionSeconds, seconds);
+            if (impl_->runner.lastDeviceSeconds() >= 0.0)
+                stats.kernelSeconds = std::max(stats.kernelSeconds, 0.0) + impl_->runner.lastDeviceSeconds();
+            ++stats.submissions;
+            ++stats.dispatches;
+            throwIfKernelFailed(gpuScene.status(), static_cast<std::uint32_t>(acc.width), impl_->context.info().loopLimiter);
+        }
+        progress.update(static_cast<double>(pass + 1) / passes);
+    }
+    stats.renderSeconds = secondsSince(start);
+    stats.nonFiniteSamples = gpu::statusNonFiniteSamples(gpuScene.status());
+
+    start = Clock::now();
+    std::vector<glm::uvec4> sums(2 * pixels);
+    impl_->transfers.download(gpuScene.accum(), std::as_writable_bytes(std::span(sums)));
+    for (std::size_t p = 0; p < pixels; ++p) {
+        acc.sum[p] = glm::uintBitsToFloat(glm::uvec3(sums[2 * p]));
+        acc.oddSum[p] = glm::uintBitsToFloat(glm::uvec3(sums[2 * p + 1]));
+    }
+    acc.count = next;
+    stats.readbackSeconds = secondsSince(start);
+    if (statsOut) *statsOut = stats;
 }
 
 }  // namespace vkrt

@@ -19,6 +19,7 @@
 #include "image.h"
 #include "kernel_error.h"
 #include "kernel_inputs.h"
+#include "pixel_accumulation.h"
 #include "render_options.h"
 #include "scene.h"
 #include "tile_planner.h"
@@ -69,6 +70,14 @@ public:
 
     Image render(const GpuSceneData& data, const RenderOptions& options, GpuRenderStats* stats = nullptr,
                  const GpuRenderSettings& settings = {});
+
+    // Adaptive sampling's round on the GPU (adaptive_render.h AddSamples): adds samples
+    // [acc.count[p], next[p]) of every pixel p to acc.sum and acc.oddSum, in sample order, as
+    // render() computes them, and sets acc.count = next. Only the pixels with samples to add are
+    // dispatched: a work list, sorted by samples to add, whose pass j covers the entries with more
+    // than j k samples. options.samplesPerPixel is the most any pixel will have (--max-rpp).
+    void addSampleRanges(const GpuSceneData& data, const RenderOptions& options, const std::vector<std::uint32_t>& next,
+                         adaptive::PixelAccumulation& acc, GpuRenderStats* stats = nullptr);
 
     // Loads the kernel again (with --shader-dir, compiles the GLSL as it is now) and drops the
     // pipelines made from the old one; returns the seconds it took. On an error (ShaderCompileError)

@@ -159,24 +159,38 @@ SceneUpload::SceneUpload(const Context& context, Transfers& transfers, const Ker
     context.device().updateDescriptorSets(writes, {});
 }
 
+void SceneUpload::growAccum(const Context& context, std::uint64_t bytes) {
+    if (bytes <= buffers_[gpu::BINDING_ACCUM].size()) return;
+    const BufferPlan accum = planSceneBuffers(SceneTables{}, bvh::SceneBvh{}, 16, 1)[gpu::BINDING_ACCUM];
+    checkBufferFits(context.limits(), accum.name, accum.kind, bytes, accum.texelBytes);
+    bytes_ -= buffers_[gpu::BINDING_ACCUM].size();
+    context.device().waitIdle();  // the old buffer may not be in use when it is replaced
+    buffers_[gpu::BINDING_ACCUM] = Buffer(context, accum.name, bytes, usageOf(accum.kind), MemoryUse::Device);
+    bytes_ += bytes;
+    views_[gpu::BINDING_ACCUM] = makeTexelView(context, buffers_[gpu::BINDING_ACCUM], accum.texelBytes);
+    const vk::BufferView view = *views_[gpu::BINDING_ACCUM];
+    vk::WriteDescriptorSet write(*set_, gpu::BINDING_ACCUM, 0, 1, vk::DescriptorType::eStorageTexelBuffer);
+    write.pTexelBufferView = &view;
+    context.device().updateDescriptorSets(write, {});
+}
+
 void SceneUpload::beginRender(const Context& context, Transfers& transfers, const gpu::FrameParams& frame) {
     const std::uint64_t pixels = static_cast<std::uint64_t>(gpu::frameWidth(frame)) * gpu::frameHeight(frame);
-    const BufferPlan accum = planSceneBuffers(SceneTables{}, bvh::SceneBvh{}, 16, pixels)[gpu::BINDING_ACCUM];
-    if (accum.bytes > buffers_[gpu::BINDING_ACCUM].size()) {
-        checkBufferFits(context.limits(), accum.name, accum.kind, accum.bytes, accum.texelBytes);
-        bytes_ -= buffers_[gpu::BINDING_ACCUM].size();
-        context.device().waitIdle();  // the old buffer may not be in use when it is replaced
-        buffers_[gpu::BINDING_ACCUM] = Buffer(context, accum.name, accum.bytes, usageOf(accum.kind), MemoryUse::Device);
-        bytes_ += accum.bytes;
-        views_[gpu::BINDING_ACCUM] = makeTexelView(context, buffers_[gpu::BINDING_ACCUM], accum.texelBytes);
-        const vk::BufferView view = *views_[gpu::BINDING_ACCUM];
-        vk::WriteDescriptorSet write(*set_, gpu::BINDING_ACCUM, 0, 1, vk::DescriptorType::eStorageTexelBuffer);
-        write.pTexelBufferView = &view;
-        context.device().updateDescriptorSets(write, {});
-    }
+    growAccum(context, planSceneBuffers(SceneTables{}, bvh::SceneBvh{}, 16, pixels)[gpu::BINDING_ACCUM].bytes);
     const std::array<gpu::FrameParams, 1> frames = {frame};
     transfers.upload(buffers_[gpu::BINDING_FRAME], std::as_bytes(std::span(frames)));
     transfers.zero(buffers_[gpu::BINDING_ACCUM]);
+    transfers.zero(buffers_[gpu::BINDING_STATUS]);
+}
+
+void SceneUpload::beginAdaptiveRound(const Context& context, Transfers& transfers, const gpu::FrameParams& frame,
+                                     std::span<const glm::uvec4> accum) {
+    // The texel buffer's size is kept stable as the tables' are (buffer.h), so that rounds with
+    // work lists of different lengths do not change lavapipe's JIT key.
+    growAccum(context, stableTexelBufferBytes(accum.size_bytes()));
+    const std::array<gpu::FrameParams, 1> frames = {frame};
+    transfers.upload(buffers_[gpu::BINDING_FRAME], std::as_bytes(std::span(frames)));
+    transfers.upload(buffers_[gpu::BINDING_ACCUM], std::as_bytes(accum));
     transfers.zero(buffers_[gpu::BINDING_STATUS]);
 }
 

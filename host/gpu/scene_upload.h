@@ -47,6 +47,12 @@ public:
     // zeroed. The scene's tables stay as they are.
     void beginRender(const Context& context, Transfers& transfers, const gpu::FrameParams& frame);
 
+    // Adaptive sampling's round (render.comp's ADAPTIVE kernel): the frame uploaded, the accumulation
+    // buffer grown to hold `accum` (per pixel the sum and the odd samples' sum, then the work list)
+    // and filled with it, the status zeroed.
+    void beginAdaptiveRound(const Context& context, Transfers& transfers, const gpu::FrameParams& frame,
+                            std::span<const glm::uvec4> accum);
+
     vk::DescriptorSet descriptorSet() const { return *set_; }
     const Buffer& accum() const { return buffers_[gpu::BINDING_ACCUM]; }
     // Mapped: the host reads it after every submission.
@@ -54,6 +60,8 @@ public:
     std::uint64_t bytes() const { return bytes_; }
 
 private:
+    // Replaces the accumulation buffer with one of `bytes` when it is smaller (checked first).
+    void growAccum(const Context& context, std::uint64_t bytes);
 
     std::vector<Buffer> buffers_;  // indexed by binding
     std::vector<vk::raii::BufferView> views_;  // indexed by binding: the texel buffers' views, else null

@@ -36,4 +36,19 @@ void recordSubmission(const vk::raii::CommandBuffer& commands, vk::Pipeline pipe
     computeToHostBarrier(commands);  // status (every submission) and accumulation (at the end)
 }
 
+void recordAdaptivePass(const vk::raii::CommandBuffer& commands, vk::Pipeline pipeline, vk::PipelineLayout layout,
+                        vk::DescriptorSet set, std::uint32_t firstEntry, std::uint32_t entries, std::uint32_t samplesDone,
+                        std::uint32_t k) {
+    const std::uint32_t groups = (entries + 63u) / 64u;
+    gpu::PassParams params{};
+    params.tile = glm::uvec4(firstEntry, 0u, entries, 1u);
+    params.pass = glm::uvec4(samplesDone, 1u, groups, k);
+    computeToComputeBarrier(commands);  // the previous pass's sums (and the host's uploads) first
+    commands.bindPipeline(vk::PipelineBindPoint::eCompute, pipeline);
+    commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, layout, 0, set, {});
+    commands.pushConstants<gpu::PassParams>(layout, vk::ShaderStageFlagBits::eCompute, 0, params);
+    commands.dispatch(groups, 1, 1);  // z = 1: the kernels read their uniforms at gl_NumWorkGroups.z - 1
+    computeToHostBarrier(commands);
+}
+
 }  // namespace vkrt

@@ -22,4 +22,11 @@ void recordWarmUp(const vk::raii::CommandBuffer& commands, vk::Pipeline pipeline
 void recordSubmission(const vk::raii::CommandBuffer& commands, vk::Pipeline pipeline, vk::PipelineLayout layout,
                       vk::DescriptorSet set, const Submission& submission, const SampleBatching& batching);
 
+// Adaptive sampling (render.comp's ADAPTIVE kernel): one dispatch over work-list entries
+// [firstEntry, firstEntry + entries), each computing its pixel's samples from samplesDone into its
+// range, at most k.
+void recordAdaptivePass(const vk::raii::CommandBuffer& commands, vk::Pipeline pipeline, vk::PipelineLayout layout,
+                        vk::DescriptorSet set, std::uint32_t firstEntry, std::uint32_t entries, std::uint32_t samplesDone,
+                        std::uint32_t k);
+
 }  // namespace vkrt

@@ -52,7 +52,9 @@ VKRT_CONST uint BINDING_LIGHTS = 6;        // Light[]
 VKRT_CONST uint BINDING_TEXTURES = 7;      // TextureInfo[]
 VKRT_CONST uint BINDING_TEXELS = 8;        // readonly uimageBuffer R32UI: RGBA8 packed texels of all textures
 VKRT_CONST uint BINDING_FRAME = 9;         // UBO FrameParams
-VKRT_CONST uint BINDING_ACCUM = 10;        // uimageBuffer RGBA32UI: per-pixel radiance sum (rgb float bits), w unused
+VKRT_CONST uint BINDING_ACCUM = 10;        // uimageBuffer RGBA32UI: per-pixel radiance sum (rgb float bits), w unused;
+                                           // adaptive (SPEC_ADAPTIVE): per pixel the sum and the odd samples' sum,
+                                           // then the round's work list, AdaptiveWork per entry
 VKRT_CONST uint BINDING_STATUS = 11;       // SSBO RenderStatus
 VKRT_CONST uint BINDING_EMITTERS = 12;     // EmitterRecord[] (shape emitters)
 VKRT_CONST uint BINDING_EMITTER_TRIANGLES = 13;  // EmitterTriangle[]
@@ -376,6 +378,10 @@ VKRT_FN uint passFirstSample(PassParams p) { return p.pass.x; }
 VKRT_FN uint passStride(PassParams p) { return p.pass.y; }
 VKRT_FN uint passWorkgroups(PassParams p) { return p.pass.z; }
 VKRT_FN uint passSamples(PassParams p) { return p.pass.w; }
+// Adaptive sampling (SPEC_ADAPTIVE): a pass's tile is a range of the work list instead,
+// tile.x its first entry and tile.z its length, and pass.x the samples the earlier passes of the
+// round computed of each entry's range.
+// One entry of the work list: uvec4(pixel index, first sample of the round, end of the round's samples, 0).
 
 // Ray-throughput benchmark (shaders/trace_rays.comp, tools/bench): rays in, hits out, so the GPU
 // traces exactly the rays the CPU traversal and the Embree peer trace.
@@ -433,7 +439,8 @@ VKRT_CONST uint SPEC_HAS_EMITTERS = 20;     // the scene has shape emitters (Emi
 VKRT_CONST uint SPEC_HAS_ENVIRONMENT = 21;  // the scene has an environment map
 VKRT_CONST uint SPEC_ESTIMATOR = 22;        // ESTIMATOR_*, or ESTIMATOR_FROM_FRAME
 VKRT_CONST uint SPEC_UNIFORM_INDEX_FROM_GROUPS = 23;  // lavapipe's recompile workaround (bindings.glsl); set per device
-VKRT_CONST uint SPEC_COUNT = 24;
+VKRT_CONST uint SPEC_ADAPTIVE = 24;         // adaptive sampling's rounds: a work list of pixels and sample ranges
+VKRT_CONST uint SPEC_COUNT = 25;
 
 // Entries of the kernel's BVH traversal stack. The host refuses a BVH whose top-level depth plus
 // deepest bottom-level depth exceeds it, so the stack can never overflow at run time.

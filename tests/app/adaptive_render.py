@@ -44,7 +44,7 @@ def main():
     print("progressive writes each of %d rounds" % len(rounds))
 
     refusals = [
-        ([vkrt, scene, "--target-error", "0.01", "--device", "gpu", "-o", out("x.png")], 1, "runs on the CPU reference only"),
+        ([vkrt, scene, "--target-error", "0.01", "--device", "gpu", "--sampler", "jittered"], 2, "adaptive sampling needs sobol2"),
         ([vkrt, scene, "--target-error", "-1"], 2, "--target-error -1: must be a relative RMSE of at least 0.0001"),
         ([vkrt, scene, "--time", "0"], 2, "--time 0: must be a number of seconds above 0"),
         ([vkrt, scene, "--time", "1", "--sampler", "sobol"], 2, "adaptive sampling needs sobol2"),
