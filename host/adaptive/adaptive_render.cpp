@@ -81,7 +81,7 @@ AdaptiveResult renderAdaptive(int width, int height, glm::ivec2 rows, const Adap
                 r.maxCount = std::max(r.maxCount, acc.count[acc.index(x, y)]);
             }
         result.estimate = r.estimate;
-        result.variance = smoothedSampleVariance(acc);
+        result.variance = smoothedSampleVariance(acc, kAllocationRadius);
         if (onRound) onRound(r, acc);
 
         const double targetMse =

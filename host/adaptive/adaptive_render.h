@@ -46,7 +46,7 @@ struct AdaptiveRound {
 struct AdaptiveResult {
     PixelAccumulation acc;
     ImageErrorEstimate estimate;       // of the image returned
-    std::vector<glm::dvec3> variance;  // smoothed per-sample variance (error_estimate.h), at the end
+    std::vector<glm::dvec3> variance;  // per-sample variance smoothed at kAllocationRadius, at the end
     AdaptiveRound last;
     StopReason stop = StopReason::TargetMet;
 };

@@ -79,4 +79,8 @@ std::vector<glm::vec3> standardErrors(const PixelAccumulation& acc, const std::v
     return out;
 }
 
+std::vector<glm::vec3> errorMap(const PixelAccumulation& acc) {
+    return standardErrors(acc, smoothedSampleVariance(acc, kErrorMapRadius));
+}
+
 }  // namespace vkrt::adaptive

@@ -31,10 +31,17 @@ glm::dvec3 halfDifference(const PixelAccumulation& acc, std::size_t p);
 
 // Per pixel and channel, the per-sample variance N d^2 averaged over the (2 radius + 1)^2
 // neighbourhood inside the rows: one pixel's d^2 has one degree of freedom (a lucky pixel would
-// look converged); the window's 25 values at radius 2 make the estimate a usable one.
-std::vector<glm::dvec3> smoothedSampleVariance(const PixelAccumulation& acc, int radius = 2);
+// look converged). The allocation takes radius 2 (25 pixels: steering needs locality, a penumbra
+// is a few pixels wide); the error map radius 3, whose 49 pixels keep a path-traced pixel's z-score
+// spread near 1 (1.02-1.19 against 1.12-1.31 at radius 2, docs/SAMPLING.md §7): 1 / se^2 grows
+// with the spread of se.
+inline constexpr int kAllocationRadius = 2;
+inline constexpr int kErrorMapRadius = 3;
+std::vector<glm::dvec3> smoothedSampleVariance(const PixelAccumulation& acc, int radius);
 
 // The estimated standard error of each pixel's mean: sqrt(smoothed variance / N) per channel.
 std::vector<glm::vec3> standardErrors(const PixelAccumulation& acc, const std::vector<glm::dvec3>& variance);
+// --error-map: standardErrors of the variance smoothed at kErrorMapRadius.
+std::vector<glm::vec3> errorMap(const PixelAccumulation& acc);
 
 }  // namespace vkrt::adaptive

@@ -101,7 +101,7 @@ int runAdaptiveRender(CommandLine& cl) {
     writeImage(withExposure(std::move(image), cl.exposure), cl.outputPath);
     if (!cl.errorMapPath.empty()) {
         Image errors(cl.render.width, cl.render.height);
-        errors.pixels = adaptive::standardErrors(result.acc, result.variance);
+        errors.pixels = adaptive::errorMap(result.acc);
         writeImage(errors, cl.errorMapPath);
     }
     if (!cl.sampleMapPath.empty()) {

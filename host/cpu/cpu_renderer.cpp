@@ -95,10 +95,11 @@ struct PassTotals {
 // Calls work(integrator, i, j, nonFinite) for every pixel of `rows`, 16x16 tiles handed to
 // `threads` threads; each pixel's work is its own, so the result does not depend on the threads.
 // progress(tilesDone / tileCount) after each tile. Throws RenderCancelled when *options.cancel
-// becomes true, or the first worker's exception.
+// becomes true, or the first worker's exception. `order` (optional): the tiles in the order the
+// threads take them.
 template <class Work, class OnTile>
 void runTiles(const RenderContext& ctx, const RenderOptions& options, glm::ivec2 rows, int threads, PassTotals& totals,
-              const Work& work, const OnTile& onTile) {
+              const Work& work, const OnTile& onTile, const std::vector<int>* order = nullptr) {
     const int tilesX = (options.width + kTileSize - 1) / kTileSize;
     const int tilesY = (rows.y - rows.x + kTileSize - 1) / kTileSize;
     const int tileCount = tilesX * tilesY;
@@ -122,8 +123,9 @@ void runTiles(const RenderContext& ctx, const RenderOptions& options, glm::ivec2
                     break;
                 }
                 if (stop.load()) break;
-                const int tile = nextTile.fetch_add(1);
-                if (tile >= tileCount) break;
+                const int taken = nextTile.fetch_add(1);
+                if (taken >= tileCount) break;
+                const int tile = order ? (*order)[static_cast<std::size_t>(taken)] : taken;
                 const int x0 = (tile % tilesX) * kTileSize, y0 = rows.x + (tile / tilesX) * kTileSize;
                 const int x1 = std::min(x0 + kTileSize, options.width), y1 = std::min(y0 + kTileSize, rows.y);
                 // Cancelling is also asked per pixel: a tile of a high-rpp render takes seconds.
@@ -226,13 +228,26 @@ void CpuSampleRanges::add(const std::vector<std::uint32_t>& next, adaptive::Pixe
     const auto start = std::chrono::steady_clock::now();
     PassTotals totals;
     Progress progress("cpu round", options_.quiet);
+    // The tiles with the most samples to add first: a round's tiles differ in cost by up to the
+    // ratio of their counts, and a costly tile taken last would leave the other threads idle.
+    const int tilesX = (options_.width + kTileSize - 1) / kTileSize;
+    const int tileCount = tilesOf(options_, rows_);
+    std::vector<std::uint64_t> cost(static_cast<std::size_t>(tileCount), 0);
+    for (int j = rows_.x; j < rows_.y; ++j)
+        for (int i = 0; i < options_.width; ++i) {
+            const std::size_t p = acc.index(i, j);
+            cost[static_cast<std::size_t>((j - rows_.x) / kTileSize * tilesX + i / kTileSize)] += next[p] - acc.count[p];
+        }
+    std::vector<int> order(static_cast<std::size_t>(tileCount));
+    for (int t = 0; t < tileCount; ++t) order[static_cast<std::size_t>(t)] = t;
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return cost[static_cast<std::size_t>(a)] > cost[static_cast<std::size_t>(b)]; });
     runTiles(*ctx_, options_, rows_, threads_, totals,
              [&](Integrator& integrator, int i, int j, std::uint64_t& nonFinite) {
                  const std::size_t p = acc.index(i, j);
                  if (next[p] > acc.count[p])
                      addPixelSamples(*ctx_, integrator, i, j, acc.count[p], next[p], acc.sum[p], nonFinite, nullptr, &acc.oddSum[p]);
              },
-             [&](double done) { progress.update(done); });
+             [&](double done) { progress.update(done); }, &order);
     acc.count = next;
     RenderStats round;
     copyTotals(totals, threads_, round);

@@ -23,7 +23,8 @@ constexpr Subcommand kSubcommands[] = {
             "  vkrt-bench gpu scenes [DIR] [-w W] [-h H] [-r RPP] [--repeat N]\n"
             "  vkrt-bench gpu kernels [SCENES|DIRS...] [--general] [--gpu N] [--shader-dir DIR] [-k DEPTH]",
      vkrt::bench::runGpuBench},
-    {"adaptive", "adaptive SCENE... [-w W] [--target E] [--reference-rpp R] [--max-rpp M] [-k DEPTH]",
+    {"adaptive", "adaptive SCENE... [-w W] [--target E] [--reference-rpp R] [--min-rpp M]\n"
+                 "               [--max-rpp M] [-k DEPTH] [--map-radius R] [--repeat N]",
      vkrt::bench::runAdaptiveBench},
 };
 
