@@ -227,6 +227,14 @@ void addSweepOptions(CLI::App& app, CommandLine& cl, std::string& bg, SweepText&
                    "all have the same expectation, so they share the reference). Default: the renders' default only")
         ->delimiter(',')
         ->check(CLI::IsMember({"bounce", "nee", "mis-balance", "mis"}));
+    app.add_option("--targets", sw.targets,
+                   "Also adaptive renders (vkrt --target-error, sobol2) at these target errors, comma-separated: a "
+                   "series of their own, each point at its mean rpp")
+        ->delimiter(',');
+    app.add_option("--min-rpp", sw.adaptive.minRpp, "With --targets: every pixel's first round (even)")
+        ->default_val(sw.adaptive.minRpp);
+    app.add_option("--max-rpp", sw.adaptive.maxRpp, "With --targets: no pixel gets more samples (even)")
+        ->default_val(sw.adaptive.maxRpp);
     app.add_option("--device", text.device, "Devices to sweep: gpu, cpu or both")->check(CLI::IsMember({"gpu", "cpu", "both"}));
     app.add_option("--reference-rpp", sw.referenceRpp, "Rays per pixel of the converged reference (sobol; even: two halves estimate its noise)")
         ->check(CLI::Range(2, 1 << 24));

@@ -30,6 +30,9 @@ std::string colour(SamplerKind s) {
     return "#000000";
 }
 
+// Adaptive sampling's series (--targets), whatever its sampler.
+const char* const kAdaptiveColour = "#e377c2";
+
 // A sweep of several estimators compares them, so they get the colours (colour is what the eye
 // follows from panel to panel) and the samplers the point shapes; with one estimator the plots are
 // those of a sampler sweep.
@@ -112,7 +115,8 @@ PlotFiles plotSweep(const std::vector<SweepPoint>& points, const std::array<doub
     bool severalEstimators = false;
     for (const SweepPoint& p : points) severalEstimators = severalEstimators || p.estimator != points.front().estimator;
     for (const SweepPoint& p : points) {
-        const std::string name = deviceName(p.device) + "_" + samplerName(p.sampler) + "_" + estimatorName(p.estimator);
+        const std::string name = deviceName(p.device) + "_" + samplerName(p.sampler) + (p.adaptiveTarget > 0.0 ? "_adaptive_" : "_") +
+                                 estimatorName(p.estimator);
         auto [it, added] = files.try_emplace(name);
         if (added) {
             series.push_back({seriesOf(p), dir / (name + ".dat")});
@@ -153,11 +157,12 @@ PlotFiles plotSweep(const std::vector<SweepPoint>& points, const std::array<doub
                 const bool gpu = s.device == Device::Gpu;
                 std::string title = deviceName(s.device);
                 title += ' ';  // appended separately: GCC 12 warns falsely (-Wrestrict) on " " + string
-                title += samplerName(s.sampler);
+                title += samplerLabel(s);
                 if (severalEstimators) (title += ' ') += estimatorName(s.estimator);
                 gp << (k ? ", \\\n     " : "") << quoted(series[k].data.string()) << " using " << (byTime ? 2 : 1) << ':'
                    << (3 + g) << " with linespoints lw 2 lc rgb "
-                   << quoted(severalEstimators ? colour(s.estimator) : colour(s.sampler)) << " dt " << (gpu ? 1 : 2)
+                   << quoted(severalEstimators ? colour(s.estimator) : s.adaptive ? kAdaptiveColour : colour(s.sampler))
+                   << " dt " << (gpu ? 1 : 2)
                    << " pt " << (severalEstimators ? pointType(s.sampler, gpu) : (gpu ? 7 : 6)) << " title " << quoted(title);
             }
             if (referenceRmse[g] > 0.0 && std::isfinite(referenceRmse[g]))

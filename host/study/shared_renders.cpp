@@ -49,6 +49,7 @@ std::vector<std::byte> packRender(const TimedRender& render) {
     std::vector<std::byte> bytes;
     const std::int32_t size[2] = {render.image.width, render.image.height};
     append(bytes, &render.seconds, 1);
+    append(bytes, &render.meanRpp, 1);
     append(bytes, size, 2);
     append(bytes, &render.image.pixels[0].x, render.image.pixels.size() * 3);
     return bytes;
@@ -57,10 +58,11 @@ std::vector<std::byte> packRender(const TimedRender& render) {
 TimedRender unpackRender(const std::vector<std::byte>& bytes) {
     TimedRender render;
     std::int32_t size[2] = {0, 0};
-    constexpr std::size_t header = sizeof(double) + sizeof size;
+    constexpr std::size_t header = 2 * sizeof(double) + sizeof size;
     if (bytes.size() < header) throw std::runtime_error("sweep: a rank sent a render of " + std::to_string(bytes.size()) + " bytes");
     std::memcpy(&render.seconds, bytes.data(), sizeof(double));
-    std::memcpy(size, bytes.data() + sizeof(double), sizeof size);
+    std::memcpy(&render.meanRpp, bytes.data() + sizeof(double), sizeof(double));
+    std::memcpy(size, bytes.data() + 2 * sizeof(double), sizeof size);
     render.image = Image(size[0], size[1]);
     if (bytes.size() != header + render.image.pixels.size() * sizeof(glm::vec3))
         throw std::runtime_error("sweep: a rank sent a render whose size does not match its pixels");

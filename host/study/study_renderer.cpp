@@ -59,4 +59,42 @@ TimedRender StudyRenderer::render(Device device, const PreparedScene& scene, con
     return out;
 }
 
+TimedRender StudyRenderer::renderAdaptive(Device device, const PreparedScene& scene, const RenderOptions& options,
+                                          const adaptive::AdaptiveOptions& adaptive) {
+    RenderOptions o = options;
+    o.samplesPerPixel = static_cast<int>(adaptive.maxRpp);
+    const auto run = [&](const RenderOptions& render) {
+        if (device == Device::Cpu) {
+            CpuSampleRanges cpu(*scene.scene, scene.cpu, render);
+            return adaptive::renderAdaptive(render.width, render.height, rowsOf(render), adaptive,
+                                            [&](const std::vector<std::uint32_t>& next, adaptive::PixelAccumulation& acc) {
+                                                cpu.add(next, acc);
+                                            });
+        }
+        if (!gpu_ || !scene.gpu) throw std::invalid_argument("study: a GPU render was asked for, but no GPU renderer is open");
+        return adaptive::renderAdaptive(render.width, render.height, rowsOf(render), adaptive,
+                                        [&](const std::vector<std::uint32_t>& next, adaptive::PixelAccumulation& acc) {
+                                            gpu_->addSampleRanges(*scene.gpu, render, next, acc);
+                                        });
+    };
+    if (device == Device::Gpu &&
+        warmed_.insert({scene.id, static_cast<std::uint32_t>(o.sampler) | 0x80000000u, static_cast<std::uint32_t>(o.estimator),
+                        o.samplesPerPixel})
+            .second) {
+        RenderOptions warmUp = o;
+        warmUp.rows = glm::ivec2(0, 1);
+        warmUp.quiet = true;
+        run(warmUp);
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const adaptive::AdaptiveResult result = run(o);
+    TimedRender out;
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    out.image = Image(o.width, o.height);
+    for (std::size_t p = 0; p < result.acc.pixels(); ++p) out.image.pixels[p] = result.acc.mean(p);
+    const glm::ivec2 rows = rowsOf(o);
+    out.meanRpp = static_cast<double>(result.last.samples) / (static_cast<double>(o.width) * (rows.y - rows.x));
+    return out;
+}
+
 }  // namespace vkrt::study

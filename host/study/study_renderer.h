@@ -9,6 +9,7 @@
 #include <string>
 #include <tuple>
 
+#include "adaptive_render.h"
 #include "gpu_renderer.h"
 #include "image.h"
 #include "render_options.h"
@@ -35,6 +36,7 @@ struct PreparedScene {
 struct TimedRender {
     Image image;
     double seconds = 0.0;  // wall time of the render call
+    double meanRpp = 0.0;  // an adaptive render's mean samples per pixel (0 for a uniform one)
 };
 
 class StudyRenderer {
@@ -55,6 +57,11 @@ public:
     // estimator and rpp has been created (an untimed one-row warm-up), so pipeline compilation is not counted.
     TimedRender render(Device device, const PreparedScene& scene, const RenderOptions& options,
                        Image* sampleVariance = nullptr);
+
+    // An adaptive render (adaptive_render.h) of options.sampler up to adaptive.maxRpp, timed as
+    // render() times: on the GPU after an untimed one-row warm-up of the adaptive kernel.
+    TimedRender renderAdaptive(Device device, const PreparedScene& scene, const RenderOptions& options,
+                               const adaptive::AdaptiveOptions& adaptive);
 
 private:
     std::unique_ptr<GpuRenderer> gpu_;

@@ -1,6 +1,7 @@
 #include "sweep.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <ostream>
@@ -93,6 +94,18 @@ void validateSweepOptions(const SweepOptions& o) {
         if (std::find(o.estimators.begin(), o.estimators.begin() + i, o.estimators[i]) != o.estimators.begin() + i)
             fail("--estimators lists " + estimatorName(o.estimators[i]) + " twice");
     if (o.devices.empty()) fail("no device to sweep");
+    for (double t : o.targets) {
+        adaptive::AdaptiveOptions a = o.adaptive;
+        a.targetError = t;
+        a.seconds.reset();
+        try {
+            adaptive::checkAdaptiveOptions(a);
+        } catch (const std::invalid_argument& e) {
+            fail(std::string("--targets: ") + e.what());
+        }
+    }
+    if (!o.targets.empty() && o.adaptiveSampler != SamplerKind::Sobol2 && o.adaptiveSampler != SamplerKind::Random)
+        fail("--targets renders with sobol2 or random, not " + samplerName(o.adaptiveSampler));
     if (o.referenceRpp < 2 || o.referenceRpp % 2 != 0)
         fail("--reference-rpp must be even (two halves) and at least 2, not " + std::to_string(o.referenceRpp));
     if (!(o.targetRmse > 0.0)) fail("--target-rmse must be positive, not " + std::to_string(o.targetRmse));
@@ -135,13 +148,19 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
         SamplerKind sampler;
         Estimator estimator;
         Device device;
+        double target = 0.0;  // adaptive sampling's target error; 0: uniform at rpp
     };
     std::vector<Setting> settings;
-    for (int s = 0; s < options.seeds; ++s)
+    for (int s = 0; s < options.seeds; ++s) {
         for (int rpp : options.rpps)
             for (SamplerKind sampler : options.samplers)
                 for (Estimator estimator : options.estimators)
                     for (Device device : result.devices) settings.push_back({s, rpp, sampler, estimator, device});
+        for (double target : options.targets)
+            for (Estimator estimator : options.estimators)
+                for (Device device : result.devices)
+                    settings.push_back({s, static_cast<int>(options.adaptive.maxRpp), options.adaptiveSampler, estimator, device, target});
+    }
     const auto settingOptions = [&](const Setting& setting) {
         RenderOptions o = options.render;
         o.quiet = true;
@@ -151,7 +170,14 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
         o.seed = options.render.seed + static_cast<std::uint32_t>(setting.seedIndex);
         return o;
     };
-    const auto renderSetting = [&](std::size_t i) { return renderer->render(settings[i].device, prepared, settingOptions(settings[i])); };
+    const auto renderSetting = [&](std::size_t i) {
+        const Setting& setting = settings[i];
+        if (setting.target <= 0.0) return renderer->render(setting.device, prepared, settingOptions(setting));
+        adaptive::AdaptiveOptions a = options.adaptive;
+        a.targetError = setting.target;
+        a.seconds.reset();
+        return renderer->renderAdaptive(setting.device, prepared, settingOptions(setting), a);
+    };
 
     if (ranks.rank() != 0) {  // a helper: bands of the reference, then its share of the settings
         RenderOptions half = spec.options;
@@ -184,14 +210,17 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
     renderShared(ranks, settings.size(), renderSetting, [&](std::size_t i, const TimedRender& r) {
         const Setting& setting = settings[i];
         const RenderOptions o = settingOptions(setting);
-        SweepRow row{setting.device, setting.sampler, setting.estimator, setting.rpp, o.seed, r.seconds,
+        const int rpp = setting.target > 0.0 ? static_cast<int>(std::lround(r.meanRpp)) : setting.rpp;
+        SweepRow row{setting.device, setting.sampler, setting.estimator, setting.target, rpp, o.seed, r.seconds,
                      measureError(r.image, ref.image, ref.masks)};
         result.rows.push_back(row);
         if (!options.render.quiet) {
-            char line[200];
-            std::snprintf(line, sizeof line, "%s %-8s %-11s %5d rpp seed %u: %8.3f s  rmse %.3e\n",
+            char line[240];
+            char target[48] = "";
+            if (setting.target > 0.0) std::snprintf(target, sizeof target, " (adaptive, target %g)", setting.target);
+            std::snprintf(line, sizeof line, "%s %-8s %-11s %5d rpp%s seed %u: %8.3f s  rmse %.3e\n",
                           deviceName(setting.device).c_str(), samplerName(setting.sampler).c_str(),
-                          estimatorName(setting.estimator).c_str(), setting.rpp, o.seed, r.seconds, row.error.rmse);
+                          estimatorName(setting.estimator).c_str(), rpp, target, o.seed, r.seconds, row.error.rmse);
             log << line << std::flush;
         }
     });
@@ -206,7 +235,14 @@ SweepResult runSweep(const SweepOptions& options, const Scene& scene, std::ostre
     std::ostringstream settingsLine;
     settingsLine << r.width << "x" << r.height << ", max depth " << r.maxDepth << ", " << r.lightSamples
              << " light sample(s) and " << r.glossSamples << " gloss sample(s) per pixel sample; rpp "
-             << joined(options.rpps) << "; " << options.seeds << " seed(s) from " << r.seed << "; estimators:";
+             << joined(options.rpps) << "; " << options.seeds << " seed(s) from " << r.seed << ";";
+    if (!options.targets.empty()) {
+        settingsLine << " adaptive (" << samplerName(options.adaptiveSampler) << ", " << options.adaptive.minRpp << "-"
+                     << options.adaptive.maxRpp << " rpp, its rpp the mean) at target errors";
+        for (double t : options.targets) settingsLine << " " << t;
+        settingsLine << ";";
+    }
+    settingsLine << " estimators:";
     for (Estimator e : options.estimators) settingsLine << " " << estimatorName(e);
     settingsLine << "; devices:";
     for (Device d : result.devices)

@@ -32,6 +32,12 @@ struct SweepOptions {
     // renders' default, so a sweep costs what it did before the axis existed; every estimator has
     // the same expectation, so all are measured against the one reference.
     std::vector<Estimator> estimators{RenderOptions{}.estimator};
+    // Adaptive sampling (--targets): per seed, estimator and device, one render per target error
+    // (docs/SAMPLING.md §7) with adaptiveSampler, bounded by adaptive's --min-rpp/--max-rpp; a
+    // series of its own in the plots and tables. Empty: none.
+    std::vector<double> targets;
+    SamplerKind adaptiveSampler = SamplerKind::Sobol2;
+    adaptive::AdaptiveOptions adaptive;  // its targetError is set per render
     std::vector<Device> devices{Device::Gpu, Device::Cpu};
     int referenceRpp = 4096;
     std::optional<Device> referenceDevice;  // default: the GPU when the sweep uses it, else the CPU

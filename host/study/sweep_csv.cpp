@@ -25,12 +25,14 @@ void writeSweepCsv(const std::vector<SweepRow>& rows, const std::filesystem::pat
     out << "device,sampler,estimator,rpp,seed,time_s,rmse,relmse";
     for (Region region : kRegions)
         if (region != Region::All) out << ",rmse_" << regionName(region);
-    out << '\n';
+    out << ",adaptive_target\n";  // empty for a uniform render; an adaptive one's rpp is its mean
     for (const SweepRow& r : rows) {
         out << deviceName(r.device) << ',' << samplerName(r.sampler) << ',' << estimatorName(r.estimator) << ',' << r.rpp
             << ',' << r.seed << ',' << number(r.seconds) << ',' << number(r.error.rmse) << ',' << number(r.error.relMse);
         for (Region region : kRegions)
             if (region != Region::All) out << ',' << number(rmseIn(r.error, region));
+        out << ',';
+        if (r.adaptiveTarget > 0.0) out << number(r.adaptiveTarget);
         out << '\n';
     }
     if (!out) throw std::runtime_error(path.string() + ": write failed");

@@ -1,6 +1,7 @@
 #include "sweep_report.h"
 
 #include <algorithm>
+#include <tuple>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -22,7 +23,7 @@ std::string fixed(double v, const char* format) {
 
 // "| device | sampler | estimator |", the first cells of every table row about one series.
 std::string seriesCells(const Series& s) {
-    return "| " + deviceName(s.device) + " | " + samplerName(s.sampler) + " | " + estimatorName(s.estimator) + " |";
+    return "| " + deviceName(s.device) + " | " + samplerLabel(s) + " | " + estimatorName(s.estimator) + " |";
 }
 
 // The region columns' header cells (" all | edge | ... |") and the separator's cells.
@@ -37,12 +38,14 @@ std::string separator(std::size_t columns) {
     return s + "\n";
 }
 
-std::vector<std::pair<Device, SamplerKind>> devicesAndSamplers(const std::vector<SweepPoint>& points) {
-    std::vector<std::pair<Device, SamplerKind>> pairs;
-    for (const SweepPoint& p : points)
-        if (std::find(pairs.begin(), pairs.end(), std::pair(p.device, p.sampler)) == pairs.end())
-            pairs.emplace_back(p.device, p.sampler);
-    return pairs;
+// The (device, sampler, adaptive) groups whose estimators are compared, in order of appearance.
+std::vector<std::tuple<Device, SamplerKind, bool>> devicesAndSamplers(const std::vector<SweepPoint>& points) {
+    std::vector<std::tuple<Device, SamplerKind, bool>> groups;
+    for (const SweepPoint& p : points) {
+        const std::tuple group(p.device, p.sampler, p.adaptiveTarget > 0.0);
+        if (std::find(groups.begin(), groups.end(), group) == groups.end()) groups.push_back(group);
+    }
+    return groups;
 }
 
 void writeEqualTime(std::ostream& out, const SweepReportInput& in) {
@@ -55,13 +58,14 @@ void writeEqualTime(std::ostream& out, const SweepReportInput& in) {
         << "| device | sampler | estimator | time (s) |" << regionHeader() << " / best |\n"
         << separator(5 + kRegionCount);
     const std::vector<Series> series = seriesIn(in.points);
-    for (const auto& [device, sampler] : devicesAndSamplers(in.points)) {
-        const double t = commonTime(in.points, device, sampler);
+    for (const auto& [device, sampler, adaptive] : devicesAndSamplers(in.points)) {
+        const double t = commonTime(in.points, device, sampler, adaptive);
+        const auto inGroup = [&](const Series& s) { return s.device == device && s.sampler == sampler && s.adaptive == adaptive; };
         double best = kNaN;
         for (const Series& s : series)
-            if (s.device == device && s.sampler == sampler) best = std::fmin(best, rmseAtTime(in.points, s, Region::All, t));
+            if (inGroup(s)) best = std::fmin(best, rmseAtTime(in.points, s, Region::All, t));
         for (const Series& s : series) {
-            if (s.device != device || s.sampler != sampler) continue;
+            if (!inGroup(s)) continue;
             out << seriesCells(s) << " " << fixed(t, "%.3f") << " |";
             for (Region region : kRegions) out << " " << fixed(rmseAtTime(in.points, s, region, t), "%.2e") << " |";
             out << " " << fixed(rmseAtTime(in.points, s, Region::All, t) / best, "%.2f") << " |\n";
@@ -89,10 +93,10 @@ std::vector<ConvergenceSlope> fitSlopes(const std::vector<SweepPoint>& points, c
     return slopes;
 }
 
-double commonTime(const std::vector<SweepPoint>& points, Device device, SamplerKind sampler) {
+double commonTime(const std::vector<SweepPoint>& points, Device device, SamplerKind sampler, bool adaptive) {
     double longest = kNaN, shortest = kNaN;  // the least longest and the greatest shortest time
     for (const Series& s : seriesIn(points)) {
-        if (s.device != device || s.sampler != sampler) continue;
+        if (s.device != device || s.sampler != sampler || s.adaptive != adaptive) continue;
         double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
         for (const SweepPoint& p : points)
             if (seriesOf(p) == s) {
@@ -184,7 +188,7 @@ void writeSweepReport(const SweepReportInput& in, const std::filesystem::path& p
             out << (in.regionPixels[static_cast<int>(region)] == 0 ? "no pixels" : "not reached") << " | | | | | |\n";
             continue;
         }
-        out << deviceName(best->device) << " | " << samplerName(best->sampler) << " | " << estimatorName(best->estimator)
+        out << deviceName(best->device) << " | " << samplerLabel(seriesOf(*best)) << " | " << estimatorName(best->estimator)
             << " | " << best->rpp << " | " << fixed(best->seconds, "%.3f") << " | "
             << fixed(best->rmse[static_cast<int>(region)], "%.2e") << " |\n";
     }

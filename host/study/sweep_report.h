@@ -30,7 +30,7 @@ std::vector<ConvergenceSlope> fitSlopes(const std::vector<SweepPoint>& points, c
 // Equal time: the estimators of one device and sampler compared at the same render time. The time
 // is the longest that every one of their series reached (the least of their longest mean times),
 // so no series is extrapolated; NaN when some series' shortest time is above it.
-double commonTime(const std::vector<SweepPoint>& points, Device device, SamplerKind sampler);
+double commonTime(const std::vector<SweepPoint>& points, Device device, SamplerKind sampler, bool adaptive = false);
 // A series' RMSE in `region` at `seconds`: linear in log time and log RMSE between the two points
 // (ordered by time) around it; NaN outside the series' times or where the region is empty.
 double rmseAtTime(const std::vector<SweepPoint>& points, const Series& series, Region region, double seconds);

@@ -21,11 +21,13 @@ inline constexpr std::array<Region, kRegionCount> kRegions = {Region::All,     R
 // "all", "edge", "penumbra", "gloss", "defocus", "motion", "indirect", "emitter"
 std::string regionName(Region region);
 
-// One render of the sweep.
+// One render of the sweep. An adaptive render (--targets, docs/SAMPLING.md §7) has its target
+// and, as rpp, its mean samples per pixel rounded.
 struct SweepRow {
     Device device = Device::Cpu;
     SamplerKind sampler = SamplerKind::Jittered;
     Estimator estimator = Estimator::MisPower;
+    double adaptiveTarget = 0.0;  // 0: a uniform render of rpp samples per pixel
     int rpp = 1;
     std::uint32_t seed = 0;
     double seconds = 0.0;
@@ -34,12 +36,14 @@ struct SweepRow {
 
 double rmseIn(const ErrorMetrics& e, Region region);
 
-// One setting (device, sampler, estimator, rpp) over its seeds: mean time, and the RMSE of the
-// pooled squared errors (sqrt of the mean MSE over seeds), per region.
+// One setting (device, sampler, estimator, rpp or adaptive target) over its seeds: mean time (and
+// for an adaptive target the mean rpp, rounded), and the RMSE of the pooled squared errors (sqrt of
+// the mean MSE over seeds), per region.
 struct SweepPoint {
     Device device = Device::Cpu;
     SamplerKind sampler = SamplerKind::Jittered;
     Estimator estimator = Estimator::MisPower;
+    double adaptiveTarget = 0.0;
     int rpp = 1;
     int seeds = 0;
     double seconds = 0.0;
@@ -47,13 +51,17 @@ struct SweepPoint {
     std::array<double, kRegionCount> rmse{};  // indexed by Region
 };
 
-// A curve of the sweep: the settings that differ only in rpp.
+// A curve of the sweep: the settings that differ only in rpp, or the adaptive renders of every
+// target of a device, sampler and estimator.
 struct Series {
     Device device = Device::Cpu;
     SamplerKind sampler = SamplerKind::Jittered;
     Estimator estimator = Estimator::MisPower;
+    bool adaptive = false;
     bool operator==(const Series&) const = default;
 };
+// The series' sampler as tables and plots name it: "sobol2", or "sobol2 adaptive".
+std::string samplerLabel(const Series& series);
 Series seriesOf(const SweepRow& row);
 Series seriesOf(const SweepPoint& point);
 // The series of `points` in the order of their first appearance.

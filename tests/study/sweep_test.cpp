@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -28,10 +29,12 @@
 namespace vkrt::test {
 namespace {
 
+// The fields of a CSV line, an empty last one included (getline alone drops it).
 std::vector<std::string> split(const std::string& line) {
     std::vector<std::string> fields;
     std::stringstream s(line);
     for (std::string f; std::getline(s, f, ',');) fields.push_back(f);
+    if (!line.empty() && line.back() == ',') fields.emplace_back();
     return fields;
 }
 
@@ -101,7 +104,7 @@ TEST(Sweep, WritesCsvPlotsAndReportAndReusesTheCachedReference) {
     const std::vector<std::string> header = {"device",        "sampler",       "estimator",  "rpp",
                                              "seed",          "time_s",        "rmse",       "relmse",
                                              "rmse_edge",     "rmse_penumbra", "rmse_gloss", "rmse_defocus",
-                                             "rmse_motion",   "rmse_indirect", "rmse_emitter"};
+                                             "rmse_motion",   "rmse_indirect", "rmse_emitter", "adaptive_target"};
     EXPECT_EQ(rows[0], header);
     ASSERT_EQ(rows.size(), 1u + 2u * 4u * 3u * 2u);  // devices x samplers x rpps x seeds
     std::set<std::string> settings;
@@ -111,7 +114,8 @@ TEST(Sweep, WritesCsvPlotsAndReportAndReusesTheCachedReference) {
         EXPECT_TRUE(rows[r][0] == "gpu" || rows[r][0] == "cpu");
         EXPECT_EQ(rows[r][2], "mis") << "the default estimator only, row " << r;
         EXPECT_GT(std::stod(rows[r][5]), 0.0) << "time, row " << r;
-        for (std::size_t c = 6; c < header.size(); ++c) {
+        EXPECT_EQ(rows[r].back(), "") << "a uniform render has no adaptive target, row " << r;
+        for (std::size_t c = 6; c + 1 < header.size(); ++c) {
             const double v = std::stod(rows[r][c]);
             // glossy.xml has no lens, nothing moves and nothing is path traced: those regions are
             // empty, their RMSE nan.
@@ -160,6 +164,48 @@ TEST(Sweep, WritesCsvPlotsAndReportAndReusesTheCachedReference) {
                 ++matched;
             }
     EXPECT_EQ(matched, second.rows.size());
+}
+
+// --targets: adaptive renders form a series of their own on both devices, each point at its mean
+// rpp, with less error at the smaller target, in the CSV, the report and the plots.
+TEST(Sweep, AdaptiveTargetsFormTheirOwnSeries) {
+    const std::filesystem::path dir = artifactDir() + "/sweep_adaptive";
+    std::filesystem::remove_all(dir);
+    const Scene scene = exampleScene("glossy");
+    study::SweepOptions options = smallSweep(dir);
+    options.render.width = 40;
+    options.render.height = 30;
+    options.samplers = {SamplerKind::Jittered};
+    options.rpps = {4, 16};
+    options.targets = {0.05, 0.02};
+    options.adaptive.maxRpp = 256;
+    std::ostringstream log;
+    const study::SweepResult result = study::runSweep(options, scene, log);
+    EXPECT_EQ(result.validationMessages, "");
+    std::map<std::pair<study::Device, double>, double> mse;  // per device and target, over seeds
+    int adaptiveRows = 0;
+    for (const study::SweepRow& r : result.rows) {
+        if (r.adaptiveTarget == 0.0) continue;
+        ++adaptiveRows;
+        EXPECT_EQ(r.sampler, SamplerKind::Sobol2);
+        EXPECT_GE(r.rpp, 16) << "the mean is at least --min-rpp";
+        EXPECT_LE(r.rpp, 256);
+        mse[{r.device, r.adaptiveTarget}] += r.error.rmse * r.error.rmse;
+    }
+    EXPECT_EQ(adaptiveRows, 2 * 2 * 2);  // devices x targets x seeds
+    for (study::Device d : {study::Device::Gpu, study::Device::Cpu})
+        EXPECT_LT(mse[std::pair(d, 0.02)], mse[std::pair(d, 0.05)]) << study::deviceName(d);
+    const auto rows = readCsv(dir / "out" / "sweep.csv");
+    int targets = 0;
+    for (std::size_t r = 1; r < rows.size(); ++r) targets += rows[r].back() == "0.05" || rows[r].back() == "0.02";
+    EXPECT_EQ(targets, adaptiveRows);
+    const std::string report = readText(result.report);
+    for (const char* device : {"gpu", "cpu"})
+        EXPECT_NE(report.find(std::string("| ") + device + " | sobol2 adaptive | mis | "), std::string::npos) << device;
+    EXPECT_TRUE(std::filesystem::exists(dir / "out" / "plots" / "cpu_sobol2_adaptive_mis.dat"));
+    EXPECT_TRUE(std::filesystem::exists(result.plots.errorVsTime));
+    options.targets = {0.00001};
+    EXPECT_THROW(study::validateSweepOptions(options), std::invalid_argument);
 }
 
 TEST(Sweep, EveryEstimatorIsMeasuredAgainstTheOneReference) {
