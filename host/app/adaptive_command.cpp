@@ -1,6 +1,7 @@
 #include "adaptive_command.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -69,7 +70,7 @@ int runAdaptiveRender(CommandLine& cl) {
     };
     const bool quiet = cl.render.quiet;
     const adaptive::RoundDone onRound = [&](const adaptive::AdaptiveRound& r, const adaptive::PixelAccumulation& acc) {
-            if (cl.render.checkpoints > 1) {
+            if (cl.render.checkpoints >= 1) {
                 Image soFar = meanImage(acc);
                 clampOverflowedPixels(soFar);
                 writeImage(withExposure(std::move(soFar), cl.exposure), cl.outputPath);
@@ -80,8 +81,8 @@ int runAdaptiveRender(CommandLine& cl) {
             if (cl.adaptive.targetError) std::snprintf(target, sizeof target, " (target %g)", *cl.adaptive.targetError);
             std::fprintf(stderr, "round %d: estimated error %s%s, %u-%u rpp (mean %.1f), %.3fs%s%s\n", r.number,
                          errorText(r.estimate).c_str(), target,
-                         r.minCount, r.maxCount, r.samples / pixels, r.seconds, cl.render.checkpoints > 1 ? " -> " : "",
-                         cl.render.checkpoints > 1 ? cl.outputPath.c_str() : "");
+                         r.minCount, r.maxCount, r.samples / pixels, r.seconds, cl.render.checkpoints >= 1 ? " -> " : "",
+                         cl.render.checkpoints >= 1 ? cl.outputPath.c_str() : "");
     };
     const adaptive::AdaptiveResult result = [&] {
         try {
@@ -134,6 +135,39 @@ int runAdaptiveRender(CommandLine& cl) {
                      r.samples / pixels, r.seconds, secondsSince(start), cl.outputPath.c_str());
     }
     return 0;
+}
+
+DeviceRender renderAdaptivePrepared(GpuRenderer* gpu, const GpuSceneData* gpuData, const Scene& scene, const SceneAccel* accel,
+                                    const RenderOptions& options, const adaptive::AdaptiveOptions& adaptiveOptions) {
+    std::optional<CpuSampleRanges> cpu;
+    if (!gpu || !gpuData) cpu.emplace(scene, *accel, options);
+    GpuRenderStats gpuStats;
+    const glm::ivec2 rows = rowsOf(options);
+    const double pixels = static_cast<double>(options.width) * (rows.y - rows.x);
+    const adaptive::AdaptiveResult result = adaptive::renderAdaptive(
+        options.width, options.height, rows, adaptiveOptions,
+        [&](const std::vector<std::uint32_t>& next, adaptive::PixelAccumulation& acc) {
+            if (cpu) return cpu->add(next, acc);
+            gpu->addSampleRanges(*gpuData, options, next, acc, &gpuStats);
+        },
+        [&](const adaptive::AdaptiveRound& r, const adaptive::PixelAccumulation& acc) {
+            if (!options.onCheckpoint) return;
+            Image soFar = meanImage(acc);
+            clampOverflowedPixels(soFar);
+            options.onCheckpoint->checkpoint(soFar, static_cast<int>(std::lround(r.samples / pixels)));
+        });
+    DeviceRender out;
+    out.image = meanImage(result.acc);
+    clampOverflowedPixels(out.image);
+    const adaptive::AdaptiveRound& r = result.last;
+    char text[200];
+    std::snprintf(text, sizeof text, "; adaptive: estimated error %s (%s) after %d rounds, %u-%u rpp (mean %.1f)",
+                  errorText(r.estimate).c_str(), adaptive::stopReasonText(result.stop).c_str(), r.number, r.minCount, r.maxCount,
+                  r.samples / pixels);
+    out.device = (cpu ? "cpu (" + std::to_string(cpu->stats().threads) + " threads)" : gpu->deviceName()) + text;
+    out.seconds = r.seconds;
+    out.onGpu = !cpu;
+    return out;
 }
 
 }  // namespace vkrt

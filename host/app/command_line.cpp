@@ -362,7 +362,6 @@ void applyAdaptiveOptions(const CLI::App& app, CommandLine& cl, std::optional<do
     if (cl.parts > 0)
         throw CLI::ValidationError("--part", std::string("adaptive sampling (") + flag +
                                                  ") decides each pixel's samples from the whole image; render it in one process");
-    if (cl.watch) throw CLI::ValidationError("--watch", std::string("is not offered with ") + flag + " yet");
     cl.render.samplesPerPixel = static_cast<int>(cl.adaptive.maxRpp);
 }
 

@@ -21,6 +21,7 @@
 #include "gpu_renderer.h"
 #include "interrupt.h"
 #include "progressive_output.h"
+#include "adaptive_command.h"
 #include "render_steps.h"
 #include "watch_preview.h"
 
@@ -159,7 +160,8 @@ private:
             ProgressiveOutput file(cl_.outputPath, cl_.render.samplesPerPixel, cl_.exposure, cl_.render.quiet, "  ");
             WatchedPasses passes(file, preview_, round, cl_.render.samplesPerPixel, cl_.exposure);
             RenderOptions options = cl_.render;
-            if (options.checkpoints > 1) options.onCheckpoint = &passes;
+            // Adaptive sampling writes each round under any --progressive N (its N is not used).
+            if (options.checkpoints > (cl_.adaptiveSampling ? 0 : 1)) options.onCheckpoint = &passes;
             preview_.rendering("render " + std::to_string(round) + ": rendering (" + clockTime() + ")");
             std::optional<FileChanges> during;
             std::optional<DeviceRender> result = renderUnlessChanged(options, during);
@@ -171,9 +173,10 @@ private:
             const Image written = withExposure(std::move(result->image), cl_.exposure);
             writeImage(written, cl_.outputPath);
             char line[512];
-            std::snprintf(line, sizeof line, "render %d: %dx%d, %d rpp on %s: %spipeline %.3fs, render %.3fs, total %.3fs -> %s",
-                          round, cl_.render.width, cl_.render.height, cl_.render.samplesPerPixel, result->device.c_str(),
-                          steps.c_str(), result->pipelineSeconds, result->seconds, secondsSince(start), cl_.outputPath.c_str());
+            const std::string rpp = cl_.adaptiveSampling ? std::string("adaptive") : std::to_string(cl_.render.samplesPerPixel) + " rpp";
+            std::snprintf(line, sizeof line, "render %d: %dx%d, %s on %s: %spipeline %.3fs, render %.3fs, total %.3fs -> %s", round,
+                          cl_.render.width, cl_.render.height, rpp.c_str(), result->device.c_str(), steps.c_str(),
+                          result->pipelineSeconds, result->seconds, secondsSince(start), cl_.outputPath.c_str());
             if (!cl_.render.quiet) std::fprintf(stderr, "[%s] %s\n", clockTime().c_str(), line);
             preview_.image(written, std::string(line) + " (" + clockTime() + ")");
             return during;
@@ -220,6 +223,12 @@ private:
     }
 
     DeviceRender render(const RenderOptions& options) {
+        if (cl_.adaptiveSampling) {
+            // Adaptive sampling's rounds, shown as --progressive's passes are (adaptive_command.h).
+            if (!loaded_->gpu && !loaded_->cpu) loaded_->cpu.emplace(prepareCpuScene(loaded_->scene));
+            return renderAdaptivePrepared(loaded_->gpu ? gpu_.get() : nullptr, loaded_->gpu ? &*loaded_->gpu : nullptr,
+                                          loaded_->scene, loaded_->cpu ? &*loaded_->cpu : nullptr, options, cl_.adaptive);
+        }
         if (loaded_->gpu) {
             try {
                 return renderPreparedOnGpu(*gpu_, *loaded_->gpu, options, cl_.general);
