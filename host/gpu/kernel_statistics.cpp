@@ -42,9 +42,11 @@ std::string KernelStatisticsCompiler::driver() const { return impl_->context.inf
 bool KernelStatisticsCompiler::hasStatistics() const { return impl_->context.statisticsEnabled(); }
 std::size_t KernelStatisticsCompiler::variants() const { return impl_->done.size(); }
 
-KernelVariantReport KernelStatisticsCompiler::compile(const GpuSceneData& data, const RenderOptions& options, KernelVariant variant) {
+KernelVariantReport KernelStatisticsCompiler::compile(const GpuSceneData& data, const RenderOptions& options, KernelVariant variant,
+                                                      bool adaptive) {
     const std::uint64_t lockstep = impl_->context.info().loopLimiter ? kLockstepFactor : 1;
-    const KernelInputs in = makeKernelInputs(data, options, variant, 0, lockstep);
+    KernelInputs in = makeKernelInputs(data, options, variant, 0, lockstep);
+    in.features.adaptive = adaptive;
     const auto key = std::make_pair(in.features, in.batching.perDispatch);
     if (auto found = impl_->done.find(key); found != impl_->done.end()) {
         KernelVariantReport again = found->second;

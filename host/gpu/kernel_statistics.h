@@ -32,8 +32,9 @@ public:
     // Whether the device reports statistics at all (lavapipe does not).
     bool hasStatistics() const;
     // The variant a render of `data` with `options` would use, compiled with statistics.
+    // adaptive: the variant of adaptive sampling's rounds (FeatureSet::adaptive, render.comp's work list).
     KernelVariantReport compile(const GpuSceneData& data, const RenderOptions& options,
-                                KernelVariant variant = KernelVariant::Specialised);
+                                KernelVariant variant = KernelVariant::Specialised, bool adaptive = false);
     std::size_t variants() const;
 
 private:

@@ -1,4 +1,4 @@
-// `vkrt-bench gpu kernels [SCENES|DIRS...] [--general] [--gpu N] [--shader-dir DIR] [-k DEPTH]`:
+// `vkrt-bench gpu kernels [SCENES|DIRS...] [--general] [--adaptive] [--gpu N] [--shader-dir DIR] [-k DEPTH]`:
 // every render-kernel variant those scenes need, built (never run) on the selected device, with
 // what its compiler reports: registers, spilled registers, scratch, waves per SIMD and compile
 // time (VK_KHR_pipeline_executable_properties; RADV reports them all, NVIDIA some, lavapipe none).
@@ -29,6 +29,7 @@ struct Args {
     std::vector<std::string> inputs;
     RenderOptions render;
     bool general = false;
+    bool adaptive = false;  // also the variant of adaptive sampling's rounds (--target-error)
     GpuRendererOptions gpu;
 };
 
@@ -43,12 +44,13 @@ Args parseArgs(const std::vector<std::string>& args) {
     for (std::size_t i = 0; i < args.size(); ++i) {
         const bool value = i + 1 < args.size();
         if (args[i] == "--general") a.general = true;
+        else if (args[i] == "--adaptive") a.adaptive = true;
         else if (args[i] == "--gpu" && value) a.gpu.gpu = static_cast<int>(nonNegativeNumber(args[++i], "--gpu"));
         else if (args[i] == "--shader-dir" && value) a.gpu.shaderDir = args[++i];
         else if (args[i] == "-k" && value) a.render.maxDepth = positiveInt(args[++i], "-k");
         else if (args[i].rfind("-", 0) == 0)
             throw std::runtime_error("unknown option " + args[i] +
-                                     " (usage: vkrt-bench gpu kernels [SCENES|DIRS...] [--general] [--gpu N] [--shader-dir DIR] [-k DEPTH])");
+                                     " (usage: vkrt-bench gpu kernels [SCENES|DIRS...] [--general] [--adaptive] [--gpu N] [--shader-dir DIR] [-k DEPTH])");
         else a.inputs.push_back(args[i]);
     }
     if (a.inputs.empty())
@@ -121,9 +123,12 @@ int runGpuKernelsBench(const std::vector<std::string>& argv) {
             options.camera = scene.defaultCamera;
             std::vector<KernelVariant> variants{KernelVariant::Specialised};
             if (a.general) variants.push_back(KernelVariant::General);
-            for (const KernelVariant variant : variants) {
-                const KernelVariantReport r = compiler.compile(data, options, variant);
-                const std::string stage = variant == KernelVariant::General ? "general" : r.stage;
+            std::vector<std::pair<KernelVariant, bool>> builds;
+            for (const KernelVariant variant : variants) builds.emplace_back(variant, false);
+            if (a.adaptive) builds.emplace_back(KernelVariant::Specialised, true);
+            for (const auto& [variant, adaptive] : builds) {
+                const KernelVariantReport r = compiler.compile(data, options, variant, adaptive);
+                const std::string stage = variant == KernelVariant::General ? "general" : adaptive ? "adaptive" : r.stage;
                 std::printf("%-40s %-8s %6s %8s %6s %8s %9s %6s %9s  %s%s (k=%u)\n", label.c_str(), stage.c_str(),
                             number(r.vgprs).c_str(), number(r.spilledVgprs).c_str(), number(r.sgprs).c_str(),
                             number(r.spilledSgprs).c_str(), number(r.scratchBytes).c_str(), number(r.wavesPerSimd).c_str(),
