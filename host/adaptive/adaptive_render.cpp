@@ -46,6 +46,7 @@ std::string stopReasonText(StopReason reason) {
     case StopReason::TimeSpent: return "time budget spent";
     case StopReason::MaxRpp: return "--max-rpp reached";
     case StopReason::NoNoise: return "no pixel has noise left";
+    case StopReason::NotFinite: return "the error estimate is not finite (radiance past float's range)";
     }
     return "unknown";
 }
@@ -86,6 +87,10 @@ AdaptiveResult renderAdaptive(int width, int height, glm::ivec2 rows, const Adap
 
         const double targetMse =
             options.targetError ? std::pow(*options.targetError * r.estimate.meanLuminance, 2.0) : 0.0;
+        if (!std::isfinite(r.estimate.rmse) || !std::isfinite(r.estimate.meanLuminance)) {
+            result.stop = StopReason::NotFinite;  // sums past float's range: no estimate can be trusted
+            break;
+        }
         if (options.targetError && r.estimate.rmse * r.estimate.rmse <= targetMse) {
             result.stop = StopReason::TargetMet;
             break;
@@ -99,24 +104,35 @@ AdaptiveResult renderAdaptive(int width, int height, glm::ivec2 rows, const Adap
             break;
         }
         const std::vector<double> sigma = noiseScales(acc, result.variance);
-        double scale = options.targetError ? scaleForTarget(acc, sigma, targetMse) : std::numeric_limits<double>::infinity();
-        // Without a target a round adds as many samples as the image has (the time decides when
-        // to stop); with a time budget no more than the remaining time affords at the rate so far.
-        double budget = options.targetError ? std::numeric_limits<double>::infinity() : static_cast<double>(samples);
-        if (options.seconds) budget = std::min(budget, static_cast<double>(samples) / seconds * (*options.seconds - seconds));
-        if (std::isfinite(budget)) scale = std::min(scale, scaleForBudget(acc, sigma, options.maxRpp, budget));
+        const double targetScale =
+            options.targetError ? scaleForTarget(acc, sigma, targetMse) : std::numeric_limits<double>::infinity();
+        // With a time budget: the remaining time at the samples per second so far, spent on the
+        // final allocation (counts proportional to sigma, not capped per round) whose scale this is;
+        // the round then moves each pixel toward it, at most doubling it. So the samples follow
+        // the noise from the first round on, and no round plans more than the time left.
+        double budget = std::numeric_limits<double>::infinity(), timeScale = std::numeric_limits<double>::infinity();
+        if (options.seconds) {
+            budget = static_cast<double>(samples) / seconds * (*options.seconds - seconds);
+            if (budget < 2.0) {  // not even one pixel's pair
+                result.stop = StopReason::TimeSpent;
+                break;
+            }
+            timeScale = scaleForBudget(acc, sigma, options.maxRpp, budget, /*perRoundCap=*/false);
+        }
+        double scale = std::min(targetScale, timeScale);
         next = plannedCounts(acc, sigma, scale, options.maxRpp);
         // A target not met by a plan that adds nothing (the smoothed variances promise the target,
-        // the pixels' own halves do not yet): raise the scale until the plan adds samples.
-        for (int tries = 0; options.targetError && addedSamples(acc, next) == 0 && std::isfinite(scale) && tries < 64; ++tries) {
-            scale *= 2.0;
+        // the pixels' own halves do not yet): raise the scale until the plan adds samples, but
+        // not past what the time allows.
+        for (int tries = 0; options.targetError && addedSamples(acc, next) == 0 && scale < timeScale && tries < 64; ++tries) {
+            scale = std::min(scale * 2.0, timeScale);
             next = plannedCounts(acc, sigma, scale, options.maxRpp);
         }
         if (addedSamples(acc, next) == 0) {
             const bool capped = r.maxCount >= options.maxRpp;
-            result.stop = options.seconds && !options.targetError && budget < 1.0 ? StopReason::TimeSpent
-                          : capped                                                 ? StopReason::MaxRpp
-                                                                                   : StopReason::NoNoise;
+            result.stop = std::isfinite(timeScale) && timeScale <= targetScale ? StopReason::TimeSpent
+                          : capped                                            ? StopReason::MaxRpp
+                                                                              : StopReason::NoNoise;
             break;
         }
     }

@@ -32,7 +32,7 @@ struct AdaptiveOptions {
 // bounds, a bound beyond 2^20.
 void checkAdaptiveOptions(const AdaptiveOptions& options);
 
-enum class StopReason { TargetMet, TimeSpent, MaxRpp, NoNoise };
+enum class StopReason { TargetMet, TimeSpent, MaxRpp, NoNoise, NotFinite };
 std::string stopReasonText(StopReason reason);  // "target met", "time budget spent", ...
 
 struct AdaptiveRound {

@@ -13,13 +13,13 @@ std::vector<double> noiseScales(const PixelAccumulation& acc, const std::vector<
 }
 
 std::vector<std::uint32_t> plannedCounts(const PixelAccumulation& acc, const std::vector<double>& sigma, double scale,
-                                         std::uint32_t maxRpp) {
+                                         std::uint32_t maxRpp, bool perRoundCap) {
     std::vector<std::uint32_t> next = acc.count;
     for (int y = acc.rows.x; y < acc.rows.y; ++y)
         for (int x = 0; x < acc.width; ++x) {
             const std::size_t p = acc.index(x, y);
             const std::uint32_t have = acc.count[p];
-            const std::uint32_t cap = std::min<std::uint32_t>(maxRpp, 2u * have);
+            const std::uint32_t cap = perRoundCap ? std::min<std::uint32_t>(maxRpp, 2u * have) : maxRpp;
             if (sigma[p] <= 0.0 || cap <= have) continue;
             const double want = scale * sigma[p];  // inf when scale is; never NaN as sigma > 0
             if (!(want > have)) continue;
@@ -44,8 +44,11 @@ double scaleForTarget(const PixelAccumulation& acc, const std::vector<double>& s
     return sum / (static_cast<double>(pixels) * targetMse);
 }
 
-double scaleForBudget(const PixelAccumulation& acc, const std::vector<double>& sigma, std::uint32_t maxRpp, double budget) {
-    const auto adds = [&](double scale) { return static_cast<double>(addedSamples(acc, plannedCounts(acc, sigma, scale, maxRpp))); };
+double scaleForBudget(const PixelAccumulation& acc, const std::vector<double>& sigma, std::uint32_t maxRpp, double budget,
+                      bool perRoundCap) {
+    const auto adds = [&](double scale) {
+        return static_cast<double>(addedSamples(acc, plannedCounts(acc, sigma, scale, maxRpp, perRoundCap)));
+    };
     double lo = 0.0, hi = 1.0;
     // Grow hi until its plan exceeds the budget or is the largest there is (every pixel capped).
     const double most = adds(std::numeric_limits<double>::infinity());

@@ -17,9 +17,10 @@ namespace vkrt::adaptive {
 std::vector<double> noiseScales(const PixelAccumulation& acc, const std::vector<glm::dvec3>& variance);
 
 // Each rendered pixel's count for the next round: scale * sigma_p rounded up to even, kept within
-// [its count, min(2 count, maxRpp)]. A pixel without noise (sigma 0) stays where it is.
+// [its count, min(2 count, maxRpp)] (without perRoundCap: [its count, maxRpp], the final counts
+// that scale means). A pixel without noise (sigma 0) stays where it is.
 std::vector<std::uint32_t> plannedCounts(const PixelAccumulation& acc, const std::vector<double>& sigma, double scale,
-                                         std::uint32_t maxRpp);
+                                         std::uint32_t maxRpp, bool perRoundCap = true);
 
 // The samples a plan adds to what the pixels have.
 std::uint64_t addedSamples(const PixelAccumulation& acc, const std::vector<std::uint32_t>& planned);
@@ -27,7 +28,9 @@ std::uint64_t addedSamples(const PixelAccumulation& acc, const std::vector<std::
 // sum(sigma) / (P targetMse) over the rendered pixels: the scale whose counts meet targetMse.
 double scaleForTarget(const PixelAccumulation& acc, const std::vector<double>& sigma, double targetMse);
 
-// The largest scale (to 0.1%) whose plan adds at most `budget` samples; 0 when none does.
-double scaleForBudget(const PixelAccumulation& acc, const std::vector<double>& sigma, std::uint32_t maxRpp, double budget);
+// The largest scale (to 0.1%) whose plan (plannedCounts with perRoundCap) adds at most `budget`
+// samples; 0 when none does, infinity when every plan fits.
+double scaleForBudget(const PixelAccumulation& acc, const std::vector<double>& sigma, std::uint32_t maxRpp, double budget,
+                      bool perRoundCap = true);
 
 }  // namespace vkrt::adaptive

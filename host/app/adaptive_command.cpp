@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -39,8 +40,18 @@ std::string errorText(const adaptive::ImageErrorEstimate& e) {
 int runAdaptiveRender(CommandLine& cl) {
     const auto start = std::chrono::steady_clock::now();
     checkOutputBeforeRendering(cl.outputPath, cl.scenePath);
-    for (const std::string& map : {cl.errorMapPath, cl.sampleMapPath})
-        if (!map.empty()) checkOutputBeforeRendering(map, cl.scenePath);
+    // Each file once: a map written over the image (or the other map) would replace it.
+    const auto same = [](const std::string& a, const std::string& b) {
+        return std::filesystem::absolute(a).lexically_normal() == std::filesystem::absolute(b).lexically_normal();
+    };
+    for (const std::string& map : {cl.errorMapPath, cl.sampleMapPath}) {
+        if (map.empty()) continue;
+        checkOutputBeforeRendering(map, cl.scenePath);
+        if (same(map, cl.outputPath))
+            throw std::invalid_argument(map + ": is also the image (-o); give the map another name");
+    }
+    if (!cl.errorMapPath.empty() && same(cl.errorMapPath, cl.sampleMapPath))
+        throw std::invalid_argument(cl.errorMapPath + ": given as both --error-map and --sample-map; give each its own name");
     checkImageFitsInMemory(cl.render.width, cl.render.height);
     const Scene scene = loadWithWarnings(cl);
     // The device as for a uniform render (render_steps.h openGpu): --device auto takes the CPU

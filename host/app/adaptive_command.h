@@ -12,7 +12,7 @@ namespace vkrt {
 int runAdaptiveRender(CommandLine& cl);
 
 // An adaptive render of a prepared scene (watch mode): on the GPU when `gpu` and `gpuData` are
-// given, else on the CPU reference from `accel`. After every round but the last,
+// given, else on the CPU reference from `accel`. After every round (the last included),
 // options.onCheckpoint (if set) gets the image so far with its mean rpp. The result's `device`
 // also gives the estimated error, why the rounds stopped, and the counts.
 DeviceRender renderAdaptivePrepared(GpuRenderer* gpu, const GpuSceneData* gpuData, const Scene& scene, const SceneAccel* accel,

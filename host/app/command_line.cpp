@@ -346,7 +346,7 @@ void applyAdaptiveOptions(const CLI::App& app, CommandLine& cl, std::optional<do
     try {
         adaptive::checkAdaptiveOptions(cl.adaptive);
     } catch (const std::invalid_argument& e) {
-        throw CLI::ValidationError(flag, e.what());
+        throw CLI::ValidationError(e.what());  // the message names the option and its value
     }
     if (app.count("--rpp") > 0)
         throw CLI::ValidationError("--rpp", std::string("sets one count for every pixel; ") + flag +
@@ -359,6 +359,10 @@ void applyAdaptiveOptions(const CLI::App& app, CommandLine& cl, std::optional<do
                                                     ": adaptive sampling needs sobol2 (its default) or random, whose first N "
                                                     "samples of a pixel are an N-rpp render's and whose even and odd samples "
                                                     "are independent (docs/SAMPLING.md §7)");
+    if (cl.watch)
+        for (const char* map : {"--error-map", "--sample-map"})
+            if (app.count(map) > 0)
+                throw CLI::ValidationError(map, "--watch writes the image only; write the maps with a render without --watch");
     if (cl.parts > 0)
         throw CLI::ValidationError("--part", std::string("adaptive sampling (") + flag +
                                                  ") decides each pixel's samples from the whole image; render it in one process");

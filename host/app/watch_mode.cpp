@@ -225,9 +225,16 @@ private:
     DeviceRender render(const RenderOptions& options) {
         if (cl_.adaptiveSampling) {
             // Adaptive sampling's rounds, shown as --progressive's passes are (adaptive_command.h).
-            if (!loaded_->gpu && !loaded_->cpu) loaded_->cpu.emplace(prepareCpuScene(loaded_->scene));
-            return renderAdaptivePrepared(loaded_->gpu ? gpu_.get() : nullptr, loaded_->gpu ? &*loaded_->gpu : nullptr,
-                                          loaded_->scene, loaded_->cpu ? &*loaded_->cpu : nullptr, options, cl_.adaptive);
+            if (loaded_->gpu) {
+                try {
+                    return renderAdaptivePrepared(gpu_.get(), &*loaded_->gpu, loaded_->scene, nullptr, options, cl_.adaptive);
+                } catch (const GpuKernelError& e) {
+                    if (cl_.device != DeviceChoice::Auto) throw;
+                    std::cerr << "note: " << e.what() << "\nnote: rendering on the CPU reference instead\n";
+                }
+            }
+            if (!loaded_->cpu) loaded_->cpu.emplace(prepareCpuScene(loaded_->scene));
+            return renderAdaptivePrepared(nullptr, nullptr, loaded_->scene, &*loaded_->cpu, options, cl_.adaptive);
         }
         if (loaded_->gpu) {
             try {

@@ -94,6 +94,21 @@ void validateSweepOptions(const SweepOptions& o) {
         if (std::find(o.estimators.begin(), o.estimators.begin() + i, o.estimators[i]) != o.estimators.begin() + i)
             fail("--estimators lists " + estimatorName(o.estimators[i]) + " twice");
     if (o.devices.empty()) fail("no device to sweep");
+    {
+        // The bounds whether or not --targets uses them, as the render command checks its own.
+        adaptive::AdaptiveOptions a = o.adaptive;
+        a.targetError = 0.01;
+        a.seconds.reset();
+        try {
+            adaptive::checkAdaptiveOptions(a);
+        } catch (const std::invalid_argument& e) {
+            fail(e.what());
+        }
+    }
+    for (std::size_t i = 0; i < o.targets.size(); ++i)
+        if (std::find(o.targets.begin(), o.targets.begin() + static_cast<std::ptrdiff_t>(i), o.targets[i]) !=
+            o.targets.begin() + static_cast<std::ptrdiff_t>(i))
+            fail("--targets lists " + std::to_string(o.targets[i]) + " twice");
     for (double t : o.targets) {
         adaptive::AdaptiveOptions a = o.adaptive;
         a.targetError = t;

@@ -48,6 +48,7 @@ def main():
         ([vkrt, scene, "--target-error", "-1"], 2, "--target-error -1: must be a relative RMSE of at least 0.0001"),
         ([vkrt, scene, "--time", "0"], 2, "--time 0: must be a number of seconds above 0"),
         ([vkrt, scene, "--time", "1", "--sampler", "sobol"], 2, "adaptive sampling needs sobol2"),
+        ([vkrt, scene, "--time", "1", "-o", out("same.png"), "--sample-map", out("same.png")], 1, "is also the image (-o)"),
     ]
     for argv, code, text in refusals:
         err = run(argv, code)

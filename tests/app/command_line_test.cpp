@@ -335,6 +335,9 @@ TEST(AdaptiveCommandLine, ConflictsAndBadValuesAreRefused) {
     refusedWith({"s.xml", "--target-error", "0.01", "--sampler", "jittered"}, "adaptive sampling needs sobol2");
     refusedWith({"s.xml", "--target-error", "0.01", "--part", "1/2", "-o", "p.exr"}, "render it in one process");
     refusedWith({"s.xml", "--max-rpp", "64"}, "belongs to adaptive sampling");
+    refusedWith({"s.xml", "--time", "0"}, "--time 0: must be a number of seconds above 0");
+    refusedWith({"s.xml", "--watch", "--time", "5", "--sample-map", "n.png"}, "--watch writes the image only");
+    EXPECT_TRUE(parseOk({"s.xml", "--watch", "--target-error", "0.01"}).adaptiveSampling);  // --watch shows the rounds
 }
 
 }  // namespace
