@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "sampling.h"
 
 namespace vkrt {
 
@@ -131,6 +135,11 @@ EmitterTable buildEmitterTable(const Scene& scene) {
     EmitterTable table;
     std::vector<double> powers;
     const std::uint32_t firstOrdinal = areaLightCount(scene);
+    // Every area light and emitter draws its samples in a dimension of its own (sampling.h dimLight).
+    if (firstOrdinal + scene.emitters.size() > sampling::MAX_LIGHT_ORDINALS)
+        throw std::invalid_argument(scene.path + ": " + std::to_string(firstOrdinal) + " area lights and " +
+                                    std::to_string(scene.emitters.size()) + " shape emitters; vkrt samples at most " +
+                                    std::to_string(sampling::MAX_LIGHT_ORDINALS) + " together (each has a sample dimension of its own)");
     for (std::size_t e = 0; e < scene.emitters.size(); ++e) {
         const Emitter& emitter = scene.emitters[e];
         const Shape& shape = shapeOf(scene, emitter);

@@ -84,6 +84,9 @@ VKRT_FN uint dimEnvironment(uint depth) { return ((depth + 1u) << 16u) | 0xfffdu
 // of the shape emitter each light sample there goes to (its x only; docs/RENDERING.md §2).
 VKRT_FN uint dimRoulette(uint depth) { return ((depth + 1u) << 16u) | 0xfffcu; }
 VKRT_FN uint dimEmitterChoice(uint depth) { return ((depth + 1u) << 16u) | 0xfffbu; }
+// Light ordinals 0 .. MAX_LIGHT_ORDINALS - 1 (area lights, then shape emitters) have their own
+// dimensions; more would alias the fixed ones above (emitter_table.cpp refuses such a scene).
+VKRT_CONST uint MAX_LIGHT_ORDINALS = 0xfffau;
 
 // A pseudo-random permutation of [0, n): a bijection on the enclosing power of two, built from
 // steps that are each invertible modulo 2^k (xor with a key, multiply by an odd constant,

@@ -8,12 +8,15 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <stdexcept>
+#include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include "emitter_sampling.h"
 #include "emitter_table.h"
+#include "sampling.h"
 #include "scene.h"
 
 namespace vkrt::test {
@@ -192,6 +195,27 @@ TEST(EmitterSampling, AnEllipsoidsSamplesCarryTheDensityItsHitsAreWeighedWith) {
         }
         const double p = double(hit) / m, omega = 4.0 * kPi * p, omegaSe = 4.0 * kPi * std::sqrt(p * (1.0 - p) / m);
         EXPECT_NEAR(mean, omega, 4.0 * std::hypot(se, omegaSe)) << x.x << ", " << x.y << ", " << x.z;
+    }
+}
+
+// Each area light and shape emitter has a sample dimension of its own (sampling.h dimLight); more
+// than MAX_LIGHT_ORDINALS of them would share the fixed dimensions (roulette, emitter choice) and
+// correlate samples silently: such a scene is refused, naming both counts.
+TEST(EmitterSampling, MoreLightsThanSampleDimensionsAreRefused) {
+    Scene scene;
+    scene.path = "many_lights.xml";
+    Light area;
+    area.type = LightType::Area;
+    area.normal = glm::vec3(0.0f, -1.0f, 0.0f);
+    scene.lights.assign(sampling::MAX_LIGHT_ORDINALS, area);
+    EXPECT_NO_THROW(buildEmitterTable(scene));
+    scene.lights.push_back(area);
+    try {
+        buildEmitterTable(scene);
+        ADD_FAILURE() << "accepted " << scene.lights.size() << " area lights";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("many_lights.xml: 65531 area lights and 0 shape emitters"), std::string::npos)
+            << e.what();
     }
 }
 
