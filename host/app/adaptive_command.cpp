@@ -35,6 +35,47 @@ std::string errorText(const adaptive::ImageErrorEstimate& e) {
     return text;
 }
 
+// The rounds on one device: the GPU when `gpu` and `gpuData` are given, else the CPU reference
+// from `accel`. Both commands (a render, watch mode) run them through here.
+struct DeviceRounds {
+    adaptive::AdaptiveResult result;
+    std::string device;                 // for the summary: the device, and on the GPU the kernel
+    std::uint64_t nonFiniteSamples = 0;
+    bool onGpu = false;
+};
+
+DeviceRounds runRounds(GpuRenderer* gpu, const GpuSceneData* gpuData, const Scene& scene, const SceneAccel* accel,
+                       const RenderOptions& options, const adaptive::AdaptiveOptions& adaptiveOptions,
+                       const adaptive::RoundDone& onRound) {
+    DeviceRounds out;
+    out.onGpu = gpu && gpuData;
+    std::optional<CpuSampleRanges> cpu;
+    if (!out.onGpu) cpu.emplace(scene, *accel, options);
+    GpuRenderStats gpuStats;
+    out.result = adaptive::renderAdaptive(
+        options.width, options.height, rowsOf(options), adaptiveOptions,
+        [&](const std::vector<std::uint32_t>& next, adaptive::PixelAccumulation& acc) {
+            if (cpu) return cpu->add(next, acc);
+            gpu->addSampleRanges(*gpuData, options, next, acc, &gpuStats);
+            out.nonFiniteSamples += gpuStats.nonFiniteSamples;
+        },
+        onRound);
+    if (cpu) {
+        out.nonFiniteSamples = cpu->stats().nonFiniteSamples;
+        out.device = "cpu (" + std::to_string(cpu->stats().threads) + " threads)";
+    } else {
+        out.device = gpu->deviceName() + " [kernel: " + gpuStats.features + "; samples/dispatch=" +
+                     std::to_string(gpuStats.samplesPerDispatch) + "]";
+    }
+    return out;
+}
+
+// The rendered rows' pixels (the mean rpp's denominator).
+double pixelsOf(const RenderOptions& options) {
+    const glm::ivec2 rows = rowsOf(options);
+    return static_cast<double>(options.width) * (rows.y - rows.x);
+}
+
 }  // namespace
 
 int runAdaptiveRender(CommandLine& cl) {
@@ -59,54 +100,44 @@ int runAdaptiveRender(CommandLine& cl) {
     std::unique_ptr<GpuRenderer> gpu = openGpu(cl);
     std::optional<GpuSceneData> gpuData;
     std::optional<SceneAccel> accel;
-    std::optional<CpuSampleRanges> cpu;
-    const auto onCpu = [&] {
-        gpu.reset();
-        const ExitAtOnceOnInterrupt scope;
-        accel.emplace(prepareCpuScene(scene));
-        cpu.emplace(scene, *accel, cl.render);
-    };
     if (gpu) {
         const ExitAtOnceOnInterrupt scope;
         gpuData.emplace(GpuRenderer::prepare(scene));
-    } else {
-        onCpu();
     }
-    std::uint64_t gpuNonFinite = 0;
-    GpuRenderStats gpuStats;
-    const adaptive::AddSamples add = [&](const std::vector<std::uint32_t>& next, adaptive::PixelAccumulation& acc) {
-        if (!gpu) return cpu->add(next, acc);
-        gpu->addSampleRanges(*gpuData, cl.render, next, acc, &gpuStats);
-        gpuNonFinite += gpuStats.nonFiniteSamples;
-    };
-    const bool quiet = cl.render.quiet;
+    const double pixels = pixelsOf(cl.render);
     const adaptive::RoundDone onRound = [&](const adaptive::AdaptiveRound& r, const adaptive::PixelAccumulation& acc) {
-            if (cl.render.checkpoints >= 1) {
-                Image soFar = meanImage(acc);
-                clampOverflowedPixels(soFar);
-                writeImage(withExposure(std::move(soFar), cl.exposure), cl.outputPath);
-            }
-            if (quiet) return;
-            const double pixels = static_cast<double>(cl.render.width) * (rowsOf(cl.render).y - rowsOf(cl.render).x);
-            char target[48] = "";
-            if (cl.adaptive.targetError) std::snprintf(target, sizeof target, " (target %g)", *cl.adaptive.targetError);
-            std::fprintf(stderr, "round %d: estimated error %s%s, %u-%u rpp (mean %.1f), %.3fs%s%s\n", r.number,
-                         errorText(r.estimate).c_str(), target,
-                         r.minCount, r.maxCount, r.samples / pixels, r.seconds, cl.render.checkpoints >= 1 ? " -> " : "",
-                         cl.render.checkpoints >= 1 ? cl.outputPath.c_str() : "");
+        if (cl.render.checkpoints >= 1) {
+            Image soFar = meanImage(acc);
+            clampOverflowedPixels(soFar);
+            writeImage(withExposure(std::move(soFar), cl.exposure), cl.outputPath);
+        }
+        if (cl.render.quiet) return;
+        char target[48] = "";
+        if (cl.adaptive.targetError) std::snprintf(target, sizeof target, " (target %g)", *cl.adaptive.targetError);
+        std::fprintf(stderr, "round %d: estimated error %s%s, %u-%u rpp (mean %.1f), %.3fs%s%s\n", r.number,
+                     errorText(r.estimate).c_str(), target, r.minCount, r.maxCount, r.samples / pixels, r.seconds,
+                     cl.render.checkpoints >= 1 ? " -> " : "", cl.render.checkpoints >= 1 ? cl.outputPath.c_str() : "");
     };
-    const adaptive::AdaptiveResult result = [&] {
+    const auto onCpu = [&] {
+        {
+            const ExitAtOnceOnInterrupt scope;  // the tree of a large mesh takes seconds
+            accel.emplace(prepareCpuScene(scene));
+        }
+        return runRounds(nullptr, nullptr, scene, &*accel, cl.render, cl.adaptive, onRound);
+    };
+    const DeviceRounds rounds = [&] {
+        if (!gpu) return onCpu();
         try {
-            return adaptive::renderAdaptive(cl.render.width, cl.render.height, rowsOf(cl.render), cl.adaptive, add, onRound);
+            return runRounds(gpu.get(), &*gpuData, scene, nullptr, cl.render, cl.adaptive, onRound);
         } catch (const GpuKernelError& e) {
             // The kernel refused this scene (lavapipe's loop limiter): under --device auto the CPU
             // reference computes the same image from the start.
-            if (!gpu || cl.device != DeviceChoice::Auto) throw;
+            if (cl.device != DeviceChoice::Auto) throw;
             std::cerr << "note: " << e.what() << "\nnote: rendering on the CPU reference instead\n";
-            onCpu();
-            return adaptive::renderAdaptive(cl.render.width, cl.render.height, rowsOf(cl.render), cl.adaptive, add, onRound);
+            return onCpu();
         }
     }();
+    const adaptive::AdaptiveResult& result = rounds.result;
 
     Image image = meanImage(result.acc);
     const std::size_t overflowed = clampOverflowedPixels(image);
@@ -125,23 +156,19 @@ int runAdaptiveRender(CommandLine& cl) {
             writeImage(sampleCountHeatMap(result.acc.count, cl.render.width, cl.render.height), cl.sampleMapPath);
         }
     }
-    if (!quiet) {
-        const std::uint64_t nonFinite = gpu ? gpuNonFinite : cpu->stats().nonFiniteSamples;
-        if (nonFinite > 0) std::cerr << "warning: " << nonFinite << " samples were NaN/Inf and were replaced by black\n";
-        if (gpu)
+    if (!cl.render.quiet) {
+        if (rounds.nonFiniteSamples > 0)
+            std::cerr << "warning: " << rounds.nonFiniteSamples << " samples were NaN/Inf and were replaced by black\n";
+        if (rounds.onGpu)
             if (auto log = gpu->validationLog(); log && log->count() > 0)
                 std::cerr << "warning: " << log->count() << " Vulkan validation message(s):\n" << log->joined();
-        const std::string device = gpu ? gpu->deviceName() + " [kernel: " + gpuStats.features + "; samples/dispatch=" +
-                                             std::to_string(gpuStats.samplesPerDispatch) + "]"
-                                       : "cpu (" + std::to_string(cpu->stats().threads) + " threads)";
         if (overflowed > 0)
             std::cerr << "warning: " << overflowed << " pixel(s) summed their samples past float's range: clamped to 3.4e38\n";
         const adaptive::AdaptiveRound& r = result.last;
-        const double pixels = static_cast<double>(cl.render.width) * (rowsOf(cl.render).y - rowsOf(cl.render).x);
         std::fprintf(stderr,
                      "%s: %dx%d, adaptive %s on %s: estimated error %s (%s) after %d rounds, %u-%u rpp "
                      "(mean %.1f): render %.3fs, total %.3fs -> %s\n",
-                     cl.scenePath.c_str(), cl.render.width, cl.render.height, samplerName(cl.render.sampler).c_str(), device.c_str(),
+                     cl.scenePath.c_str(), cl.render.width, cl.render.height, samplerName(cl.render.sampler).c_str(), rounds.device.c_str(),
                      errorText(r.estimate).c_str(), adaptive::stopReasonText(result.stop).c_str(), r.number, r.minCount, r.maxCount,
                      r.samples / pixels, r.seconds, secondsSince(start), cl.outputPath.c_str());
     }
@@ -150,34 +177,26 @@ int runAdaptiveRender(CommandLine& cl) {
 
 DeviceRender renderAdaptivePrepared(GpuRenderer* gpu, const GpuSceneData* gpuData, const Scene& scene, const SceneAccel* accel,
                                     const RenderOptions& options, const adaptive::AdaptiveOptions& adaptiveOptions) {
-    std::optional<CpuSampleRanges> cpu;
-    if (!gpu || !gpuData) cpu.emplace(scene, *accel, options);
-    GpuRenderStats gpuStats;
-    const glm::ivec2 rows = rowsOf(options);
-    const double pixels = static_cast<double>(options.width) * (rows.y - rows.x);
-    const adaptive::AdaptiveResult result = adaptive::renderAdaptive(
-        options.width, options.height, rows, adaptiveOptions,
-        [&](const std::vector<std::uint32_t>& next, adaptive::PixelAccumulation& acc) {
-            if (cpu) return cpu->add(next, acc);
-            gpu->addSampleRanges(*gpuData, options, next, acc, &gpuStats);
-        },
-        [&](const adaptive::AdaptiveRound& r, const adaptive::PixelAccumulation& acc) {
-            if (!options.onCheckpoint) return;
-            Image soFar = meanImage(acc);
-            clampOverflowedPixels(soFar);
-            options.onCheckpoint->checkpoint(soFar, static_cast<int>(std::lround(r.samples / pixels)));
-        });
+    const double pixels = pixelsOf(options);
+    const DeviceRounds rounds =
+        runRounds(gpu, gpuData, scene, accel, options, adaptiveOptions,
+                  [&](const adaptive::AdaptiveRound& r, const adaptive::PixelAccumulation& acc) {
+                      if (!options.onCheckpoint) return;
+                      Image soFar = meanImage(acc);
+                      clampOverflowedPixels(soFar);
+                      options.onCheckpoint->checkpoint(soFar, static_cast<int>(std::lround(r.samples / pixels)));
+                  });
     DeviceRender out;
-    out.image = meanImage(result.acc);
+    out.image = meanImage(rounds.result.acc);
     clampOverflowedPixels(out.image);
-    const adaptive::AdaptiveRound& r = result.last;
+    const adaptive::AdaptiveRound& r = rounds.result.last;
     char text[200];
     std::snprintf(text, sizeof text, "; adaptive: estimated error %s (%s) after %d rounds, %u-%u rpp (mean %.1f)",
-                  errorText(r.estimate).c_str(), adaptive::stopReasonText(result.stop).c_str(), r.number, r.minCount, r.maxCount,
-                  r.samples / pixels);
-    out.device = (cpu ? "cpu (" + std::to_string(cpu->stats().threads) + " threads)" : gpu->deviceName()) + text;
+                  errorText(r.estimate).c_str(), adaptive::stopReasonText(rounds.result.stop).c_str(), r.number, r.minCount,
+                  r.maxCount, r.samples / pixels);
+    out.device = rounds.device + text;
     out.seconds = r.seconds;
-    out.onGpu = !cpu;
+    out.onGpu = rounds.onGpu;
     return out;
 }
 

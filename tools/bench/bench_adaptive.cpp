@@ -26,6 +26,7 @@
 #include "adaptive_render.h"
 #include "bench_args.h"
 #include "bench_command.h"
+#include "bench_timing.h"
 #include "cpu_renderer.h"
 #include "scene_loader.h"
 
@@ -80,11 +81,6 @@ double trueMse(const Reference& ref, const std::vector<glm::dvec3>& image) {
         squares += glm::dot(d, d);
     }
     return std::max(squares / (3.0 * image.size()) - ref.mse, 0.0);
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
 }
 
 struct UniformPoint {
