@@ -44,4 +44,19 @@ CameraRay cameraRay(uint i, uint j, vec2 subPixel, vec2 lensSample) {
     return r;
 }
 
+// Pixel sample `index` of pixel (x, y): key gets its sequence position and seed, sampleTime its
+// time (motion blur), and the camera ray is returned. The megakernel (render.comp) and the
+// wavefront's GENERATE stage both start a sample here.
+CameraRay cameraSample(uint x, uint y, uint index, inout SampleKey key) {
+    key.index = sampleIndex(samplerKind(), index);
+    key.seed = sampleSeed(samplerKind(), frameSeed(), index);
+    vec2 subPixel = sample2D(samplerKind(), frame.pixelGrid, key.pixel, key.index, DIM_CAMERA, key.seed);
+    vec2 lens = HAS_THIN_LENS ? sample2D(samplerKind(), frame.pixelGrid, key.pixel, key.index, DIM_LENS, key.seed) : vec2(0.5);
+    if (HAS_MOTION) {
+        float u = sample1D(samplerKind(), frame.pixelGrid, key.pixel, key.index, DIM_TIME, key.seed);
+        sampleTime = frameShutterOpen() + (frameShutterClose() - frameShutterOpen()) * u;
+    }
+    return cameraRay(x, y, subPixel, lens);
+}
+
 #endif

@@ -54,8 +54,7 @@ vec3 environmentLighting(Surface s, vec3 N, vec3 kd, uint depth, SampleKey key) 
         if (cosN <= 0.0 || dot(d.xyz, s.geomNormal) <= 0.0) continue;
         float w = weighs ? misWeight(float(k) * d.w, cosinePdf(N, d.xyz), estimator == ESTIMATOR_MIS_POWER) : 1.0;
         if (!(w > 0.0)) continue;
-        Hit ignored;
-        if (traceScene(offsetTowards(s, d.xyz), d.xyz, FLT_MAX, true, ignored)) continue;
+        if (!shadowRayClear(offsetTowards(s, d.xyz), d.xyz, FLT_MAX)) continue;
         sum += environmentRadiance(d.xyz) * (w * cosN * EMITTER_INV_PI / d.w);
     }
     if (j < k) markLoopCutOff();

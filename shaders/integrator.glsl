@@ -26,8 +26,30 @@ struct PathQueue {
     bool hasExtra;
 };
 
-PathRay g_pathStack[PATH_STACK_ENTRIES];
+PathRay g_pathStack[PATH_STACK_ENTRIES];  // the megakernel's; the wavefront keeps each path's in memory
 uint g_pathTop = 0u;
+
+// Stack entry e: the megakernel's array, or the wavefront path's entries after its shadow rays
+// (wavefront_state.glsl), which outlive the stage.
+void storeStackEntry(uint e, PathRay r) {
+    if (!WAVEFRONT) {
+        g_pathStack[e] = r;
+        return;
+    }
+    if (WAVEFRONT_STAGE == WAVEFRONT_SHADE_RECORD) return;  // SHADE_RESOLVE pushes the same rays
+    uint field = WF_SHADOWS + 2u * wfShadowsPerPath() + 3u * e;
+    wfStoreFloats(field, vec4(r.origin, uintBitsToFloat(r.depth)));
+    wfStoreFloats(field + 1u, vec4(r.dir, r.bouncePdf));
+    wfStoreFloats(field + 2u, vec4(r.weight, 0.0));
+}
+
+PathRay loadStackEntry(uint e) {
+    if (!WAVEFRONT) return g_pathStack[e];
+    uint field = WF_SHADOWS + 2u * wfShadowsPerPath() + 3u * e;
+    vec4 a = wfLoadFloats(field);
+    vec4 b = wfLoadFloats(field + 1u);
+    return PathRay(a.xyz, b.xyz, wfLoadFloats(field + 2u).xyz, floatBitsToUint(a.w), b.w);
+}
 
 // Records a child ray; a hit emits at most two between flushes (emitReflection flushes after each
 // gloss sample).
@@ -52,7 +74,7 @@ void emitRay(inout PathQueue q, vec3 origin, vec3 dir, vec3 weight, uint depth, 
 void flushQueue(inout PathQueue q) {
     if (!HAS_PATH_STACK || !q.hasExtra) return;
     if (g_pathTop < PATH_STACK_SIZE) {
-        g_pathStack[g_pathTop++] = q.extra;
+        storeStackEntry(g_pathTop++, q.extra);
     } else {
         g_rayStackOverflow = true;  // reported once by render.comp (see traverse.glsl)
     }
@@ -175,11 +197,68 @@ vec3 emittedRadiance(PathRay ray, Surface s, Material m) {
     return L * misWeight(ray.bouncePdf, lightPdf, estimator == ESTIMATOR_MIS_POWER);
 }
 
+// One ray of a camera sample's tree, given its closest hit (`found` false: it left the scene):
+// the light it brings adds to `radiance`, its children go to q. The megakernel's path loop below
+// and the wavefront's shading stages (wavefront.glsl) share it.
+void shadeRay(PathRay ray, bool found, Hit hit, SampleKey key, inout vec3 radiance, inout PathQueue q) {
+    if (!found) {
+        // The general kernel has HAS_ENVIRONMENT for every scene: a face size of 0 says none.
+        bool mapped = HAS_ENVIRONMENT && frameEnvironmentFaceSize() > 0u;
+        radiance += ray.weight * (mapped ? escapedRadiance(ray.dir, ray.bouncePdf) : frame.background.rgb);
+    } else {
+        Surface s = surfaceAt(ray.origin, ray.dir, hit);
+        Material m = loadMaterial(s.material);
+        uint type = materialType(m);
+        if (HAS_EMITTERS && type == SHADER_EMITTER) {
+            radiance += ray.weight * emittedRadiance(ray, s, m);
+        } else if (HAS_DIELECTRIC && type == SHADER_DIELECTRIC) {
+            emitDielectric(q, ray, s, m, hit.t, key);
+        } else {
+            // Two-sided shading: turn the normals towards the viewer.
+            vec3 V = -ray.dir;
+            if (dot(s.geomNormal, V) < 0.0) {
+                s.geomNormal = -s.geomNormal;
+                s.shadeNormal = -s.shadeNormal;
+            }
+            vec3 N = s.shadeNormal;
+            vec3 kd = m.diffuse.rgb;
+            vec3 ks = m.specular.rgb;
+            if (HAS_TEXTURES) {
+                uint diffuseTexture = materialDiffuseTexture(m);
+                uint specularTexture = materialSpecularTexture(m);
+                if (diffuseTexture != TEXTURE_NONE) kd *= sampleTexture(diffuseTexture, s.uv);
+                if (specularTexture != TEXTURE_NONE) ks *= sampleTexture(specularTexture, s.uv);
+            }
+            // A Diffuse surface reflects nothing at the maximum depth: every light it reflects,
+            // its direct light included, is a bounce (RENDERING.md §5).
+            bool diffuseSurface = HAS_DIFFUSE && type == SHADER_DIFFUSE;
+            bool bounces = diffuseSurface && ray.depth < MAX_DEPTH && ray.depth < frameMaxDepth();
+            vec3 local = vec3(0.0);
+            if (type != SHADER_MIRROR && (!diffuseSurface || bounces)) {
+                local = directLighting(s, N, V, type, kd, ks, materialPhongExponent(m), ray.depth, key);
+                if (HAS_ENVIRONMENT && bounces && frameEnvironmentFaceSize() > 0u)
+                    local += environmentLighting(s, N, kd, ray.depth, key);
+            }
+            // The shares of local shading and of reflection: mirror 0 and 1, glaze 1 and m,
+            // mirrored Blinn-Phong 1 - m and m, the others 1 and none (RENDERING.md §5). One
+            // emitReflection call for the three reflecting shaders, not one each: lavapipe runs
+            // every inlined copy of its gloss loop on every path step, whatever the shader.
+            float mirror = materialMirrorCoef(m);
+            bool reflects = HAS_REFLECTION && (type == SHADER_MIRROR || type == SHADER_GLAZE ||
+                                               type == SHADER_BLINN_PHONG_MIRRORED);
+            float localShare = !reflects || type == SHADER_GLAZE ? 1.0 : (type == SHADER_MIRROR ? 0.0 : 1.0 - mirror);
+            radiance += ray.weight * localShare * local;
+            if (reflects)
+                emitReflection(q, ray, s, N, materialRoughness(m), ray.weight * (type == SHADER_MIRROR ? 1.0 : mirror), key);
+            if (bounces) emitBounce(q, ray, s, N, kd, key);
+        }
+    }
+}
+
 vec3 cameraSampleRadiance(vec3 origin, vec3 dir, SampleKey key) {
     vec3 radiance = vec3(0.0);
     g_pathTop = 0u;
     PathRay ray = PathRay(origin, dir, vec3(1.0), 0u, 0.0);
-    vec3 background = frame.background.rgb;
     bool finished = false;  // set by the loop's own exit (budget.glsl)
     while (true) {
         if (!chargeLoop()) break;
@@ -187,64 +266,14 @@ vec3 cameraSampleRadiance(vec3 origin, vec3 dir, SampleKey key) {
         q.hasNext = false;
         q.hasExtra = false;
         Hit hit;
-        if (!traceScene(ray.origin, ray.dir, FLT_MAX, false, hit)) {
-            // The general kernel has HAS_ENVIRONMENT for every scene: a face size of 0 says none.
-            bool mapped = HAS_ENVIRONMENT && frameEnvironmentFaceSize() > 0u;
-            radiance += ray.weight * (mapped ? escapedRadiance(ray.dir, ray.bouncePdf) : background);
-        } else {
-            Surface s = surfaceAt(ray.origin, ray.dir, hit);
-            Material m = loadMaterial(s.material);
-            uint type = materialType(m);
-            if (HAS_EMITTERS && type == SHADER_EMITTER) {
-                radiance += ray.weight * emittedRadiance(ray, s, m);
-            } else if (HAS_DIELECTRIC && type == SHADER_DIELECTRIC) {
-                emitDielectric(q, ray, s, m, hit.t, key);
-            } else {
-                // Two-sided shading: turn the normals towards the viewer.
-                vec3 V = -ray.dir;
-                if (dot(s.geomNormal, V) < 0.0) {
-                    s.geomNormal = -s.geomNormal;
-                    s.shadeNormal = -s.shadeNormal;
-                }
-                vec3 N = s.shadeNormal;
-                vec3 kd = m.diffuse.rgb;
-                vec3 ks = m.specular.rgb;
-                if (HAS_TEXTURES) {
-                    uint diffuseTexture = materialDiffuseTexture(m);
-                    uint specularTexture = materialSpecularTexture(m);
-                    if (diffuseTexture != TEXTURE_NONE) kd *= sampleTexture(diffuseTexture, s.uv);
-                    if (specularTexture != TEXTURE_NONE) ks *= sampleTexture(specularTexture, s.uv);
-                }
-                // A Diffuse surface reflects nothing at the maximum depth: every light it reflects,
-                // its direct light included, is a bounce (RENDERING.md §5).
-                bool diffuseSurface = HAS_DIFFUSE && type == SHADER_DIFFUSE;
-                bool bounces = diffuseSurface && ray.depth < MAX_DEPTH && ray.depth < frameMaxDepth();
-                vec3 local = vec3(0.0);
-                if (type != SHADER_MIRROR && (!diffuseSurface || bounces)) {
-                    local = directLighting(s, N, V, type, kd, ks, materialPhongExponent(m), ray.depth, key);
-                    if (HAS_ENVIRONMENT && bounces && frameEnvironmentFaceSize() > 0u)
-                        local += environmentLighting(s, N, kd, ray.depth, key);
-                }
-                // The shares of local shading and of reflection: mirror 0 and 1, glaze 1 and m,
-                // mirrored Blinn-Phong 1 - m and m, the others 1 and none (RENDERING.md §5). One
-                // emitReflection call for the three reflecting shaders, not one each: lavapipe runs
-                // every inlined copy of its gloss loop on every path step, whatever the shader.
-                float mirror = materialMirrorCoef(m);
-                bool reflects = HAS_REFLECTION && (type == SHADER_MIRROR || type == SHADER_GLAZE ||
-                                                   type == SHADER_BLINN_PHONG_MIRRORED);
-                float localShare = !reflects || type == SHADER_GLAZE ? 1.0 : (type == SHADER_MIRROR ? 0.0 : 1.0 - mirror);
-                radiance += ray.weight * localShare * local;
-                if (reflects)
-                    emitReflection(q, ray, s, N, materialRoughness(m), ray.weight * (type == SHADER_MIRROR ? 1.0 : mirror), key);
-                if (bounces) emitBounce(q, ray, s, N, kd, key);
-            }
-        }
+        bool found = traceScene(ray.origin, ray.dir, FLT_MAX, false, hit);
+        shadeRay(ray, found, hit, key, radiance, q);
         flushQueue(q);
         if (g_budgetExceeded) break;
         if (q.hasNext) {
             ray = q.next;
         } else if (HAS_PATH_STACK && g_pathTop > 0u) {
-            ray = g_pathStack[--g_pathTop];
+            ray = loadStackEntry(--g_pathTop);
         } else {
             finished = true;
             break;

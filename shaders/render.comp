@@ -16,10 +16,12 @@
 #include "ray_offset.glsl"
 #include "texture.glsl"
 #include "emitters.glsl"
+#include "wavefront_state.glsl"  // before shading.glsl, whose shadow rays it may defer
 #include "shading.glsl"
 #include "environment.glsl"
 #include "integrator.glsl"
 #include "camera.glsl"
+#include "wavefront.glsl"
 
 layout(push_constant) uniform PushConstants { PassParams passes[1]; };  // read at VKRT_UNIFORM_INDEX (bindings.glsl)
 
@@ -34,15 +36,7 @@ const uint NO_SAMPLE = 0xffffffffu;
 // sample with a failure is remembered for the host's message.
 void addSample(uint x, uint y, uint index, inout SampleKey key, inout vec4 sum, inout vec4 oddSum, inout uint nonFinite,
                inout uint failedSample) {
-    key.index = sampleIndex(samplerKind(), index);
-    key.seed = sampleSeed(samplerKind(), frameSeed(), index);
-    vec2 subPixel = sample2D(samplerKind(), frame.pixelGrid, key.pixel, key.index, DIM_CAMERA, key.seed);
-    vec2 lens = HAS_THIN_LENS ? sample2D(samplerKind(), frame.pixelGrid, key.pixel, key.index, DIM_LENS, key.seed) : vec2(0.5);
-    if (HAS_MOTION) {
-        float u = sample1D(samplerKind(), frame.pixelGrid, key.pixel, key.index, DIM_TIME, key.seed);
-        sampleTime = frameShutterOpen() + (frameShutterClose() - frameShutterOpen()) * u;
-    }
-    CameraRay camera = cameraRay(x, y, subPixel, lens);
+    CameraRay camera = cameraSample(x, y, index, key);
     vec3 radiance = cameraSampleRadiance(camera.origin, camera.dir, key);
     if (failedSample == NO_SAMPLE && failureFlags() != 0u) failedSample = index;
     if (any(isnan(radiance)) || any(isinf(radiance))) {
@@ -91,7 +85,49 @@ bool adaptiveWork(PassParams pass, out uint x, out uint y, out uint first, out u
     return true;
 }
 
+// One atomic site for every failure (each inlined atomic is a per-lane loop that runs whether
+// or not a lane takes it); the first failing pixel and sample are recorded for the message.
+void reportStatus(uint pixel, uint failedSample, uint nonFinite) {
+    uint failures = failureFlags();
+    if (failures != 0u) {
+        atomicOr(status.flags.x, failures);
+        if (atomicCompSwap(status.flags.y, 0u, pixel + 1u) == 0u) status.flags.z = failedSample;
+    }
+    if (nonFinite != 0u) atomicAdd(status.flags.w, nonFinite);
+}
+
+// A stage of the wavefront renderer (wavefront.glsl): invocation i is path slot i of the wave
+// (SHADOW: shadow ray i, ACCUMULATE: band pixel i).
+void wavefrontMain() {
+    g_wave = passes[VKRT_UNIFORM_INDEX];
+    uint invocation = gl_WorkGroupID.x * 64u + gl_LocalInvocationIndex;
+    uint nonFinite = 0u;
+    uint pixel;
+    if (WAVEFRONT_STAGE == WAVEFRONT_ACCUMULATE) {
+        if (invocation >= wfBandPixels()) return;
+        pixel = wfAccumulate(invocation, nonFinite);
+    } else {
+        if (WAVEFRONT_STAGE == WAVEFRONT_SHADOW) {
+            if (invocation >= wfPaths() * wfShadowsPerPath()) return;
+            wfShadow(invocation);
+        } else {
+            if (invocation >= wfPaths()) return;
+            g_wfSlot = invocation;
+            if (WAVEFRONT_STAGE == WAVEFRONT_GENERATE) wfGenerate();
+            else if (WAVEFRONT_STAGE == WAVEFRONT_EXTEND) wfExtend();
+            else wfShade();
+        }
+        uvec2 p = wfSlotPixel(g_wfSlot);
+        pixel = p.y * frameWidth() + p.x;
+    }
+    reportStatus(pixel, wfSlotSample(g_wfSlot), nonFinite);
+}
+
 void main() {
+    if (WAVEFRONT) {
+        wavefrontMain();
+        return;
+    }
     PassParams pass = passes[VKRT_UNIFORM_INDEX];
     uint x, y, firstSample, samples;
     if (ADAPTIVE) {
@@ -125,15 +161,7 @@ void main() {
         if (j < samples) markLoopCutOff();
     }
 
-    // One atomic site for every failure (each inlined atomic is a per-lane loop that runs whether
-    // or not a lane takes it); the first failing pixel and sample are recorded for the message.
-    uint failures = failureFlags();
-    if (failures != 0u) {
-        atomicOr(status.flags.x, failures);
-        if (atomicCompSwap(status.flags.y, 0u, key.pixel + 1u) == 0u)
-            status.flags.z = failedSample != NO_SAMPLE ? failedSample : firstSample;
-    }
-    if (nonFinite != 0u) atomicAdd(status.flags.w, nonFinite);
+    reportStatus(key.pixel, failedSample != NO_SAMPLE ? failedSample : firstSample, nonFinite);
     storePixelSum(key.pixel, sum);
     if (ADAPTIVE) storePixelOddSum(key.pixel, oddSum);
 }

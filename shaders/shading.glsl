@@ -15,8 +15,7 @@ const float SHADOW_T_MAX = 1.0 - 1.0 / 65536.0;
 
 bool visible(Surface s, vec3 towardsLight, vec3 lightPoint) {
     vec3 origin = offsetTowards(s, towardsLight);
-    Hit ignored;
-    return !traceScene(origin, lightPoint - origin, SHADOW_T_MAX, true, ignored);
+    return shadowRayClear(origin, lightPoint - origin, SHADOW_T_MAX);
 }
 
 // Shading of one light position q with intensity I. N faces the viewer.

@@ -228,7 +228,7 @@ int runCompare(CommandLine& cl) {
     // Each device prepares and renders as `vkrt scene.xml` would, from its own tree: the times are
     // the ones a user gets, and the images must agree although the trees differ.
     GpuRenderer gpu(gpuOptions(cl));
-    const DeviceRender onGpu = renderOnGpu(gpu, scene, cl.render, cl.general);
+    const DeviceRender onGpu = renderOnGpu(gpu, scene, cl.render, gpuSettingsOf(cl));
     const DeviceRender onCpu = renderOnCpu(scene, cl.render);
     const ImageDifference diff = compareImages(onGpu.image, onCpu.image);
     writeHeatMap(diff.heatMap, cl.heatMapPath);

@@ -204,6 +204,13 @@ void addRenderOptions(CLI::App& app, CommandLine& cl, std::string& bg, std::stri
                    "ask for Vulkan)")
         ->check(CLI::IsMember({"auto", "cpu", "gpu"}));
     app.add_flag("--general-kernel", cl.general, "GPU: use the kernel with every feature (no specialisation)");
+    app.add_option_function<std::string>(
+           "--gpu-kernel", [&cl](const std::string& name) { cl.wavefront = name == "wavefront"; },
+           "GPU: megakernel (one invocation computes a sample's whole path; default) or wavefront (waves of "
+           "paths through one kernel per stage: camera rays, closest hits, shading, shadow rays, "
+           "accumulation; the same image, far fewer registers per kernel on a GPU compiler)")
+        ->check(CLI::IsMember({"megakernel", "wavefront"}))
+        ->default_str("megakernel");
 }
 
 // vkrt sweep: lists instead of single values, and where the results and the reference cache go.
@@ -597,7 +604,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
             for (const char* size : {"--width", "--height", "--aspect"})
                 if (app.count(size) > 0)
                     throw CLI::ValidationError(size, "check renders at your image's size: leave -w, -h and -a out");
-            for (const char* gpu : {"--device", "--gpu", "--general-kernel", "--shader-dir"})
+            for (const char* gpu : {"--device", "--gpu", "--general-kernel", "--gpu-kernel", "--shader-dir"})
                 if (app.count(gpu) > 0)
                     throw CLI::ValidationError(gpu, "check renders its reference on the CPU (it needs each pixel's "
                                                     "sample variance): leave it out");

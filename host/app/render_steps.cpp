@@ -125,10 +125,16 @@ DeviceRender renderOnCpu(const Scene& scene, const RenderOptions& options) {
     return result;
 }
 
-DeviceRender renderPreparedOnGpu(GpuRenderer& gpu, const GpuSceneData& data, const RenderOptions& options, bool general) {
-    GpuRenderStats stats;
+GpuRenderSettings gpuSettingsOf(const CommandLine& cl) {
     GpuRenderSettings settings;
-    settings.variant = general ? KernelVariant::General : KernelVariant::Specialised;
+    settings.variant = cl.general ? KernelVariant::General : KernelVariant::Specialised;
+    settings.kernel = cl.wavefront ? GpuKernel::Wavefront : GpuKernel::Megakernel;
+    return settings;
+}
+
+DeviceRender renderPreparedOnGpu(GpuRenderer& gpu, const GpuSceneData& data, const RenderOptions& options,
+                                 const GpuRenderSettings& settings) {
+    GpuRenderStats stats;
     Image image = gpu.render(data, options, &stats, settings);
     warnAboutRadiance(stats.nonFiniteSamples, stats.overflowedPixels, options.quiet);
     if (auto log = gpu.validationLog(); log && log->count() > 0)
@@ -139,24 +145,27 @@ DeviceRender renderPreparedOnGpu(GpuRenderer& gpu, const GpuSceneData& data, con
     char deviceTime[48] = "";
     if (stats.kernelSeconds >= 0.0) std::snprintf(deviceTime, sizeof deviceTime, "; device time %.3fs", stats.kernelSeconds);
     const std::string kernel = (stats.generalKernel ? "general kernel, " + stats.features : "kernel: " + stats.features) +
-                               "; samples/dispatch=" + std::to_string(stats.samplesPerDispatch) + deviceTime;
+                               (stats.wavefront ? "; wavefront stages" : "; samples/dispatch=" + std::to_string(stats.samplesPerDispatch)) +
+                               deviceTime;
     return {std::move(image), stats.device + " [" + kernel + "]", 0.0, stats.renderSeconds + stats.readbackSeconds,
             stats.pipelineSeconds + stats.warmUpSeconds, /*onGpu=*/true};
 }
 
-DeviceRender renderOnGpu(GpuRenderer& gpu, const Scene& scene, const RenderOptions& options, bool general) {
+DeviceRender renderOnGpu(GpuRenderer& gpu, const Scene& scene, const RenderOptions& options, const GpuRenderSettings& settings) {
     const auto start = std::chrono::steady_clock::now();
     const GpuSceneData data = [&] {
         const ExitAtOnceOnInterrupt scope;
         return GpuRenderer::prepare(scene);
     }();
     const double prepareSeconds = secondsSince(start);
-    DeviceRender result = renderPreparedOnGpu(gpu, data, options, general);
+    DeviceRender result = renderPreparedOnGpu(gpu, data, options, settings);
     result.prepareSeconds = prepareSeconds;
     return result;
 }
 
-bool asksForVulkan(const CommandLine& cl) { return cl.gpuIndex >= 0 || !cl.shaderDir.empty() || cl.general || cl.validate; }
+bool asksForVulkan(const CommandLine& cl) {
+    return cl.gpuIndex >= 0 || !cl.shaderDir.empty() || cl.general || cl.wavefront || cl.validate;
+}
 
 // --device auto where every Vulkan device runs on the CPU: the CPU reference, said once unless -q.
 // Without a loader the answer is no: opening the GPU then says why.
@@ -216,7 +225,7 @@ DeviceRender renderScene(CommandLine& cl) {
     std::unique_ptr<GpuRenderer> gpu = openGpu(cl);
     DeviceRender result;
     try {
-        result = gpu ? renderOnGpu(*gpu, scene, cl.render, cl.general) : renderOnCpu(scene, cl.render);
+        result = gpu ? renderOnGpu(*gpu, scene, cl.render, gpuSettingsOf(cl)) : renderOnCpu(scene, cl.render);
     } catch (const GpuKernelError& e) {
         // The kernel refused this scene (e.g. lavapipe's loop limiter): with --device auto the
         // CPU reference computes the same image; with --device gpu the error stands.

@@ -49,9 +49,12 @@ struct DeviceRender {
 // Each renderer prepares the scene its own way (its own tree) and renders it; the Prepared forms
 // take what an earlier prepare made (watch mode keeps it while only shaders change).
 DeviceRender renderOnCpu(const Scene& scene, const RenderOptions& options);
-DeviceRender renderOnGpu(GpuRenderer& gpu, const Scene& scene, const RenderOptions& options, bool general);
+DeviceRender renderOnGpu(GpuRenderer& gpu, const Scene& scene, const RenderOptions& options, const GpuRenderSettings& settings);
 DeviceRender renderPreparedOnCpu(const Scene& scene, const SceneAccel& accel, const RenderOptions& options);
-DeviceRender renderPreparedOnGpu(GpuRenderer& gpu, const GpuSceneData& data, const RenderOptions& options, bool general);
+DeviceRender renderPreparedOnGpu(GpuRenderer& gpu, const GpuSceneData& data, const RenderOptions& options,
+                                 const GpuRenderSettings& settings);
+// The kernel the command line asks for (--general-kernel, --gpu-kernel).
+GpuRenderSettings gpuSettingsOf(const CommandLine& cl);
 
 // --device auto: the GPU when a usable Vulkan device is a GPU (device_choice.h), else nullptr (the
 // CPU reference) with a note, also when no Vulkan device opens; --gpu N: that device, falling back

@@ -238,7 +238,7 @@ private:
         }
         if (loaded_->gpu) {
             try {
-                return renderPreparedOnGpu(*gpu_, *loaded_->gpu, options, cl_.general);
+                return renderPreparedOnGpu(*gpu_, *loaded_->gpu, options, gpuSettingsOf(cl_));
             } catch (const GpuKernelError& e) {
                 if (cl_.device != DeviceChoice::Auto) throw;
                 std::cerr << "note: " << e.what() << "\nnote: rendering on the CPU reference instead\n";

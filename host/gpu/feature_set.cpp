@@ -80,6 +80,7 @@ std::array<std::uint32_t, gpu::SPEC_COUNT> FeatureSet::specializationValues(std:
     v[gpu::SPEC_HAS_ENVIRONMENT] = environment;
     v[gpu::SPEC_ESTIMATOR] = estimator;
     v[gpu::SPEC_ADAPTIVE] = adaptive;
+    v[gpu::SPEC_WAVEFRONT_STAGE] = wavefrontStage;
     return v;
 }
 
@@ -108,6 +109,7 @@ std::string FeatureSet::describe() const {
     add(emitters, "emitters");
     add(environment, "environment");
     add(adaptive, "adaptive");
+    add(wavefrontStage != gpu::WAVEFRONT_OFF, ("wavefront-stage=" + std::to_string(wavefrontStage)).c_str());
     add(diffuse && estimator != gpu::ESTIMATOR_FROM_FRAME,
         ("estimator=" + estimatorName(static_cast<Estimator>(estimator))).c_str());
     add(!packedNodes, "exact-nodes");

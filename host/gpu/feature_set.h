@@ -43,6 +43,9 @@ struct FeatureSet {
     // Not a feature of the scene but the render's mode, off in every kernel but adaptive sampling's
     // rounds (GpuRenderer::addSampleRanges): a work list of pixels and odd sums (render.comp).
     bool adaptive = false;
+    // Not a feature of the scene either: gpu::WAVEFRONT_OFF for the megakernel, else the one stage
+    // of the wavefront renderer the kernel runs (shaders/wavefront.glsl).
+    std::uint32_t wavefrontStage = gpu::WAVEFRONT_OFF;
 
     auto operator<=>(const FeatureSet&) const = default;
 

@@ -15,7 +15,9 @@
 #include "progress.h"
 #include "render_status.h"
 #include "scene_upload.h"
+#include "pixel_sums.h"
 #include "submission_recorder.h"
+#include "wavefront_renderer.h"
 
 namespace vkrt {
 
@@ -25,32 +27,6 @@ using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-// Pixel = sum of its samples (accumulated in sample order on the device) / rpp, the same float
-// operations as the CPU reference: no reciprocal multiply, which could differ in the last bit.
-Image resolve(const std::vector<glm::vec4>& sums, int width, int height, int samples) {
-    Image image(width, height);
-    const auto n = static_cast<float>(samples);
-    for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = glm::vec3(sums[i]) / n;
-    return image;
-}
-
-// A progressive render's image so far: tiles before `current` have all their samples, `current`
-// has `currentSamples`, later tiles none yet (black). Tiles are in rows-relative coordinates.
-Image resolveSoFar(const std::vector<glm::vec4>& sums, int width, int height, const std::vector<TileRect>& tiles,
-                   std::size_t current, int currentSamples, int samples, int firstRow) {
-    Image image(width, height);
-    for (std::size_t t = 0; t <= current && t < tiles.size(); ++t) {
-        const auto n = static_cast<float>(t < current ? samples : currentSamples);
-        const TileRect& r = tiles[t];
-        for (std::uint32_t y = r.y; y < r.y + r.height; ++y)
-            for (std::uint32_t x = r.x; x < r.x + r.width; ++x) {
-                const std::size_t i = static_cast<std::size_t>(y + firstRow) * width + x;
-                image.pixels[i] = glm::vec3(sums[i]) / n;
-            }
-    }
-    return image;
 }
 
 }  // namespace
@@ -101,6 +77,24 @@ double GpuRenderer::reloadKernel() {
     return secondsSince(start);
 }
 
+Image GpuRenderer::renderWavefront(const GpuSceneData& data, const KernelInputs& in, const RenderOptions& options,
+                                   GpuRenderStats& stats, GpuRenderStats* statsOut) {
+    stats.wavefront = true;
+    stats.samplesPerDispatch = 1;
+    const auto start = Clock::now();
+    SceneUpload& gpuScene = impl_->uploadScene(data, in.frame, stats);
+    stats.uploadSeconds = secondsSince(start);
+    std::vector<glm::vec4> sums;
+    const GpuRenderDevice device{impl_->context, impl_->runner, impl_->transfers, impl_->layout, *impl_->kernels};
+    vkrt::renderWavefront(device, gpuScene, data, in, options, stats, sums);
+    const auto readback = Clock::now();
+    Image image = resolve(sums, options.width, options.height, options.samplesPerPixel);
+    stats.overflowedPixels = clampOverflowedPixels(image);
+    stats.readbackSeconds = secondsSince(readback);
+    if (statsOut) *statsOut = stats;
+    return image;
+}
+
 Image GpuRenderer::render(const GpuSceneData& data, const RenderOptions& options, GpuRenderStats* statsOut,
                           const GpuRenderSettings& settings) {
     GpuRenderStats stats;
@@ -112,6 +106,7 @@ Image GpuRenderer::render(const GpuSceneData& data, const RenderOptions& options
     stats.features = in.features.describe();
     stats.generalKernel = settings.variant == KernelVariant::General;
     stats.samplesPerDispatch = batching.perDispatch;
+    if (settings.kernel == GpuKernel::Wavefront) return renderWavefront(data, in, options, stats, statsOut);
     const vk::raii::Pipeline& pipeline = impl_->kernels->pipeline(in.features, batching.perDispatch, &stats.pipelineSeconds);
 
     // The prepared scene's tables go to the device once; later renders of it (a sweep, watch mode's

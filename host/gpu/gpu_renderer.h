@@ -28,8 +28,13 @@
 
 namespace vkrt {
 
+// How the GPU computes a render: the megakernel (render.comp: one invocation computes a sample's
+// whole path) or the wavefront stages (wavefront_renderer.h: waves of paths, one stage per kernel).
+enum class GpuKernel { Megakernel, Wavefront };
+
 struct GpuRenderSettings {
     KernelVariant variant = KernelVariant::Specialised;
+    GpuKernel kernel = GpuKernel::Megakernel;
     TilingPolicy tiling;  // submission target time, or fixed tiles for tests
     std::uint32_t samplesPerDispatch = 0;  // samples per pixel per dispatch; 0: the scene's bound decides
                                            // (sample_batching.h), tests force one
@@ -38,6 +43,7 @@ struct GpuRenderSettings {
 struct GpuRenderStats {
     std::string device;
     std::string features;         // the specialisation, FeatureSet::describe()
+    bool wavefront = false;       // computed by the wavefront stages (GpuKernel::Wavefront)
     bool generalKernel = false;
     double pipelineSeconds = 0.0; // creating the kernel variant (0 when it was cached)
     double warmUpSeconds = 0.0;   // an empty dispatch: lavapipe's LLVM compile of the variant happens
@@ -93,6 +99,9 @@ public:
     std::size_t pipelineCount() const;
 
 private:
+    Image renderWavefront(const GpuSceneData& data, const KernelInputs& in, const RenderOptions& options, GpuRenderStats& stats,
+                          GpuRenderStats* statsOut);
+
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

@@ -194,4 +194,14 @@ void SceneUpload::beginAdaptiveRound(const Context& context, Transfers& transfer
     transfers.zero(buffers_[gpu::BINDING_STATUS]);
 }
 
+void SceneUpload::beginWavefront(const Context& context, Transfers& transfers, const gpu::FrameParams& frame,
+                                 std::uint64_t stateTexels) {
+    const std::uint64_t pixels = static_cast<std::uint64_t>(gpu::frameWidth(frame)) * gpu::frameHeight(frame);
+    growAccum(context, stableTexelBufferBytes((pixels + stateTexels) * sizeof(glm::uvec4)));
+    const std::array<gpu::FrameParams, 1> frames = {frame};
+    transfers.upload(buffers_[gpu::BINDING_FRAME], std::as_bytes(std::span(frames)));
+    transfers.zero(buffers_[gpu::BINDING_ACCUM]);
+    transfers.zero(buffers_[gpu::BINDING_STATUS]);
+}
+
 }  // namespace vkrt

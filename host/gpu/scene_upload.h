@@ -53,6 +53,11 @@ public:
     void beginAdaptiveRound(const Context& context, Transfers& transfers, const gpu::FrameParams& frame,
                             std::span<const glm::uvec4> accum);
 
+    // A wavefront render (wavefront_renderer.h): the frame uploaded, the accumulation buffer grown
+    // to the pixel sums and `stateTexels` texels of paths in flight after them, all zeroed, and
+    // the status zeroed.
+    void beginWavefront(const Context& context, Transfers& transfers, const gpu::FrameParams& frame, std::uint64_t stateTexels);
+
     vk::DescriptorSet descriptorSet() const { return *set_; }
     const Buffer& accum() const { return buffers_[gpu::BINDING_ACCUM]; }
     // Mapped: the host reads it after every submission.

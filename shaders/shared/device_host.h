@@ -356,6 +356,8 @@ VKRT_CONST uint STATUS_LOOP_CUT_OFF = 4u;  // a loop ended before its work was d
 struct RenderStatus {
     uvec4 flags;       // x: STATUS_* bits, y: first offending pixel index + 1 (0: none), z: its sample,
                        // w: number of samples whose radiance was NaN/Inf (replaced by black)
+    uvec4 paths;       // wavefront kernels (WAVEFRONT_*): x counts the paths that ended since the render
+                       // began (the host's waves are done when it reaches their paths); y, z, w unused
 };
 // The host's reads (render.comp writes the lanes with atomics, which need the member itself).
 VKRT_FN uint statusFailures(RenderStatus s) { return s.flags.x; }
@@ -440,7 +442,19 @@ VKRT_CONST uint SPEC_HAS_ENVIRONMENT = 21;  // the scene has an environment map
 VKRT_CONST uint SPEC_ESTIMATOR = 22;        // ESTIMATOR_*, or ESTIMATOR_FROM_FRAME
 VKRT_CONST uint SPEC_UNIFORM_INDEX_FROM_GROUPS = 23;  // lavapipe's recompile workaround (bindings.glsl); set per device
 VKRT_CONST uint SPEC_ADAPTIVE = 24;         // adaptive sampling's rounds: a work list of pixels and sample ranges
-VKRT_CONST uint SPEC_COUNT = 25;
+VKRT_CONST uint SPEC_WAVEFRONT_STAGE = 25;  // WAVEFRONT_*: the megakernel, or one stage of the wavefront renderer
+VKRT_CONST uint SPEC_COUNT = 26;
+
+// The wavefront renderer's stages (shaders/wavefront.glsl, host/gpu/wavefront_renderer.h): one
+// render.comp compiled per stage by SPEC_WAVEFRONT_STAGE, each with only its stage's code.
+VKRT_CONST uint WAVEFRONT_OFF = 0u;            // the megakernel: a sample's whole path per invocation
+VKRT_CONST uint WAVEFRONT_GENERATE = 1u;       // camera rays into the wave's path slots
+VKRT_CONST uint WAVEFRONT_EXTEND = 2u;         // closest hit of each live path's ray
+VKRT_CONST uint WAVEFRONT_SHADE_RECORD = 3u;   // the hit's shading, keeping only its shadow rays
+VKRT_CONST uint WAVEFRONT_SHADOW = 4u;         // any hit of each shadow ray
+VKRT_CONST uint WAVEFRONT_SHADE_RESOLVE = 5u;  // the hit's shading with those visibilities: radiance, next ray
+VKRT_CONST uint WAVEFRONT_ACCUMULATE = 6u;     // the wave's path radiances into the pixel sums, in sample order
+VKRT_CONST uint WAVEFRONT_STAGE_COUNT = 7u;
 
 // Entries of the kernel's BVH traversal stack. The host refuses a BVH whose top-level depth plus
 // deepest bottom-level depth exceeds it, so the stack can never overflow at run time.
@@ -470,7 +484,7 @@ static_assert(sizeof(TextureInfo) == 16 * TEXTURE_INFO_TEXELS);
 static_assert(sizeof(EmitterRecord) == 16 * EMITTER_TEXELS);
 static_assert(sizeof(EmitterTriangle) == 16 * EMITTER_TRIANGLE_TEXELS);
 static_assert(sizeof(FrameParams) == 224);
-static_assert(sizeof(RenderStatus) == 16);
+static_assert(sizeof(RenderStatus) == 32);
 static_assert(sizeof(PassParams) == 32);
 static_assert(sizeof(TraceRayInput) == 32);
 static_assert(sizeof(TraceHitOutput) == 16);

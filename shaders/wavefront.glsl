@@ -1,0 +1,131 @@
+// The wavefront renderer's stages (host/gpu/wavefront_renderer.h drives them): each stage is
+// render.comp compiled with its SPEC_WAVEFRONT_STAGE, one invocation per path slot of the wave
+// (wavefront_state.glsl), so no kernel holds both the traversal and the shading: EXTEND and SHADOW
+// trace, the shading stages do not. A wave runs GENERATE, then EXTEND, SHADE_RECORD, SHADOW,
+// SHADE_RESOLVE until every path has ended, then ACCUMULATE. The shading is shadeRay
+// (integrator.glsl), the megakernel's own, so a path adds the same radiance in the same order.
+#ifndef VKRT_WAVEFRONT_GLSL
+#define VKRT_WAVEFRONT_GLSL
+
+SampleKey wfSampleKey(uvec2 pixel, uint sampleNumber) {
+    SampleKey key;
+    key.pixel = pixel.y * frameWidth() + pixel.x;
+    key.index = sampleIndex(samplerKind(), sampleNumber);
+    key.seed = sampleSeed(samplerKind(), frameSeed(), sampleNumber);
+    return key;
+}
+
+bool wfLive() { return (wfLoad(WF_RADIANCE).w & WF_LIVE) != 0u; }
+
+PathRay wfLoadRay() {
+    vec4 a = wfLoadFloats(WF_ORIGIN);
+    vec4 b = wfLoadFloats(WF_DIR);
+    vec4 c = wfLoadFloats(WF_WEIGHT);
+    sampleTime = c.w;
+    return PathRay(a.xyz, b.xyz, c.xyz, floatBitsToUint(a.w), b.w);
+}
+
+void wfStoreRay(PathRay r) {
+    wfStoreFloats(WF_ORIGIN, vec4(r.origin, uintBitsToFloat(r.depth)));
+    wfStoreFloats(WF_DIR, vec4(r.dir, r.bouncePdf));
+    wfStoreFloats(WF_WEIGHT, vec4(r.weight, sampleTime));
+}
+
+// GENERATE: the camera ray of the slot's sample; no radiance yet, an empty stack.
+void wfGenerate() {
+    uvec2 pixel = wfSlotPixel(g_wfSlot);
+    SampleKey key;
+    key.pixel = pixel.y * frameWidth() + pixel.x;
+    CameraRay camera = cameraSample(pixel.x, pixel.y, wfSlotSample(g_wfSlot), key);
+    wfStoreRay(PathRay(camera.origin, camera.dir, vec3(1.0), 0u, 0.0));
+    wfStore(WF_RADIANCE, uvec4(floatBitsToUint(vec3(0.0)), WF_LIVE));
+}
+
+// EXTEND: the closest hit of a live path's ray.
+void wfExtend() {
+    if (!wfLive()) return;
+    PathRay ray = wfLoadRay();
+    Hit hit;
+    bool found = traceScene(ray.origin, ray.dir, FLT_MAX, false, hit);
+    wfStore(WF_HIT, uvec4(floatBitsToUint(hit.t), hit.instance, hit.prim, found ? 1u : 0u));
+    wfStore(WF_BARY, uvec4(floatBitsToUint(hit.bary), 0u, 0u));
+}
+
+// SHADE_RECORD and SHADE_RESOLVE: shadeRay at the hit EXTEND found. RECORD keeps only the shadow
+// rays it asks for (and their number, BARY.z); RESOLVE adds the radiance and moves the path to
+// its next ray (the hit's first child, else the top of its stack), or ends it.
+void wfShade() {
+    uvec4 state = wfLoad(WF_RADIANCE);
+    if ((state.w & WF_LIVE) == 0u) return;
+    PathRay ray = wfLoadRay();
+    uvec4 h = wfLoad(WF_HIT);
+    uvec4 b = wfLoad(WF_BARY);
+    Hit hit;
+    hit.t = uintBitsToFloat(h.x);
+    hit.instance = h.y;
+    hit.prim = h.z;
+    hit.bary = uintBitsToFloat(b.xy);
+    SampleKey key = wfSampleKey(wfSlotPixel(g_wfSlot), wfSlotSample(g_wfSlot));
+    g_pathTop = state.w & 0xffffu;
+    vec3 radiance = uintBitsToFloat(state.xyz);
+    PathQueue q;
+    q.hasNext = false;
+    q.hasExtra = false;
+    shadeRay(ray, h.w != 0u, hit, key, radiance, q);
+    flushQueue(q);
+    if (WAVEFRONT_STAGE == WAVEFRONT_SHADE_RECORD) {
+        wfStore(WF_BARY, uvec4(b.xy, g_wfShadows, 0u));
+        return;
+    }
+    bool live = !g_budgetExceeded;
+    if (live && q.hasNext) {
+        ray = q.next;
+    } else if (live && HAS_PATH_STACK && g_pathTop > 0u) {
+        ray = loadStackEntry(--g_pathTop);
+    } else {
+        live = false;
+    }
+    if (live) wfStoreRay(ray);
+    wfStore(WF_RADIANCE, uvec4(floatBitsToUint(radiance), g_pathTop | (live ? WF_LIVE : 0u)));
+    if (!live) atomicAdd(status.paths.x, 1u);
+}
+
+// SHADOW: invocation i traces shadow ray i / paths of path i % paths, if its hit recorded one.
+void wfShadow(uint invocation) {
+    uint paths = wfPaths();
+    g_wfSlot = invocation % paths;
+    uint j = invocation / paths;
+    if (!wfLive() || j >= wfLoad(WF_BARY).z) return;
+    sampleTime = wfLoadFloats(WF_WEIGHT).w;
+    uint field = WF_SHADOWS + 2u * j;
+    vec4 a = wfLoadFloats(field);
+    vec4 d = wfLoadFloats(field + 1u);
+    Hit ignored;
+    bool blocked = traceScene(a.xyz, d.xyz, a.w, true, ignored);
+    wfStore(field + 1u, uvec4(floatBitsToUint(d.xyz), blocked ? 0u : 1u));
+}
+
+// ACCUMULATE: invocation p adds the wave's samples of band pixel p to its sum, in sample order
+// (the megakernel's order), a NaN or Inf sample counted and added as black. Returns the pixel.
+uint wfAccumulate(uint p, inout uint nonFinite) {
+    uvec2 pixel = passTileOrigin(g_wave) + uvec2(p % passTileSize(g_wave).x, p / passTileSize(g_wave).x);
+    uint index = pixel.y * frameWidth() + pixel.x;
+    vec4 sum = loadPixelSum(index);
+    uint samples = passSamples(g_wave);
+    uint j = 0u;
+    for (; j < samples; ++j) {
+        if (!chargeLoop()) break;
+        g_wfSlot = j * wfBandPixels() + p;
+        vec3 radiance = uintBitsToFloat(wfLoad(WF_RADIANCE).xyz);
+        if (any(isnan(radiance)) || any(isinf(radiance))) {
+            ++nonFinite;
+            radiance = vec3(0.0);
+        }
+        sum.rgb += radiance;
+    }
+    if (j < samples) markLoopCutOff();
+    storePixelSum(index, sum);
+    return index;
+}
+
+#endif

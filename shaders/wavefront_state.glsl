@@ -1,0 +1,70 @@
+// The wavefront renderer's paths in flight (host/gpu/wavefront_renderer.h): the state one stage
+// hands to the next, kept in the accumulation buffer after the pixel sums. A wave is a band of
+// pixels (the pass's tile) times a run of samples (pass.x .. pass.x + pass.w - 1); its path slot i
+// is sample i / (band pixels) of band pixel i % (band pixels), so neighbouring lanes trace
+// neighbouring pixels. Each field of the state is an array of one texel per slot (structure of
+// arrays: a stage's lanes read consecutive texels):
+//   0 ORIGIN    ray origin, depth (uint bits)        1 DIR      ray direction, bounce pdf
+//   2 WEIGHT    ray weight, the sample's time        3 RADIANCE radiance so far, stack top | LIVE
+//   4 HIT       t, instance, primitive, found (0/1)  5 BARY     barycentrics, shadow rays recorded
+//   6 ..        per shadow ray j: origin and tMax, then direction and visibility (0/1)
+//   then        per stack entry e: origin/depth, direction/bounce pdf, weight (integrator.glsl's PathRay)
+// The push constants say which wave: tile = the band (x, y, width, height), pass.x = its first
+// sample, pass.w = its samples, pass.y = shadow rays per path (the most one hit can cast).
+#ifndef VKRT_WAVEFRONT_STATE_GLSL
+#define VKRT_WAVEFRONT_STATE_GLSL
+
+const uint WF_ORIGIN = 0u;
+const uint WF_DIR = 1u;
+const uint WF_WEIGHT = 2u;
+const uint WF_RADIANCE = 3u;
+const uint WF_HIT = 4u;
+const uint WF_BARY = 5u;
+const uint WF_SHADOWS = 6u;
+const uint WF_LIVE = 0x80000000u;  // RADIANCE.w: the path has a ray to trace
+
+PassParams g_wave;       // the dispatch's push constants (render.comp sets it)
+uint g_wfSlot = 0u;      // this invocation's path slot
+uint g_wfShadows = 0u;   // shadow rays recorded (SHADE_RECORD) or read back (SHADE_RESOLVE) at this hit
+
+uint wfBandPixels() { return passTileSize(g_wave).x * passTileSize(g_wave).y; }
+uint wfPaths() { return wfBandPixels() * passSamples(g_wave); }
+uint wfShadowsPerPath() { return passStride(g_wave); }
+// The first texel of the state: the pixel sums come first (one texel per pixel).
+int wfTexel(uint field, uint slot) { return int(frameWidth() * frameHeight() + field * wfPaths() + slot); }
+uvec4 wfLoad(uint field) { return imageLoad(accumTexels, wfTexel(field, g_wfSlot)); }
+void wfStore(uint field, uvec4 value) { imageStore(accumTexels, wfTexel(field, g_wfSlot), value); }
+vec4 wfLoadFloats(uint field) { return uintBitsToFloat(wfLoad(field)); }
+void wfStoreFloats(uint field, vec4 value) { wfStore(field, floatBitsToUint(value)); }
+
+// The pixel and sample of path slot `slot` of the wave.
+uvec2 wfSlotPixel(uint slot) {
+    uint p = slot % wfBandPixels();
+    return passTileOrigin(g_wave) + uvec2(p % passTileSize(g_wave).x, p / passTileSize(g_wave).x);
+}
+uint wfSlotSample(uint slot) { return passFirstSample(g_wave) + slot / wfBandPixels(); }
+
+// A hit's shadow rays in the two shading stages. SHADE_RECORD stores each ray and answers
+// "blocked" (its shading is thrown away); SHADE_RESOLVE runs the same shading, which asks for the
+// same rays in the same order, and answers with what the SHADOW stage found. The megakernel
+// traces the ray here and now.
+bool shadowRayClear(vec3 origin, vec3 dir, float tMax) {
+    if (WAVEFRONT_STAGE == WAVEFRONT_SHADE_RECORD || WAVEFRONT_STAGE == WAVEFRONT_SHADE_RESOLVE) {
+        uint j = g_wfShadows++;
+        if (j >= wfShadowsPerPath()) {
+            g_rayStackOverflow = true;  // the host's bound on shadow rays per hit was wrong: reported
+            return false;
+        }
+        uint field = WF_SHADOWS + 2u * j;
+        if (WAVEFRONT_STAGE == WAVEFRONT_SHADE_RECORD) {
+            wfStoreFloats(field, vec4(origin, tMax));
+            wfStoreFloats(field + 1u, vec4(dir, 0.0));
+            return false;
+        }
+        return wfLoad(field + 1u).w != 0u;
+    }
+    Hit ignored;
+    return !traceScene(origin, dir, tMax, true, ignored);
+}
+
+#endif
