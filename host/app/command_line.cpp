@@ -204,13 +204,13 @@ void addRenderOptions(CLI::App& app, CommandLine& cl, std::string& bg, std::stri
                    "ask for Vulkan)")
         ->check(CLI::IsMember({"auto", "cpu", "gpu"}));
     app.add_flag("--general-kernel", cl.general, "GPU: use the kernel with every feature (no specialisation)");
-    app.add_option_function<std::string>(
-           "--gpu-kernel", [&cl](const std::string& name) { cl.wavefront = name == "wavefront"; },
-           "GPU: megakernel (one invocation computes a sample's whole path; default) or wavefront (waves of "
-           "paths through one kernel per stage: camera rays, closest hits, shading, shadow rays, "
-           "accumulation; the same image, far fewer registers per kernel on a GPU compiler)")
-        ->check(CLI::IsMember({"megakernel", "wavefront"}))
-        ->default_str("megakernel");
+    app.add_option("--gpu-kernel", cl.gpuKernel,
+                   "GPU: megakernel (one invocation computes a sample's whole path), wavefront (waves of paths "
+                   "through one kernel per stage: camera rays, closest hits, shading, shadow rays, accumulation; "
+                   "the same image, far fewer registers per kernel on a GPU compiler) or auto (the megakernel on "
+                   "lavapipe, where it is faster, the wavefront stages on other devices)")
+        ->check(CLI::IsMember({"auto", "megakernel", "wavefront"}))
+        ->default_str("auto");
 }
 
 // vkrt sweep: lists instead of single values, and where the results and the reference cache go.

@@ -27,7 +27,7 @@ struct CommandLine {
     bool validate = false;        // Vulkan validation layers
     std::string shaderDir;        // compile kernels from this GLSL tree at run time
     bool general = false;         // GPU: run the general kernel instead of the scene-specialised one
-    bool wavefront = false;       // GPU: --gpu-kernel wavefront (the wavefront stages, not the megakernel)
+    std::string gpuKernel = "auto";  // GPU: --gpu-kernel auto, megakernel or wavefront (GpuKernel)
     std::string heatMapPath;      // compare -o: difference heat map; empty: none written
     std::optional<int> camera;    // --camera; default: the scene's <sceneParameters><camera>, else the first
     bool statistical = false;     // compare --stat: z-test of GPU and CPU renders with different seeds

@@ -22,7 +22,6 @@ ImageAttributes partAttributes(const CommandLine& cl, const std::string& device)
     // A part's pixels carry its --exposure: parts of one image must share it.
     render << "; exposure " << cl.exposure;
     if (cl.general) render << "; general kernel";
-    if (cl.wavefront) render << "; wavefront kernels";
     // Every estimator has the same expectation, but not the same samples: parts must share one.
     render << "; estimator " << estimatorName(r.estimator);
     if (!r.environment) render << "; no environment";

@@ -128,7 +128,9 @@ DeviceRender renderOnCpu(const Scene& scene, const RenderOptions& options) {
 GpuRenderSettings gpuSettingsOf(const CommandLine& cl) {
     GpuRenderSettings settings;
     settings.variant = cl.general ? KernelVariant::General : KernelVariant::Specialised;
-    settings.kernel = cl.wavefront ? GpuKernel::Wavefront : GpuKernel::Megakernel;
+    settings.kernel = cl.gpuKernel == "wavefront"    ? GpuKernel::Wavefront
+                      : cl.gpuKernel == "megakernel" ? GpuKernel::Megakernel
+                                                     : GpuKernel::Auto;
     return settings;
 }
 
@@ -164,7 +166,7 @@ DeviceRender renderOnGpu(GpuRenderer& gpu, const Scene& scene, const RenderOptio
 }
 
 bool asksForVulkan(const CommandLine& cl) {
-    return cl.gpuIndex >= 0 || !cl.shaderDir.empty() || cl.general || cl.wavefront || cl.validate;
+    return cl.gpuIndex >= 0 || !cl.shaderDir.empty() || cl.general || cl.gpuKernel != "auto" || cl.validate;
 }
 
 // --device auto where every Vulkan device runs on the CPU: the CPU reference, said once unless -q.

@@ -84,6 +84,11 @@ std::array<std::uint32_t, gpu::SPEC_COUNT> FeatureSet::specializationValues(std:
     return v;
 }
 
+std::string wavefrontStageName(std::uint32_t stage) {
+    static const char* const names[] = {"render", "generate", "extend", "shade-rec", "shadow", "shade-res", "accum"};
+    return stage < gpu::WAVEFRONT_STAGE_COUNT ? names[stage] : "stage-" + std::to_string(stage);
+}
+
 std::string FeatureSet::describe() const {
     std::string s;
     auto add = [&](bool on, const char* name) {
@@ -109,7 +114,7 @@ std::string FeatureSet::describe() const {
     add(emitters, "emitters");
     add(environment, "environment");
     add(adaptive, "adaptive");
-    add(wavefrontStage != gpu::WAVEFRONT_OFF, ("wavefront-stage=" + std::to_string(wavefrontStage)).c_str());
+    add(wavefrontStage != gpu::WAVEFRONT_OFF, ("wavefront-stage=" + wavefrontStageName(wavefrontStage)).c_str());
     add(diffuse && estimator != gpu::ESTIMATOR_FROM_FRAME,
         ("estimator=" + estimatorName(static_cast<Estimator>(estimator))).c_str());
     add(!packedNodes, "exact-nodes");

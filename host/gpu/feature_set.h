@@ -58,6 +58,10 @@ struct FeatureSet {
     std::string describe() const;
 };
 
+// "generate", "extend", "shade-rec", "shadow", "shade-res", "accum" for gpu::WAVEFRONT_*; "render"
+// for the megakernel.
+std::string wavefrontStageName(std::uint32_t stage);
+
 // Whether traversal must walk the top level: anything but one identity instance. With one
 // identity instance the kernel starts at that instance's bottom-level root in world space,
 // which skips the per-ray instance transform and the top-level nodes.

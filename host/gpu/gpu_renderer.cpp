@@ -59,6 +59,8 @@ struct GpuRenderer::Impl {
     }
 };
 
+GpuKernel chooseGpuKernel(const DeviceInfo& device) { return device.lavapipe ? GpuKernel::Megakernel : GpuKernel::Wavefront; }
+
 GpuRenderer::GpuRenderer(const GpuRendererOptions& options, const GpuTestHooks& hooks)
     : impl_(std::make_unique<Impl>(options, hooks)) {}
 GpuRenderer::~GpuRenderer() = default;
@@ -78,7 +80,7 @@ double GpuRenderer::reloadKernel() {
 }
 
 Image GpuRenderer::renderWavefront(const GpuSceneData& data, const KernelInputs& in, const RenderOptions& options,
-                                   GpuRenderStats& stats, GpuRenderStats* statsOut) {
+                                   std::uint64_t wavePaths, GpuRenderStats& stats, GpuRenderStats* statsOut) {
     stats.wavefront = true;
     stats.samplesPerDispatch = 1;
     const auto start = Clock::now();
@@ -86,7 +88,7 @@ Image GpuRenderer::renderWavefront(const GpuSceneData& data, const KernelInputs&
     stats.uploadSeconds = secondsSince(start);
     std::vector<glm::vec4> sums;
     const GpuRenderDevice device{impl_->context, impl_->runner, impl_->transfers, impl_->layout, *impl_->kernels};
-    vkrt::renderWavefront(device, gpuScene, data, in, options, stats, sums);
+    vkrt::renderWavefront(device, gpuScene, data, in, options, wavePaths, stats, sums);
     const auto readback = Clock::now();
     Image image = resolve(sums, options.width, options.height, options.samplesPerPixel);
     stats.overflowedPixels = clampOverflowedPixels(image);
@@ -106,7 +108,8 @@ Image GpuRenderer::render(const GpuSceneData& data, const RenderOptions& options
     stats.features = in.features.describe();
     stats.generalKernel = settings.variant == KernelVariant::General;
     stats.samplesPerDispatch = batching.perDispatch;
-    if (settings.kernel == GpuKernel::Wavefront) return renderWavefront(data, in, options, stats, statsOut);
+    const GpuKernel kernel = settings.kernel == GpuKernel::Auto ? chooseGpuKernel(impl_->context.info()) : settings.kernel;
+    if (kernel == GpuKernel::Wavefront) return renderWavefront(data, in, options, settings.wavePaths, stats, statsOut);
     const vk::raii::Pipeline& pipeline = impl_->kernels->pipeline(in.features, batching.perDispatch, &stats.pipelineSeconds);
 
     // The prepared scene's tables go to the device once; later renders of it (a sweep, watch mode's

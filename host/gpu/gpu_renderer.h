@@ -30,11 +30,21 @@ namespace vkrt {
 
 // How the GPU computes a render: the megakernel (render.comp: one invocation computes a sample's
 // whole path) or the wavefront stages (wavefront_renderer.h: waves of paths, one stage per kernel).
-enum class GpuKernel { Megakernel, Wavefront };
+// Auto picks by device (chooseGpuKernel).
+enum class GpuKernel { Auto, Megakernel, Wavefront };
+
+// Auto's choice: the megakernel on lavapipe, where it renders 3-17 times faster than the stages (a
+// CPU runs one lane group per core and hides no latency with occupancy, so every stage's trip through
+// memory is pure cost); the wavefront stages on every other device, whose compilers give the
+// megakernel 232-256 registers per lane, spills and 4 waves per SIMD but the stages at most 120
+// registers, no spills and 8-32 waves (RADV, docs/BENCHMARKS.md "Kernel registers").
+GpuKernel chooseGpuKernel(const DeviceInfo& device);
 
 struct GpuRenderSettings {
     KernelVariant variant = KernelVariant::Specialised;
-    GpuKernel kernel = GpuKernel::Megakernel;
+    GpuKernel kernel = GpuKernel::Auto;
+    std::uint64_t wavePaths = 0;  // wavefront: paths in flight per wave; 0: the device's (wavefront_renderer.h),
+                                  // tests force fewer (the image does not depend on it)
     TilingPolicy tiling;  // submission target time, or fixed tiles for tests
     std::uint32_t samplesPerDispatch = 0;  // samples per pixel per dispatch; 0: the scene's bound decides
                                            // (sample_batching.h), tests force one
@@ -99,8 +109,8 @@ public:
     std::size_t pipelineCount() const;
 
 private:
-    Image renderWavefront(const GpuSceneData& data, const KernelInputs& in, const RenderOptions& options, GpuRenderStats& stats,
-                          GpuRenderStats* statsOut);
+    Image renderWavefront(const GpuSceneData& data, const KernelInputs& in, const RenderOptions& options, std::uint64_t wavePaths,
+                          GpuRenderStats& stats, GpuRenderStats* statsOut);
 
     struct Impl;
     std::unique_ptr<Impl> impl_;

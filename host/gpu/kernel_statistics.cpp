@@ -43,10 +43,12 @@ bool KernelStatisticsCompiler::hasStatistics() const { return impl_->context.sta
 std::size_t KernelStatisticsCompiler::variants() const { return impl_->done.size(); }
 
 KernelVariantReport KernelStatisticsCompiler::compile(const GpuSceneData& data, const RenderOptions& options, KernelVariant variant,
-                                                      bool adaptive) {
+                                                      bool adaptive, std::uint32_t wavefrontStage) {
     const std::uint64_t lockstep = impl_->context.info().loopLimiter ? kLockstepFactor : 1;
     KernelInputs in = makeKernelInputs(data, options, variant, 0, lockstep);
     in.features.adaptive = adaptive;
+    in.features.wavefrontStage = wavefrontStage;
+    if (wavefrontStage != gpu::WAVEFRONT_OFF) in.batching.perDispatch = 1;  // the stages' pipelines (wavefront_renderer.cpp)
     const auto key = std::make_pair(in.features, in.batching.perDispatch);
     if (auto found = impl_->done.find(key); found != impl_->done.end()) {
         KernelVariantReport again = found->second;
@@ -54,6 +56,7 @@ KernelVariantReport KernelStatisticsCompiler::compile(const GpuSceneData& data, 
         return again;
     }
     KernelVariantReport r;
+    if (wavefrontStage != gpu::WAVEFRONT_OFF) r.stage = wavefrontStageName(wavefrontStage);
     r.features = in.features.describe();
     r.samplesPerDispatch = in.batching.perDispatch;
     const std::vector<SpecConstant> constants = kernelConstants(in.features, in.batching.perDispatch, impl_->context.info());

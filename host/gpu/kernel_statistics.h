@@ -32,9 +32,11 @@ public:
     // Whether the device reports statistics at all (lavapipe does not).
     bool hasStatistics() const;
     // The variant a render of `data` with `options` would use, compiled with statistics.
-    // adaptive: the variant of adaptive sampling's rounds (FeatureSet::adaptive, render.comp's work list).
+    // adaptive: the variant of adaptive sampling's rounds (FeatureSet::adaptive, render.comp's work list);
+    // wavefrontStage: one stage of the wavefront renderer (gpu::WAVEFRONT_*) instead of the megakernel.
     KernelVariantReport compile(const GpuSceneData& data, const RenderOptions& options,
-                                KernelVariant variant = KernelVariant::Specialised, bool adaptive = false);
+                                KernelVariant variant = KernelVariant::Specialised, bool adaptive = false,
+                                std::uint32_t wavefrontStage = gpu::WAVEFRONT_OFF);
     std::size_t variants() const;
 
 private:

@@ -66,19 +66,22 @@ private:
 std::uint64_t targetWavePaths(const DeviceInfo& device) { return device.lavapipe ? (1u << 16) : (1u << 20); }
 
 void renderWavefront(const GpuRenderDevice& device, SceneUpload& gpuScene, const GpuSceneData& data, const KernelInputs& in,
-                     const RenderOptions& options, GpuRenderStats& stats, std::vector<glm::vec4>& sums) {
+                     const RenderOptions& options, std::uint64_t wavePaths, GpuRenderStats& stats, std::vector<glm::vec4>& sums) {
     const WavefrontPathLayout pathLayout = wavefrontPathLayout(data.tables, in.features, in.frame);
     const std::uint64_t pixels = static_cast<std::uint64_t>(options.width) * options.height;
     const std::uint64_t pathsPerWave = wavePathsFor(device.context.limits(), pixels, pathLayout,
-                                                    device.context.info().maxWorkGroupCountX, targetWavePaths(device.context.info()));
+                                                    device.context.info().maxWorkGroupCountX,
+                                                    wavePaths > 0 ? wavePaths : targetWavePaths(device.context.info()));
     const glm::ivec2 rows = rowsOf(options);
     std::vector<std::uint32_t> breaks;
     const std::vector<int> checkpoints = checkpointEnds(options.samplesPerPixel, options.checkpoints);
     if (options.onCheckpoint)
         for (const int end : checkpoints) breaks.push_back(static_cast<std::uint32_t>(end));
+    // A wave holds a row at least (an image wider than the device's wave: the memory check refuses
+    // what does not fit).
     const WavePlan plan = planWaves(static_cast<std::uint32_t>(options.width), static_cast<std::uint32_t>(rows.x),
                                     static_cast<std::uint32_t>(rows.y), static_cast<std::uint32_t>(options.samplesPerPixel),
-                                    pathsPerWave, breaks);
+                                    std::max<std::uint64_t>(pathsPerWave, static_cast<std::uint64_t>(options.width)), breaks);
 
     std::array<const vk::raii::Pipeline*, gpu::WAVEFRONT_STAGE_COUNT> pipelines{};
     for (std::uint32_t stage = gpu::WAVEFRONT_GENERATE; stage < gpu::WAVEFRONT_STAGE_COUNT; ++stage) {

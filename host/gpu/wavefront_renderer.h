@@ -29,9 +29,9 @@ std::uint64_t targetWavePaths(const DeviceInfo& device);
 
 // Renders `options` with the wavefront stages: `sums` gets every pixel's sum of its samples (the
 // megakernel's accumulation, in the same order). `gpuScene` holds the prepared scene (uploaded),
-// `in` the render's constants. Adds the stages' pipelines, submissions and timings to the stats,
+// `in` the render's constants, `wavePaths` the paths per wave (0: targetWavePaths). Adds the stages' pipelines, submissions and timings to the stats,
 // and calls options.onCheckpoint after the rounds it asks for.
 void renderWavefront(const GpuRenderDevice& device, SceneUpload& gpuScene, const GpuSceneData& data, const KernelInputs& in,
-                     const RenderOptions& options, GpuRenderStats& stats, std::vector<glm::vec4>& sums);
+                     const RenderOptions& options, std::uint64_t wavePaths, GpuRenderStats& stats, std::vector<glm::vec4>& sums);
 
 }  // namespace vkrt

@@ -1,11 +1,13 @@
-// `vkrt-bench gpu kernels [SCENES|DIRS...] [--general] [--adaptive] [--gpu N] [--shader-dir DIR] [-k DEPTH]`:
+// `vkrt-bench gpu kernels [SCENES|DIRS...] [--general] [--adaptive] [--wavefront] [--gpu N] [--shader-dir DIR] [-k DEPTH]`:
 // every render-kernel variant those scenes need, built (never run) on the selected device, with
 // what its compiler reports: registers, spilled registers, scratch, waves per SIMD and compile
 // time (VK_KHR_pipeline_executable_properties; RADV reports them all, NVIDIA some, lavapipe none).
 // Prefers a compile-only device: with RADV_FORCE_FAMILY=navi21 and the radeon ICD, Mesa's RADV/ACO
 // compiles for a Navi 21 without AMD hardware (docs/BENCHMARKS.md, "Kernel registers"). Default
 // scenes: the course's XML and JSON in ../shared (VKRT_SHARED overrides). The last line:
-// `kernels: N variants, max VGPRs X, spilled VGPRs Y, max scratch Z bytes`.
+// `kernels: N variants, max VGPRs X, spilled VGPRs Y, max scratch Z bytes`; with --wavefront (the
+// wavefront renderer's six stage kernels per scene, after the megakernel) a line of the same form
+// for each of the two renderers precedes it (`megakernel: ...`, `wavefront: ...`).
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -30,6 +32,7 @@ struct Args {
     RenderOptions render;
     bool general = false;
     bool adaptive = false;  // also the variant of adaptive sampling's rounds (--target-error)
+    bool wavefront = false; // also the wavefront renderer's stages (--gpu-kernel wavefront)
     GpuRendererOptions gpu;
 };
 
@@ -45,12 +48,13 @@ Args parseArgs(const std::vector<std::string>& args) {
         const bool value = i + 1 < args.size();
         if (args[i] == "--general") a.general = true;
         else if (args[i] == "--adaptive") a.adaptive = true;
+        else if (args[i] == "--wavefront") a.wavefront = true;
         else if (args[i] == "--gpu" && value) a.gpu.gpu = static_cast<int>(nonNegativeNumber(args[++i], "--gpu"));
         else if (args[i] == "--shader-dir" && value) a.gpu.shaderDir = args[++i];
         else if (args[i] == "-k" && value) a.render.maxDepth = positiveInt(args[++i], "-k");
         else if (args[i].rfind("-", 0) == 0)
             throw std::runtime_error("unknown option " + args[i] +
-                                     " (usage: vkrt-bench gpu kernels [SCENES|DIRS...] [--general] [--adaptive] [--gpu N] [--shader-dir DIR] [-k DEPTH])");
+                                     " (usage: vkrt-bench gpu kernels [SCENES|DIRS...] [--general] [--adaptive] [--wavefront] [--gpu N] [--shader-dir DIR] [-k DEPTH])");
         else a.inputs.push_back(args[i]);
     }
     if (a.inputs.empty())
@@ -109,6 +113,12 @@ int runGpuKernelsBench(const std::vector<std::string>& argv) {
                 "#   earlier scene (same features)\n");
     std::printf("%-40s %-8s %6s %8s %6s %8s %9s %6s %9s  %s\n", "scene", "stage", "vgprs", "spilled", "sgprs", "spilled",
                 "scratch", "waves", "compile_s", "features");
+    // Per renderer: 0 the megakernel (its specialised, general and adaptive variants), 1 the wavefront stages.
+    struct Totals {
+        double maxVgprs = 0, spilledVgprs = 0, maxScratch = 0;
+        std::size_t variants = 0;
+    };
+    Totals totals[2];
     double maxVgprs = 0, spilledVgprs = 0, maxScratch = 0;
     int failed = 0;
     for (const std::filesystem::path& file : files) {
@@ -123,11 +133,19 @@ int runGpuKernelsBench(const std::vector<std::string>& argv) {
             options.camera = scene.defaultCamera;
             std::vector<KernelVariant> variants{KernelVariant::Specialised};
             if (a.general) variants.push_back(KernelVariant::General);
-            std::vector<std::pair<KernelVariant, bool>> builds;
-            for (const KernelVariant variant : variants) builds.emplace_back(variant, false);
-            if (a.adaptive) builds.emplace_back(KernelVariant::Specialised, true);
-            for (const auto& [variant, adaptive] : builds) {
-                const KernelVariantReport r = compiler.compile(data, options, variant, adaptive);
+            struct Build {
+                KernelVariant variant;
+                bool adaptive;
+                std::uint32_t wavefrontStage;
+            };
+            std::vector<Build> builds;
+            for (const KernelVariant variant : variants) builds.push_back({variant, false, gpu::WAVEFRONT_OFF});
+            if (a.adaptive) builds.push_back({KernelVariant::Specialised, true, gpu::WAVEFRONT_OFF});
+            if (a.wavefront)
+                for (std::uint32_t s = gpu::WAVEFRONT_GENERATE; s < gpu::WAVEFRONT_STAGE_COUNT; ++s)
+                    builds.push_back({KernelVariant::Specialised, false, s});
+            for (const auto& [variant, adaptive, wavefrontStage] : builds) {
+                const KernelVariantReport r = compiler.compile(data, options, variant, adaptive, wavefrontStage);
                 const std::string stage = variant == KernelVariant::General ? "general" : adaptive ? "adaptive" : r.stage;
                 std::printf("%-40s %-8s %6s %8s %6s %8s %9s %6s %9s  %s%s (k=%u)\n", label.c_str(), stage.c_str(),
                             number(r.vgprs).c_str(), number(r.spilledVgprs).c_str(), number(r.sgprs).c_str(),
@@ -136,6 +154,13 @@ int runGpuKernelsBench(const std::vector<std::string>& argv) {
                 maxVgprs = std::max(maxVgprs, r.vgprs);
                 maxScratch = std::max(maxScratch, r.scratchBytes);
                 if (!r.cached) spilledVgprs += std::max(0.0, r.spilledVgprs);
+                Totals& t = totals[wavefrontStage == gpu::WAVEFRONT_OFF ? 0 : 1];
+                t.maxVgprs = std::max(t.maxVgprs, r.vgprs);
+                t.maxScratch = std::max(t.maxScratch, r.scratchBytes);
+                if (!r.cached) {
+                    t.spilledVgprs += std::max(0.0, r.spilledVgprs);
+                    ++t.variants;
+                }
             }
         } catch (const std::exception& e) {
             std::printf("%-40s error: %s\n", label.c_str(), e.what());
@@ -143,6 +168,11 @@ int runGpuKernelsBench(const std::vector<std::string>& argv) {
         }
         std::fflush(stdout);
     }
+    if (a.wavefront && compiler.hasStatistics())
+        for (int k = 0; k < 2; ++k)
+            std::printf("%s: %zu variants, max VGPRs %s, spilled VGPRs %s, max scratch %s bytes\n", k == 0 ? "megakernel" : "wavefront",
+                        totals[k].variants, number(totals[k].maxVgprs).c_str(), number(totals[k].spilledVgprs).c_str(),
+                        number(totals[k].maxScratch).c_str());
     std::printf("kernels: %zu variants, max VGPRs %s, spilled VGPRs %s, max scratch %s bytes\n", compiler.variants(),
                 compiler.hasStatistics() ? number(maxVgprs).c_str() : "-",
                 compiler.hasStatistics() ? number(spilledVgprs).c_str() : "-",

@@ -21,7 +21,7 @@ constexpr Subcommand kSubcommands[] = {
     {"gpu", "gpu rays MESH.obj|sphere:N [W H SPP] [--rounds R] [--threads T] [--peer PATH | --build-peer | --no-peer]\n"
             "               [--max-mismatch-fraction F] [--shader-dir DIR]\n"
             "  vkrt-bench gpu scenes [DIR] [-w W] [-h H] [-r RPP] [--repeat N]\n"
-            "  vkrt-bench gpu kernels [SCENES|DIRS...] [--general] [--adaptive] [--gpu N] [--shader-dir DIR] [-k DEPTH]",
+            "  vkrt-bench gpu kernels [SCENES|DIRS...] [--general] [--adaptive] [--wavefront] [--gpu N] [--shader-dir DIR] [-k DEPTH]",
      vkrt::bench::runGpuBench},
     {"adaptive", "adaptive SCENE... [-w W] [--target E] [--reference-rpp R] [--min-rpp M]\n"
                  "               [--max-rpp M] [-k DEPTH] [--map-radius R] [--repeat N]",
