@@ -34,9 +34,14 @@ layout(constant_id = SPEC_UNIFORM_INDEX_FROM_GROUPS) const bool UNIFORM_INDEX_FR
 // round's work list, and the pixel's odd-numbered samples are also summed (render.comp).
 layout(constant_id = SPEC_ADAPTIVE) const bool ADAPTIVE = false;
 // WAVEFRONT_OFF: the megakernel (render.comp); else the one stage of the wavefront renderer this
-// pipeline runs (wavefront.glsl): the other stages' code, and the traversal where the stage traces
-// nothing, are compiled out.
-layout(constant_id = SPEC_WAVEFRONT_STAGE) const uint WAVEFRONT_STAGE = WAVEFRONT_OFF;
+// kernel is (wavefront_<stage>.comp defines VKRT_WAVEFRONT_STAGE before its includes). A constant
+// of the module, not a specialisation: each stage's SPIR-V holds only the functions its main
+// reaches, so no driver compiles the other stages' code first and drops it later.
+#ifdef VKRT_WAVEFRONT_STAGE
+const uint WAVEFRONT_STAGE = VKRT_WAVEFRONT_STAGE;
+#else
+const uint WAVEFRONT_STAGE = WAVEFRONT_OFF;
+#endif
 const bool WAVEFRONT = WAVEFRONT_STAGE != WAVEFRONT_OFF;
 // 0: nothing in the scene pushes (feature_set.cpp), and the path stack's code is compiled out.
 const bool HAS_PATH_STACK = PATH_STACK_SIZE > 0u;

@@ -5,29 +5,7 @@
 // short (host/gpu: sample_batching.h, tile_planner.h).
 #extension GL_GOOGLE_include_directive : require
 
-#include "device_host.h"
-#include "bindings.glsl"
-#include "budget.glsl"  // before sampling.h, whose loop reports through it
-#include "sampling.h"
-#include "emitter_sampling.h"
-#include "intersect.glsl"
-#include "traverse.glsl"
-#include "surface.glsl"
-#include "ray_offset.glsl"
-#include "texture.glsl"
-#include "emitters.glsl"
-#include "wavefront_state.glsl"  // before shading.glsl, whose shadow rays it may defer
-#include "shading.glsl"
-#include "environment.glsl"
-#include "integrator.glsl"
-#include "camera.glsl"
-#include "wavefront.glsl"
-
-layout(push_constant) uniform PushConstants { PassParams passes[1]; };  // read at VKRT_UNIFORM_INDEX (bindings.glsl)
-
-// 64 invocations = one 8x8 pixel block; each group of 8 lanes (lavapipe's subgroup) is a 4x2
-// patch, so lanes that run in lockstep trace neighbouring, coherent rays.
-layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
+#include "kernel.glsl"
 
 const uint NO_SAMPLE = 0xffffffffu;
 
@@ -85,49 +63,7 @@ bool adaptiveWork(PassParams pass, out uint x, out uint y, out uint first, out u
     return true;
 }
 
-// One atomic site for every failure (each inlined atomic is a per-lane loop that runs whether
-// or not a lane takes it); the first failing pixel and sample are recorded for the message.
-void reportStatus(uint pixel, uint failedSample, uint nonFinite) {
-    uint failures = failureFlags();
-    if (failures != 0u) {
-        atomicOr(status.flags.x, failures);
-        if (atomicCompSwap(status.flags.y, 0u, pixel + 1u) == 0u) status.flags.z = failedSample;
-    }
-    if (nonFinite != 0u) atomicAdd(status.flags.w, nonFinite);
-}
-
-// A stage of the wavefront renderer (wavefront.glsl): invocation i is path slot i of the wave
-// (SHADOW: shadow ray i, ACCUMULATE: band pixel i).
-void wavefrontMain() {
-    g_wave = passes[VKRT_UNIFORM_INDEX];
-    uint invocation = gl_WorkGroupID.x * 64u + gl_LocalInvocationIndex;
-    uint nonFinite = 0u;
-    uint pixel;
-    if (WAVEFRONT_STAGE == WAVEFRONT_ACCUMULATE) {
-        if (invocation >= wfBandPixels()) return;
-        pixel = wfAccumulate(invocation, nonFinite);
-    } else {
-        if (WAVEFRONT_STAGE == WAVEFRONT_SHADOW) {
-            if (invocation >= wfPaths() * wfShadowsPerPath()) return;
-            wfShadow(invocation);
-        } else {
-            if (invocation >= wfPaths()) return;
-            g_wfSlot = invocation;
-            if (WAVEFRONT_STAGE == WAVEFRONT_GENERATE) wfGenerate();
-            else if (WAVEFRONT_STAGE == WAVEFRONT_EXTEND) wfExtend();
-            else wfShade();
-        }
-        uvec2 p = wfSlotPixel(g_wfSlot);
-        pixel = p.y * frameWidth() + p.x;
-    }
-    reportStatus(pixel, wfSlotSample(g_wfSlot), nonFinite);
-}
-
 void main() {
-    if (WAVEFRONT) {
-        wavefrontMain();
-        return;
-    }
     PassParams pass = passes[VKRT_UNIFORM_INDEX];
     uint x, y, firstSample, samples;
     if (ADAPTIVE) {

@@ -128,4 +128,17 @@ uint wfAccumulate(uint p, inout uint nonFinite) {
     return index;
 }
 
+// The stages' entry (each wavefront_<stage>.comp's main): the wave's push constants, and this
+// invocation's index (a path slot, SHADOW's shadow ray, ACCUMULATE's band pixel).
+uint wfBegin() {
+    g_wave = passes[VKRT_UNIFORM_INDEX];
+    return gl_WorkGroupID.x * 64u + gl_LocalInvocationIndex;
+}
+
+// The stage's failures, if any, reported for the slot's pixel and sample.
+void wfReport() {
+    uvec2 p = wfSlotPixel(g_wfSlot);
+    reportStatus(p.y * frameWidth() + p.x, wfSlotSample(g_wfSlot), 0u);
+}
+
 #endif

@@ -49,7 +49,8 @@ uint wfSlotSample(uint slot) { return passFirstSample(g_wave) + slot / wfBandPix
 // same rays in the same order, and answers with what the SHADOW stage found. The megakernel
 // traces the ray here and now.
 bool shadowRayClear(vec3 origin, vec3 dir, float tMax) {
-    if (WAVEFRONT_STAGE == WAVEFRONT_SHADE_RECORD || WAVEFRONT_STAGE == WAVEFRONT_SHADE_RESOLVE) {
+#ifdef VKRT_DEFERRED_SHADOWS  // the shading stages' modules then hold no traversal at all
+    {
         uint j = g_wfShadows++;
         if (j >= wfShadowsPerPath()) {
             g_rayStackOverflow = true;  // the host's bound on shadow rays per hit was wrong: reported
@@ -63,8 +64,10 @@ bool shadowRayClear(vec3 origin, vec3 dir, float tMax) {
         }
         return wfLoad(field + 1u).w != 0u;
     }
+#else
     Hit ignored;
     return !traceScene(origin, dir, tMax, true, ignored);
+#endif
 }
 
 #endif

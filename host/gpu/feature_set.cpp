@@ -80,7 +80,6 @@ std::array<std::uint32_t, gpu::SPEC_COUNT> FeatureSet::specializationValues(std:
     v[gpu::SPEC_HAS_ENVIRONMENT] = environment;
     v[gpu::SPEC_ESTIMATOR] = estimator;
     v[gpu::SPEC_ADAPTIVE] = adaptive;
-    v[gpu::SPEC_WAVEFRONT_STAGE] = wavefrontStage;
     return v;
 }
 

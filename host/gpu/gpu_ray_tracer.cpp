@@ -107,7 +107,7 @@ std::uint32_t checkedBatch(const Context& context, const bvh::SceneBvh& bvh) {
 
 GpuRayTracer::Impl::Impl(const bvh::SceneBvh& bvh, const GpuRendererOptions& options, const GpuTestHooks& hooks)
     : context(contextOptions(options, hooks)), runner(context), transfers(context, runner), layout(traceLayout(context)),
-      kernels(context, layout, loadKernel(kernelSource("trace_rays", options, hooks))), batch(checkedBatch(context, bvh)),
+      kernels(context, layout, kernelSource("trace_rays", options, hooks), loadKernel(kernelSource("trace_rays", options, hooks))), batch(checkedBatch(context, bvh)),
       nodeData(gpuNodes(bvh)), features(traversalFeatureSet(bvh, nodeData.packed)),
       nodes(context, "BVH nodes", stableTexelBufferBytes(nodeBytes(nodeData)), kTexels, MemoryUse::Device),
       prims(context, "primitives", stableTexelBufferBytes(paddedBytes(bvh.prims)), kTexels, MemoryUse::Device),

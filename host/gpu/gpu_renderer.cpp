@@ -35,7 +35,7 @@ struct GpuRenderer::Impl {
     Impl(const GpuRendererOptions& options, const GpuTestHooks& hooks)
         : source(kernelSource("render", options, hooks)), context(contextOptions(options, hooks)), runner(context),
           transfers(context, runner), layout(renderLayout(context)) {
-        kernels.emplace(context, layout, loadKernel(source));
+        kernels.emplace(context, layout, source, loadKernel(source));
     }
 
     KernelSource source;
@@ -75,7 +75,7 @@ double GpuRenderer::reloadKernel() {
     std::vector<std::uint32_t> spirv = loadKernel(impl_->source);  // throws before anything is replaced
     impl_->context.device().waitIdle();
     impl_->kernels.reset();  // saves the pipeline cache file; the new cache reads it back
-    impl_->kernels.emplace(impl_->context, impl_->layout, spirv);
+    impl_->kernels.emplace(impl_->context, impl_->layout, impl_->source, spirv);
     return secondsSince(start);
 }
 

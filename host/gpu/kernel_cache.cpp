@@ -24,8 +24,9 @@ std::vector<SpecConstant> kernelConstants(const FeatureSet& features, std::uint3
     return constants;
 }
 
-KernelCache::KernelCache(const Context& context, const KernelLayout& layout, const std::vector<std::uint32_t>& spirv)
-    : context_(context), layout_(layout), module_(makeShaderModule(context, spirv)),
+KernelCache::KernelCache(const Context& context, const KernelLayout& layout, const KernelSource& source,
+                         const std::vector<std::uint32_t>& spirv)
+    : context_(context), layout_(layout), modules_(context, source, spirv),
       file_(openPipelineCacheFile(context.info())), cache_(context.device(), cacheInfo(file_)) {
     for (const std::string& note : file_.notes) std::cerr << "vkrt: note: " << note << "\n";
 }
@@ -53,7 +54,8 @@ const vk::raii::Pipeline& KernelCache::pipeline(const FeatureSet& features, std:
 
     const auto start = std::chrono::steady_clock::now();
     const std::vector<SpecConstant> constants = kernelConstants(features, samplesPerDispatch, context_.info());
-    vk::raii::Pipeline created = makeComputePipeline(context_, &cache_, layout_.pipelineLayout(), *module_, constants,
+    const vk::ShaderModule module = *modules_.module(features.wavefrontStage);
+    vk::raii::Pipeline created = makeComputePipeline(context_, &cache_, layout_.pipelineLayout(), module, constants,
                                                      vk::PipelineCreateFlagBits::eDispatchBase);
     if (creationSeconds) *creationSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return pipelines_.emplace(key, std::move(created)).first->second;

@@ -15,6 +15,7 @@
 #include "compute_pipeline.h"
 #include "context.h"
 #include "feature_set.h"
+#include "kernel_modules.h"
 #include "pipeline_cache_file.h"
 
 namespace vkrt {
@@ -25,9 +26,11 @@ std::vector<SpecConstant> kernelConstants(const FeatureSet& features, std::uint3
 
 class KernelCache {
 public:
-    KernelCache(const Context& context, const KernelLayout& layout, const std::vector<std::uint32_t>& spirv);
+    // `spirv`: the kernel `source` names (the megakernel's, or trace_rays'); the wavefront stages'
+    // modules come from where `source` says, on first use (kernel_modules.h).
+    KernelCache(const Context& context, const KernelLayout& layout, const KernelSource& source, const std::vector<std::uint32_t>& spirv);
 
-    // The pipeline for `features` computing `samplesPerDispatch` samples per invocation
+    // The pipeline for `features` (its wavefrontStage picks the module) computing `samplesPerDispatch` samples per invocation
     // (sample_batching.h); *creationSeconds gets the time spent creating it (0 if cached).
     const vk::raii::Pipeline& pipeline(const FeatureSet& features, std::uint32_t samplesPerDispatch,
                                        double* creationSeconds = nullptr);
@@ -42,7 +45,7 @@ public:
 private:
     const Context& context_;
     const KernelLayout& layout_;
-    vk::raii::ShaderModule module_;
+    KernelModules modules_;
     PipelineCacheFile file_;
     vk::raii::PipelineCache cache_;
     std::map<std::pair<FeatureSet, std::uint32_t>, vk::raii::Pipeline> pipelines_;

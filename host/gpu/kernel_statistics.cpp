@@ -8,6 +8,7 @@
 #include "context.h"
 #include "kernel_cache.h"
 #include "kernel_layouts.h"
+#include "kernel_modules.h"
 #include "kernel_source.h"
 #include "pipeline_statistics.h"
 
@@ -26,11 +27,11 @@ ContextOptions compileOnlyContext(const GpuRendererOptions& options) {
 struct KernelStatisticsCompiler::Impl {
     explicit Impl(const GpuRendererOptions& options)
         : source(kernelSource("render", options, {})), context(compileOnlyContext(options)), layout(renderLayout(context)),
-          module(makeShaderModule(context, loadKernel(source))) {}
+          modules(context, source, loadKernel(source)) {}
     KernelSource source;
     Context context;
     KernelLayout layout;
-    vk::raii::ShaderModule module;
+    KernelModules modules;
     std::map<std::pair<FeatureSet, std::uint32_t>, KernelVariantReport> done;
 };
 
@@ -64,7 +65,8 @@ KernelVariantReport KernelStatisticsCompiler::compile(const GpuSceneData& data, 
     if (impl_->context.statisticsEnabled()) flags |= vk::PipelineCreateFlagBits::eCaptureStatisticsKHR;
     const auto start = std::chrono::steady_clock::now();
     const vk::raii::Pipeline pipeline =
-        makeComputePipeline(impl_->context, nullptr, impl_->layout.pipelineLayout(), *impl_->module, constants, flags);
+        makeComputePipeline(impl_->context, nullptr, impl_->layout.pipelineLayout(), *impl_->modules.module(wavefrontStage),
+                            constants, flags);
     r.compileSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     for (const ExecutableStatistics& e : pipelineStatistics(impl_->context, *pipeline)) {
         r.vgprs = e.get("VGPRs");

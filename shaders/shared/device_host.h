@@ -442,11 +442,10 @@ VKRT_CONST uint SPEC_HAS_ENVIRONMENT = 21;  // the scene has an environment map
 VKRT_CONST uint SPEC_ESTIMATOR = 22;        // ESTIMATOR_*, or ESTIMATOR_FROM_FRAME
 VKRT_CONST uint SPEC_UNIFORM_INDEX_FROM_GROUPS = 23;  // lavapipe's recompile workaround (bindings.glsl); set per device
 VKRT_CONST uint SPEC_ADAPTIVE = 24;         // adaptive sampling's rounds: a work list of pixels and sample ranges
-VKRT_CONST uint SPEC_WAVEFRONT_STAGE = 25;  // WAVEFRONT_*: the megakernel, or one stage of the wavefront renderer
-VKRT_CONST uint SPEC_COUNT = 26;
+VKRT_CONST uint SPEC_COUNT = 25;
 
-// The wavefront renderer's stages (shaders/wavefront.glsl, host/gpu/wavefront_renderer.h): one
-// render.comp compiled per stage by SPEC_WAVEFRONT_STAGE, each with only its stage's code.
+// The wavefront renderer's stages (shaders/wavefront.glsl, host/gpu/wavefront_renderer.h), each a
+// kernel of its own (shaders/wavefront_<stage>.comp) with the megakernel's constants.
 VKRT_CONST uint WAVEFRONT_OFF = 0u;            // the megakernel: a sample's whole path per invocation
 VKRT_CONST uint WAVEFRONT_GENERATE = 1u;       // camera rays into the wave's path slots
 VKRT_CONST uint WAVEFRONT_EXTEND = 2u;         // closest hit of each live path's ray

@@ -1,0 +1,14 @@
+#version 460
+// The wavefront renderer's SHADE_RESOLVE stage (wavefront.glsl): a hit's shading with those rays' visibility: radiance and the next ray.
+#extension GL_GOOGLE_include_directive : require
+#define VKRT_DEFERRED_SHADOWS  // shadow rays go to the SHADOW stage (wavefront_state.glsl)
+#define VKRT_WAVEFRONT_STAGE WAVEFRONT_SHADE_RESOLVE
+#include "kernel.glsl"
+#include "wavefront.glsl"
+
+void main() {
+    g_wfSlot = wfBegin();
+    if (g_wfSlot >= wfPaths()) return;
+    wfShade();
+    wfReport();
+}
