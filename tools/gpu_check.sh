@@ -15,11 +15,12 @@
 # Stages and files (each also logged to progress.log):
 #   device     device.txt       vkrt --list-devices (the device, driver, queue family, timestamp support, limits)
 #   agreement  agreement.txt    GPU vs CPU on every course scene, XML and JSON (env maps, textures), validation on;
+#                               the wavefront stages against the megakernel on a scene per feature;
 #              agreement.xml    gtest's report, one entry per test
 #   rays       rays.txt         vkrt-bench gpu rays: >= 16M rays of each kind on a mesh that fills the frame (Buddha),
 #                               wall-clock and timestamp (kernel) rates, GPU hits checked against the CPU's
 #   renders    renders.txt      whole-scene renders at 1920x1080, 64 rpp: a cold process (empty pipeline caches)
-#                               then a warm one, per scene
+#                               then a warm one, per scene and per GPU kernel (--gpu-kernel megakernel, wavefront)
 #   scenes     gpu_scenes.txt   vkrt-bench gpu scenes: every upstream scene, specialised and general kernel vs CPU
 #   summary    summary.txt      one line per stage and one line for all
 set -uo pipefail
@@ -112,7 +113,7 @@ if [ "$dry" = 1 ]; then
   render_size=(-w 32 -h 18 -r 2)
   renders=("$bin/scenes/glass_and_instances.xml" "$shared/scenes/json/diffuseScene_multipleSpheres.json")
   [ -d "$bin/scenes" ] || renders[0]=$here/../scenes/glass_and_instances.xml
-  agreement_filter='GpuCpuAgreement.EveryJsonSceneAt64x64With1Rpp'
+  agreement_filter='GpuCpuAgreement.EveryJsonSceneAt64x64With1Rpp:WavefrontRender.TheImageDoesNotDependOnThePathsInFlight'
   scenes_args=("$scratch/scenes" -w 16 -h 16 -r 1)
   mkdir -p "$scratch/scenes"
   cp "$shared/scenes/upstream/areaLight.xml" "$shared/scenes/upstream/boxSphereTest.xml" "$scratch/scenes/"
@@ -125,20 +126,22 @@ else
   renders=("$bin/scenes/glass_and_instances.xml" "$shared/scenes/upstream/dragons00.xml"
            "$shared/scenes/json/diffuseScene_multipleSpheres.json" "$shared/scenes/json/emitterTest_OBJ.json")
   [ -d "$bin/scenes" ] || renders[0]=$here/../scenes/glass_and_instances.xml
-  agreement_filter='GpuCpuAgreement.*:JsonTwins.*:ProgressiveRender.*'
+  agreement_filter='GpuCpuAgreement.*:JsonTwins.*:ProgressiveRender.*:WavefrontRender*'
   scenes_args=("$shared/scenes/upstream" -w 256 -h 256 -r 16)
 fi
 
 renders_stage() {
   for scene in "${renders[@]}"; do
     [ -f "$scene" ] || { echo "missing $scene"; continue; }
-    for run in cold warm; do
-      # Cold: a fresh process with empty pipeline caches (vkrt's and the NVIDIA driver's own);
-      # warm: the same caches again, as a user's second render.
-      [ "$run" = cold ] && rm -rf "$scratch/cache" && mkdir -p "$scratch/cache"
-      line=$(VKRT_PIPELINE_CACHE_DIR="$scratch/cache/vkrt" __GL_SHADER_DISK_CACHE_PATH="$scratch/cache" \
-             "$vkrt" "$scene" "${render_size[@]}" --device gpu -o "$scratch/render.png" 2>&1 | tail -1)
-      echo "render $run $(basename "$scene"): $line"
+    for kernel in megakernel wavefront; do
+      for run in cold warm; do
+        # Cold: a fresh process with empty pipeline caches (vkrt's and the NVIDIA driver's own);
+        # warm: the same caches again, as a user's second render.
+        [ "$run" = cold ] && rm -rf "$scratch/cache" && mkdir -p "$scratch/cache"
+        line=$(VKRT_PIPELINE_CACHE_DIR="$scratch/cache/vkrt" __GL_SHADER_DISK_CACHE_PATH="$scratch/cache" \
+               "$vkrt" "$scene" "${render_size[@]}" --device gpu --gpu-kernel "$kernel" -o "$scratch/render.png" 2>&1 | tail -1)
+        echo "render $kernel $run $(basename "$scene"): $line"
+      done
     done
   done
 }

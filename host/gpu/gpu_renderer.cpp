@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <optional>
 
 #include "buffer.h"
@@ -61,6 +62,19 @@ struct GpuRenderer::Impl {
 
 GpuKernel chooseGpuKernel(const DeviceInfo& device) { return device.lavapipe ? GpuKernel::Megakernel : GpuKernel::Wavefront; }
 
+namespace {
+
+// Auto's kernel: VKRT_GPU_KERNEL=megakernel or wavefront overrides the device's choice, so that
+// whole test suites run on the other kernel (tests/CMakeLists.txt) without a flag in every call.
+GpuKernel autoKernel(const DeviceInfo& device) {
+    const char* forced = std::getenv("VKRT_GPU_KERNEL");
+    if (forced && std::string(forced) == "wavefront") return GpuKernel::Wavefront;
+    if (forced && std::string(forced) == "megakernel") return GpuKernel::Megakernel;
+    return chooseGpuKernel(device);
+}
+
+}  // namespace
+
 GpuRenderer::GpuRenderer(const GpuRendererOptions& options, const GpuTestHooks& hooks)
     : impl_(std::make_unique<Impl>(options, hooks)) {}
 GpuRenderer::~GpuRenderer() = default;
@@ -108,7 +122,7 @@ Image GpuRenderer::render(const GpuSceneData& data, const RenderOptions& options
     stats.features = in.features.describe();
     stats.generalKernel = settings.variant == KernelVariant::General;
     stats.samplesPerDispatch = batching.perDispatch;
-    const GpuKernel kernel = settings.kernel == GpuKernel::Auto ? chooseGpuKernel(impl_->context.info()) : settings.kernel;
+    const GpuKernel kernel = settings.kernel == GpuKernel::Auto ? autoKernel(impl_->context.info()) : settings.kernel;
     if (kernel == GpuKernel::Wavefront) return renderWavefront(data, in, options, settings.wavePaths, stats, statsOut);
     const vk::raii::Pipeline& pipeline = impl_->kernels->pipeline(in.features, batching.perDispatch, &stats.pipelineSeconds);
 
