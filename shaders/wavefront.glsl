@@ -15,8 +15,6 @@ SampleKey wfSampleKey(uvec2 pixel, uint sampleNumber) {
     return key;
 }
 
-bool wfLive() { return (wfLoad(WF_RADIANCE).w & WF_LIVE) != 0u; }
-
 PathRay wfLoadRay() {
     vec4 a = wfLoadFloats(WF_ORIGIN);
     vec4 b = wfLoadFloats(WF_DIR);
@@ -39,11 +37,22 @@ void wfGenerate() {
     CameraRay camera = cameraSample(pixel.x, pixel.y, wfSlotSample(g_wfSlot), key);
     wfStoreRay(PathRay(camera.origin, camera.dir, vec3(1.0), 0u, 0.0));
     wfStore(WF_RADIANCE, uvec4(floatBitsToUint(vec3(0.0)), WF_LIVE));
+    wfSetQueueEntry(0u, g_wfSlot, g_wfSlot);  // round 0's queue: every path, in slot order
+    if (g_wfSlot == 0u) {
+        status.paths.y = wfPaths();
+        status.paths.z = 0u;
+        status.queueGroups[0] = uvec4((wfPaths() + 63u) / 64u, 1u, 1u, 0u);
+        status.queueGroups[1] = uvec4(1u, 1u, 1u, 0u);
+        status.queueGroups[2] = uvec4(0u, 1u, 1u, 0u);
+    }
 }
 
-// EXTEND: the closest hit of a live path's ray.
+// Round r's queue of live paths and its length.
+uint wfQueueLength() { return wfRoundQueue() == 0u ? status.paths.y : status.paths.z; }
+
+// EXTEND: the closest hit of a live path's ray. Its first invocation empties the queues this round
+// appends to (read by no stage before SHADE_RECORD).
 void wfExtend() {
-    if (!wfLive()) return;
     PathRay ray = wfLoadRay();
     Hit hit;
     bool found = traceScene(ray.origin, ray.dir, FLT_MAX, false, hit);
@@ -74,7 +83,11 @@ void wfShade() {
     shadeRay(ray, h.w != 0u, hit, key, radiance, q);
     flushQueue(q);
     if (WAVEFRONT_STAGE == WAVEFRONT_SHADE_RECORD) {
-        wfStore(WF_BARY, uvec4(b.xy, g_wfShadows, 0u));
+        if (g_wfShadows > 0u) {
+            uint first = atomicAdd(status.paths.w, g_wfShadows);
+            for (uint j = 0u; j < g_wfShadows; ++j) wfSetQueueEntry(WF_SHADOW_QUEUE, first + j, g_wfSlot + j * wfPaths());
+            wfCountGroups(WF_SHADOW_QUEUE, first, g_wfShadows);
+        }
         return;
     }
     bool live = !g_budgetExceeded;
@@ -87,15 +100,22 @@ void wfShade() {
     }
     if (live) wfStoreRay(ray);
     wfStore(WF_RADIANCE, uvec4(floatBitsToUint(radiance), g_pathTop | (live ? WF_LIVE : 0u)));
-    if (!live) atomicAdd(status.paths.x, 1u);
+    if (!live) {
+        atomicAdd(status.paths.x, 1u);
+    } else {
+        uint next = 1u - wfRoundQueue();
+        uint index = next == 0u ? atomicAdd(status.paths.y, 1u) : atomicAdd(status.paths.z, 1u);
+        wfSetQueueEntry(next, index, g_wfSlot);
+        wfCountGroups(next, index, 1u);
+    }
 }
 
-// SHADOW: invocation i traces shadow ray i / paths of path i % paths, if its hit recorded one.
+// SHADOW: invocation i traces the round's shadow ray i (slot + j * paths, SHADE_RECORD's queue).
 void wfShadow(uint invocation) {
+    uint entry = wfQueueEntry(WF_SHADOW_QUEUE, invocation);
     uint paths = wfPaths();
-    g_wfSlot = invocation % paths;
-    uint j = invocation / paths;
-    if (!wfLive() || j >= wfLoad(WF_BARY).z) return;
+    g_wfSlot = entry % paths;
+    uint j = entry / paths;
     sampleTime = wfLoadFloats(WF_WEIGHT).w;
     uint field = WF_SHADOWS + 2u * j;
     vec4 a = wfLoadFloats(field);

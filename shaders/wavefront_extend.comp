@@ -6,8 +6,17 @@
 #include "wavefront.glsl"
 
 void main() {
-    g_wfSlot = wfBegin();
-    if (g_wfSlot >= wfPaths()) return;
+    uint index = wfBegin();
+    if (index == 0u) {  // the queues this round appends to start empty (no stage reads them before SHADE_RECORD)
+        uint next = 1u - wfRoundQueue();
+        if (next == 1u) status.paths.z = 0u;
+        else status.paths.y = 0u;
+        status.paths.w = 0u;
+        status.queueGroups[next].x = 1u;
+        status.queueGroups[WF_SHADOW_QUEUE].x = 0u;
+    }
+    if (index >= wfQueueLength()) return;
+    g_wfSlot = wfQueueEntry(wfRoundQueue(), index);
     wfExtend();
     wfReport();
 }

@@ -7,8 +7,9 @@
 #include "wavefront.glsl"
 
 void main() {
-    g_wfSlot = wfBegin();
-    if (g_wfSlot >= wfPaths()) return;
+    uint index = wfBegin();
+    if (index >= wfQueueLength()) return;
+    g_wfSlot = wfQueueEntry(wfRoundQueue(), index);
     wfShade();
     wfReport();
 }

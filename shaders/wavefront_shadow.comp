@@ -7,7 +7,7 @@
 
 void main() {
     uint invocation = wfBegin();
-    if (invocation >= wfPaths() * wfShadowsPerPath()) return;
+    if (invocation >= status.paths.w) return;
     wfShadow(invocation);
     wfReport();
 }

@@ -9,8 +9,15 @@
 //   4 HIT       t, instance, primitive, found (0/1)  5 BARY     barycentrics, shadow rays recorded
 //   6 ..        per shadow ray j: origin and tMax, then direction and visibility (0/1)
 //   then        per stack entry e: origin/depth, direction/bounce pdf, weight (integrator.glsl's PathRay)
+// After the fields, the queues (one slot index per texel, in x): the live paths of even rounds and
+// of odd rounds (a round reads one and SHADE_RESOLVE appends the paths that go on to the other),
+// then the round's shadow rays (slot + j * paths). RenderStatus::paths counts them: y and z the
+// two path queues, w the shadow rays; x the paths ended (read by the host). Appends go through
+// atomics, so a queue's order varies from run to run; the image does not, since every entry names
+// its slot and a slot's work depends only on the slot.
 // The push constants say which wave: tile = the band (x, y, width, height), pass.x = its first
-// sample, pass.w = its samples, pass.y = shadow rays per path (the most one hit can cast).
+// sample, pass.w = its samples, pass.y = shadow rays per path (the most one hit can cast), pass.z =
+// the round's parity (which path queue it reads).
 #ifndef VKRT_WAVEFRONT_STATE_GLSL
 #define VKRT_WAVEFRONT_STATE_GLSL
 
@@ -36,6 +43,27 @@ uvec4 wfLoad(uint field) { return imageLoad(accumTexels, wfTexel(field, g_wfSlot
 void wfStore(uint field, uvec4 value) { imageStore(accumTexels, wfTexel(field, g_wfSlot), value); }
 vec4 wfLoadFloats(uint field) { return uintBitsToFloat(wfLoad(field)); }
 void wfStoreFloats(uint field, vec4 value) { wfStore(field, floatBitsToUint(value)); }
+
+// The queues after the fields (WavefrontPathLayout::texelsPerPath on the host counts them too).
+uint wfFields() { return WF_SHADOWS + 2u * wfShadowsPerPath() + 3u * PATH_STACK_SIZE; }
+int wfQueueTexel(uint queue, uint index) { return int(frameWidth() * frameHeight() + (wfFields() + queue) * wfPaths() + index); }
+uint wfQueueEntry(uint queue, uint index) { return imageLoad(accumTexels, wfQueueTexel(queue, index)).x; }
+void wfSetQueueEntry(uint queue, uint index, uint value) { imageStore(accumTexels, wfQueueTexel(queue, index), uvec4(value, 0u, 0u, 0u)); }
+const uint WF_SHADOW_QUEUE = 2u;  // queues 0 and 1: the path queues; the shadow queue spans shadowsPerPath
+uint wfRoundQueue() { return passWorkgroups(g_wave) & 1u; }  // pass.z: the round's parity
+
+// Entries [first, first + n) were just appended to queue q: one more workgroup for each multiple of
+// 64 among them, so that the queue's dispatch (RenderStatus::queueGroups) covers it. A path queue
+// starts at one workgroup (its first invocation has work even when the queue is empty: emptying the
+// next one), so entry 0 adds none there.
+void wfCountGroups(uint q, uint first, uint n) {
+    uint base = q == WF_SHADOW_QUEUE ? 0u : 1u;
+    uint before = first == 0u ? 0u : (first - 1u) / 64u + 1u;  // multiples of 64 below first
+    uint upTo = first + n == 0u ? 0u : (first + n - 1u) / 64u + 1u;  // multiples of 64 below first + n
+    uint added = upTo - before;
+    if (base == 1u && first == 0u) added -= 1u;  // entry 0: the group the queue starts with
+    if (added > 0u) atomicAdd(status.queueGroups[q].x, added);
+}
 
 // The pixel and sample of path slot `slot` of the wave.
 uvec2 wfSlotPixel(uint slot) {

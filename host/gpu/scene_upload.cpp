@@ -87,8 +87,11 @@ SceneUpload::SceneUpload(const Context& context, Transfers& transfers, const Ker
     buffers_.reserve(plan.size());
     for (std::size_t binding = 0; binding < plan.size(); ++binding) {
         const BufferPlan& p = plan[binding];
-        const MemoryUse use = binding == gpu::BINDING_STATUS ? MemoryUse::Shared : MemoryUse::Device;
-        buffers_.emplace_back(context, p.name, p.bytes, usageOf(p.kind), use);
+        const bool status = binding == gpu::BINDING_STATUS;
+        const MemoryUse use = status ? MemoryUse::Shared : MemoryUse::Device;
+        // The status also holds the wavefront stages' dispatch sizes (RenderStatus::queueGroups).
+        const vk::BufferUsageFlags usage = usageOf(p.kind) | (status ? vk::BufferUsageFlagBits::eIndirectBuffer : vk::BufferUsageFlags{});
+        buffers_.emplace_back(context, p.name, p.bytes, usage, use);
         bytes_ += p.bytes;
     }
     // Every table in one batch of staging copies (Transfers::uploadAll), each padded with zeros to

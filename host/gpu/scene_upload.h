@@ -60,6 +60,7 @@ public:
 
     vk::DescriptorSet descriptorSet() const { return *set_; }
     const Buffer& accum() const { return buffers_[gpu::BINDING_ACCUM]; }
+    vk::Buffer statusBuffer() const { return buffers_[gpu::BINDING_STATUS].handle(); }
     // Mapped: the host reads it after every submission.
     const gpu::RenderStatus& status() const { return *reinterpret_cast<const gpu::RenderStatus*>(buffers_[gpu::BINDING_STATUS].mapped()); }
     std::uint64_t bytes() const { return bytes_; }

@@ -13,11 +13,13 @@
 
 namespace vkrt {
 
-// One path's texels: six fields, two per shadow ray of a hit, three per pending ray of its stack.
+// One path's texels (shaders/wavefront_state.glsl): six fields, two per shadow ray of a hit, three
+// per pending ray of its stack; then its entries in the queues: one in each of the two path queues,
+// one per shadow ray in the shadow queue.
 struct WavefrontPathLayout {
     std::uint32_t shadowsPerPath = 0;  // the most shadow rays one hit can ask for
     std::uint32_t stackEntries = 0;    // FeatureSet::pathStackSize
-    std::uint32_t texelsPerPath() const { return 6 + 2 * shadowsPerPath + 3 * stackEntries; }
+    std::uint32_t texelsPerPath() const { return 6 + 2 * shadowsPerPath + 3 * stackEntries + 2 + shadowsPerPath; }
 };
 
 // The most shadow rays shadeRay (shaders/integrator.glsl) asks for at one hit: one per point light,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstddef>
 #include <string>
 
 #include "float_range.h"
@@ -27,36 +28,52 @@ std::uint32_t groupsFor(std::uint64_t invocations) { return static_cast<std::uin
 
 class StageRecorder {
 public:
-    StageRecorder(const vk::raii::CommandBuffer& commands, const GpuRenderDevice& device, vk::DescriptorSet set,
+    StageRecorder(const vk::raii::CommandBuffer& commands, const GpuRenderDevice& device, const SceneUpload& scene,
                   const std::array<const vk::raii::Pipeline*, gpu::WAVEFRONT_STAGE_COUNT>& pipelines, const gpu::PassParams& wave)
-        : commands_(commands), layout_(device.layout.pipelineLayout()), pipelines_(pipelines), wave_(wave) {
+        : commands_(commands), layout_(device.layout.pipelineLayout()), status_(scene.statusBuffer()), pipelines_(pipelines),
+          wave_(wave) {
+        const vk::DescriptorSet set = scene.descriptorSet();
         commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, layout_, 0, set, {});
         commands.pushConstants<gpu::PassParams>(layout_, vk::ShaderStageFlagBits::eCompute, 0, wave);
+    }
+
+    // Rounds [first, first + count): pass.z carries each one's parity (the path queue it reads,
+    // wavefront_state.glsl); each stage covers its queue by an indirect dispatch.
+    void rounds(std::uint32_t first, std::uint32_t count, std::uint32_t shadowsPerPath) {
+        for (std::uint32_t round = first; round < first + count; ++round) {
+            const std::uint32_t q = round & 1u;
+            wave_.pass.z = q;
+            commands_.pushConstants<gpu::PassParams>(layout_, vk::ShaderStageFlagBits::eCompute, 0, wave_);
+            queueStage(gpu::WAVEFRONT_EXTEND, q);
+            if (shadowsPerPath > 0) {
+                queueStage(gpu::WAVEFRONT_SHADE_RECORD, q);
+                queueStage(gpu::WAVEFRONT_SHADOW, 2);
+            }
+            queueStage(gpu::WAVEFRONT_SHADE_RESOLVE, q);
+        }
     }
 
     // One stage over `invocations` lanes, after everything recorded before it.
     void stage(std::uint32_t which, std::uint64_t invocations) {
         if (invocations == 0) return;
-        computeToComputeBarrier(commands_);
+        computeToIndirectBarrier(commands_);
         commands_.bindPipeline(vk::PipelineBindPoint::eCompute, **pipelines_[which]);
         // Height and depth 1: the kernels read their uniforms at gl_NumWorkGroups.z - 1 (bindings.glsl).
         commands_.dispatch(groupsFor(invocations), 1, 1);
     }
 
-    void steps(std::uint32_t count, std::uint64_t paths, std::uint32_t shadowsPerPath) {
-        for (std::uint32_t i = 0; i < count; ++i) {
-            stage(gpu::WAVEFRONT_EXTEND, paths);
-            if (shadowsPerPath > 0) {
-                stage(gpu::WAVEFRONT_SHADE_RECORD, paths);
-                stage(gpu::WAVEFRONT_SHADOW, paths * shadowsPerPath);
-            }
-            stage(gpu::WAVEFRONT_SHADE_RESOLVE, paths);
-        }
+    // One stage over queue q's entries: as many workgroups as the stages that appended to it counted
+    // (RenderStatus::queueGroups[q], written on the device), so ended paths cost nothing.
+    void queueStage(std::uint32_t which, std::uint32_t q) {
+        computeToIndirectBarrier(commands_);
+        commands_.bindPipeline(vk::PipelineBindPoint::eCompute, **pipelines_[which]);
+        commands_.dispatchIndirect(status_, offsetof(gpu::RenderStatus, queueGroups) + q * sizeof(glm::uvec4));
     }
 
 private:
     const vk::raii::CommandBuffer& commands_;
     vk::PipelineLayout layout_;
+    vk::Buffer status_;
     const std::array<const vk::raii::Pipeline*, gpu::WAVEFRONT_STAGE_COUNT>& pipelines_;
     gpu::PassParams wave_;
 };
@@ -116,13 +133,13 @@ void renderWavefront(const GpuRenderDevice& device, SceneUpload& gpuScene, const
         const gpu::PassParams params = passParams(wave.band, wave.firstSample, wave.samples);
         gpu::PassParams waveParams = params;
         waveParams.pass.y = pathLayout.shadowsPerPath;
-        waveParams.pass.z = groupsFor(wave.paths());
+        waveParams.pass.z = 0;  // the round's parity (StageRecorder::rounds)
         const std::uint64_t paths = wave.paths();
         ended += static_cast<std::uint32_t>(paths);
         std::uint32_t steps = 0;
         auto submit = [&](const std::function<void(StageRecorder&)>& record) {
             const double seconds = device.runner.run([&](const vk::raii::CommandBuffer& commands) {
-                StageRecorder recorder(commands, device, gpuScene.descriptorSet(), pipelines, waveParams);
+                StageRecorder recorder(commands, device, gpuScene, pipelines, waveParams);
                 record(recorder);
                 computeToHostBarrier(commands);
             });
@@ -134,7 +151,7 @@ void renderWavefront(const GpuRenderDevice& device, SceneUpload& gpuScene, const
         };
         submit([&](StageRecorder& r) {
             r.stage(gpu::WAVEFRONT_GENERATE, paths);
-            r.steps(stepsPerSubmission, paths, pathLayout.shadowsPerPath);
+            r.rounds(0, stepsPerSubmission, pathLayout.shadowsPerPath);
             if (!branches) r.stage(gpu::WAVEFRONT_ACCUMULATE, wave.band.pixels());
         });
         steps += stepsPerSubmission;
@@ -144,7 +161,7 @@ void renderWavefront(const GpuRenderDevice& device, SceneUpload& gpuScene, const
             if (!branches || steps >= kMaxSteps)
                 throw GpuKernelError("the wavefront kernels left " + std::to_string(ended - gpuScene.status().paths.x) +
                                      " paths unfinished after " + std::to_string(steps) + " steps");
-            submit([&](StageRecorder& r) { r.steps(stepsPerSubmission, paths, pathLayout.shadowsPerPath); });
+            submit([&](StageRecorder& r) { r.rounds(steps, stepsPerSubmission, pathLayout.shadowsPerPath); });
             steps += stepsPerSubmission;
         }
         if (branches) submit([&](StageRecorder& r) { r.stage(gpu::WAVEFRONT_ACCUMULATE, wave.band.pixels()); });

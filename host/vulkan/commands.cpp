@@ -64,6 +64,13 @@ void computeToComputeBarrier(const vk::raii::CommandBuffer& commands) {
     commands.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader, {}, barrier, {}, {});
 }
 
+void computeToIndirectBarrier(const vk::raii::CommandBuffer& commands) {
+    vk::MemoryBarrier barrier(vk::AccessFlagBits::eShaderWrite,
+                              vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite | vk::AccessFlagBits::eIndirectCommandRead);
+    commands.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader,
+                             vk::PipelineStageFlagBits::eComputeShader | vk::PipelineStageFlagBits::eDrawIndirect, {}, barrier, {}, {});
+}
+
 void computeToHostBarrier(const vk::raii::CommandBuffer& commands) {
     vk::MemoryBarrier barrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eHostRead);
     commands.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eHost, {}, barrier, {}, {});

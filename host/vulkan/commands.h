@@ -38,6 +38,9 @@ private:
 // A memory barrier making compute-shader writes visible to later compute reads and writes
 // (successive sample passes add to the same pixels).
 void computeToComputeBarrier(const vk::raii::CommandBuffer& commands);
+// The same, and the writes also visible to a later vkCmdDispatchIndirect's read of its arguments
+// (kernels that size the next dispatch).
+void computeToIndirectBarrier(const vk::raii::CommandBuffer& commands);
 // Compute-shader writes -> host reads after the fence (results read through a mapping).
 void computeToHostBarrier(const vk::raii::CommandBuffer& commands);
 

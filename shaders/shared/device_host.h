@@ -357,7 +357,12 @@ struct RenderStatus {
     uvec4 flags;       // x: STATUS_* bits, y: first offending pixel index + 1 (0: none), z: its sample,
                        // w: number of samples whose radiance was NaN/Inf (replaced by black)
     uvec4 paths;       // wavefront kernels (WAVEFRONT_*): x counts the paths that ended since the render
-                       // began (the host's waves are done when it reaches their paths); y, z, w unused
+                       // began (the host's waves are done when it reaches their paths); y, z the
+                       // lengths of the two path queues, w of the shadow-ray queue (wavefront_state.glsl)
+    // The dispatches of the queues' stages (VkDispatchIndirectCommand in xyz; w unused), sized by
+    // the stages that append: [0], [1] the path queues' (at least one workgroup, whose first
+    // invocation empties the next queue), [2] the shadow queue's.
+    uvec4 queueGroups[3];
 };
 // The host's reads (render.comp writes the lanes with atomics, which need the member itself).
 VKRT_FN uint statusFailures(RenderStatus s) { return s.flags.x; }
@@ -483,7 +488,7 @@ static_assert(sizeof(TextureInfo) == 16 * TEXTURE_INFO_TEXELS);
 static_assert(sizeof(EmitterRecord) == 16 * EMITTER_TEXELS);
 static_assert(sizeof(EmitterTriangle) == 16 * EMITTER_TRIANGLE_TEXELS);
 static_assert(sizeof(FrameParams) == 224);
-static_assert(sizeof(RenderStatus) == 32);
+static_assert(sizeof(RenderStatus) == 80);
 static_assert(sizeof(PassParams) == 32);
 static_assert(sizeof(TraceRayInput) == 32);
 static_assert(sizeof(TraceHitOutput) == 16);
