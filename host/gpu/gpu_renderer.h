@@ -33,9 +33,9 @@ namespace vkrt {
 // Auto picks by device (chooseGpuKernel).
 enum class GpuKernel { Auto, Megakernel, Wavefront };
 
-// Auto's choice: the megakernel on lavapipe, where it renders 3-17 times faster than the stages (a
-// CPU runs one lane group per core and hides no latency with occupancy, so every stage's trip through
-// memory is pure cost); the wavefront stages on every other device, whose compilers give the
+// Auto's choice: the megakernel on lavapipe, where it renders 1.6-3.1 times faster than the stages
+// (a CPU runs one lane group per core and hides no latency with occupancy, so every stage's trip
+// through memory is pure cost); the wavefront stages on every other device, whose compilers give the
 // megakernel 232-256 registers per lane, spills and 4 waves per SIMD but the stages at most 120
 // registers, no spills and 8-32 waves (RADV, docs/BENCHMARKS.md "Kernel registers").
 GpuKernel chooseGpuKernel(const DeviceInfo& device);
