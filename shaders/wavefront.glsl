@@ -29,15 +29,28 @@ void wfStoreRay(PathRay r) {
     wfStoreFloats(WF_WEIGHT, vec4(r.weight, sampleTime));
 }
 
-// GENERATE: the camera ray of the slot's sample; no radiance yet, an empty stack.
+// GENERATE: the camera ray of the slot's sample; no radiance yet, an empty stack. Round 0's queue
+// is every slot in order; adaptive, the slots with a sample, appended (the rest end here).
 void wfGenerate() {
     uvec2 pixel = wfSlotPixel(g_wfSlot);
+    uint sampleNumber = wfSlotSample(g_wfSlot);
+    if (ADAPTIVE && sampleNumber >= wfWorkEntry(g_wfSlot).z) {
+        wfStore(WF_RADIANCE, uvec4(0u));
+        atomicAdd(status.paths.x, 1u);
+        return;
+    }
     SampleKey key;
     key.pixel = pixel.y * frameWidth() + pixel.x;
-    CameraRay camera = cameraSample(pixel.x, pixel.y, wfSlotSample(g_wfSlot), key);
+    CameraRay camera = cameraSample(pixel.x, pixel.y, sampleNumber, key);
     wfStoreRay(PathRay(camera.origin, camera.dir, vec3(1.0), 0u, 0.0));
     wfStore(WF_RADIANCE, uvec4(floatBitsToUint(vec3(0.0)), WF_LIVE));
-    wfSetQueueEntry(0u, g_wfSlot, g_wfSlot);  // round 0's queue: every path, in slot order
+    if (ADAPTIVE) {
+        uint index = atomicAdd(status.paths.y, 1u);
+        wfSetQueueEntry(0u, index, g_wfSlot);
+        wfCountGroups(0u, index, 1u);
+        return;
+    }
+    wfSetQueueEntry(0u, g_wfSlot, g_wfSlot);
     if (g_wfSlot == 0u) {
         status.paths.y = wfPaths();
         status.paths.z = 0u;
@@ -125,13 +138,24 @@ void wfShadow(uint invocation) {
     wfStore(field + 1u, uvec4(floatBitsToUint(d.xyz), blocked ? 0u : 1u));
 }
 
-// ACCUMULATE: invocation p adds the wave's samples of band pixel p to its sum, in sample order
-// (the megakernel's order), a NaN or Inf sample counted and added as black. Returns the pixel.
+// ACCUMULATE: invocation p adds the wave's samples of band pixel p (adaptive: of work-list entry p,
+// those within its range; odd-numbered ones also to its odd sum) to its sum, in sample order (the
+// megakernel's order), a NaN or Inf sample counted and added as black. Returns the pixel.
 uint wfAccumulate(uint p, inout uint nonFinite) {
-    uvec2 pixel = passTileOrigin(g_wave) + uvec2(p % passTileSize(g_wave).x, p / passTileSize(g_wave).x);
-    uint index = pixel.y * frameWidth() + pixel.x;
-    vec4 sum = loadPixelSum(index);
+    uint index;
+    uint first = passFirstSample(g_wave);
     uint samples = passSamples(g_wave);
+    if (ADAPTIVE) {
+        uvec4 entry = wfWorkEntry(p);
+        index = entry.x;
+        first += entry.y;
+        samples = first < entry.z ? min(samples, entry.z - first) : 0u;
+    } else {
+        uvec2 pixel = passTileOrigin(g_wave) + uvec2(p % passTileSize(g_wave).x, p / passTileSize(g_wave).x);
+        index = pixel.y * frameWidth() + pixel.x;
+    }
+    vec4 sum = loadPixelSum(index);
+    vec4 oddSum = ADAPTIVE ? loadPixelOddSum(index) : vec4(0.0);
     uint j = 0u;
     for (; j < samples; ++j) {
         if (!chargeLoop()) break;
@@ -142,9 +166,11 @@ uint wfAccumulate(uint p, inout uint nonFinite) {
             radiance = vec3(0.0);
         }
         sum.rgb += radiance;
+        if (ADAPTIVE && ((first + j) & 1u) != 0u) oddSum.rgb += radiance;
     }
     if (j < samples) markLoopCutOff();
     storePixelSum(index, sum);
+    if (ADAPTIVE) storePixelOddSum(index, oddSum);
     return index;
 }
 

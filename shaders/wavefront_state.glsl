@@ -37,8 +37,16 @@ uint g_wfShadows = 0u;   // shadow rays recorded (SHADE_RECORD) or read back (SH
 uint wfBandPixels() { return passTileSize(g_wave).x * passTileSize(g_wave).y; }
 uint wfPaths() { return wfBandPixels() * passSamples(g_wave); }
 uint wfShadowsPerPath() { return passStride(g_wave); }
-// The first texel of the state: the pixel sums come first (one texel per pixel).
-int wfTexel(uint field, uint slot) { return int(frameWidth() * frameHeight() + field * wfPaths() + slot); }
+// Adaptive rounds (ADAPTIVE, host/adaptive): the accumulation buffer holds two texels per pixel
+// (the sum, the odd samples' sum) and then the round's work list, uvec4(pixel, first sample of the
+// round, end, 0) per entry; a wave is entries [tile.x, tile.x + tile.z) (tile.w = 1; tile.y = the
+// list's length) times sample offsets pass.x .. pass.x + pass.w - 1 within each entry's range, and
+// a slot past its entry's range has no sample.
+uint wfWorkListTexel() { return 2u * frameWidth() * frameHeight(); }
+uvec4 wfWorkEntry(uint slot) { return imageLoad(accumTexels, int(wfWorkListTexel() + passTileOrigin(g_wave).x + slot % wfBandPixels())); }
+// The first texel of the state: after the pixel sums (and, adaptive, the work list).
+uint wfStateTexel() { return ADAPTIVE ? wfWorkListTexel() + passTileOrigin(g_wave).y : frameWidth() * frameHeight(); }
+int wfTexel(uint field, uint slot) { return int(wfStateTexel() + field * wfPaths() + slot); }
 uvec4 wfLoad(uint field) { return imageLoad(accumTexels, wfTexel(field, g_wfSlot)); }
 void wfStore(uint field, uvec4 value) { imageStore(accumTexels, wfTexel(field, g_wfSlot), value); }
 vec4 wfLoadFloats(uint field) { return uintBitsToFloat(wfLoad(field)); }
@@ -46,7 +54,7 @@ void wfStoreFloats(uint field, vec4 value) { wfStore(field, floatBitsToUint(valu
 
 // The queues after the fields (WavefrontPathLayout::texelsPerPath on the host counts them too).
 uint wfFields() { return WF_SHADOWS + 2u * wfShadowsPerPath() + 3u * PATH_STACK_SIZE; }
-int wfQueueTexel(uint queue, uint index) { return int(frameWidth() * frameHeight() + (wfFields() + queue) * wfPaths() + index); }
+int wfQueueTexel(uint queue, uint index) { return int(wfStateTexel() + (wfFields() + queue) * wfPaths() + index); }
 uint wfQueueEntry(uint queue, uint index) { return imageLoad(accumTexels, wfQueueTexel(queue, index)).x; }
 void wfSetQueueEntry(uint queue, uint index, uint value) { imageStore(accumTexels, wfQueueTexel(queue, index), uvec4(value, 0u, 0u, 0u)); }
 const uint WF_SHADOW_QUEUE = 2u;  // queues 0 and 1: the path queues; the shadow queue spans shadowsPerPath
@@ -67,10 +75,14 @@ void wfCountGroups(uint q, uint first, uint n) {
 
 // The pixel and sample of path slot `slot` of the wave.
 uvec2 wfSlotPixel(uint slot) {
+    if (ADAPTIVE) {
+        uint pixel = wfWorkEntry(slot).x;
+        return uvec2(pixel % frameWidth(), pixel / frameWidth());
+    }
     uint p = slot % wfBandPixels();
     return passTileOrigin(g_wave) + uvec2(p % passTileSize(g_wave).x, p / passTileSize(g_wave).x);
 }
-uint wfSlotSample(uint slot) { return passFirstSample(g_wave) + slot / wfBandPixels(); }
+uint wfSlotSample(uint slot) { return (ADAPTIVE ? wfWorkEntry(slot).y : 0u) + passFirstSample(g_wave) + slot / wfBandPixels(); }
 
 // A hit's shadow rays in the two shading stages. SHADE_RECORD stores each ray and answers
 // "blocked" (its shading is thrown away); SHADE_RESOLVE runs the same shading, which asks for the

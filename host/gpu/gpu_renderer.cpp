@@ -195,7 +195,7 @@ Image GpuRenderer::render(const GpuSceneData& data, const RenderOptions& options
 }
 
 void GpuRenderer::addSampleRanges(const GpuSceneData& data, const RenderOptions& options, const std::vector<std::uint32_t>& next,
-                                  adaptive::PixelAccumulation& acc, GpuRenderStats* statsOut) {
+                                  adaptive::PixelAccumulation& acc, GpuRenderStats* statsOut, GpuKernel kernel) {
     GpuRenderStats stats;
     stats.device = impl_->context.info().name;
     const std::uint64_t lockstep = impl_->context.info().loopLimiter ? kLockstepFactor : 1;
@@ -204,7 +204,6 @@ void GpuRenderer::addSampleRanges(const GpuSceneData& data, const RenderOptions&
     const std::uint32_t k = in.batching.perDispatch;
     stats.features = in.features.describe();
     stats.samplesPerDispatch = k;
-    const vk::raii::Pipeline& pipeline = impl_->kernels->pipeline(in.features, k, &stats.pipelineSeconds);
 
     // The accumulation buffer of the ADAPTIVE kernel: per pixel its sum and its odd samples' sum
     // (float bits), then the work list: the pixels with samples to add, most samples first (pass
@@ -229,8 +228,36 @@ void GpuRenderer::addSampleRanges(const GpuSceneData& data, const RenderOptions&
 
     auto start = Clock::now();
     SceneUpload& gpuScene = impl_->uploadScene(data, in.frame, stats);
-    gpuScene.beginAdaptiveRound(impl_->context, impl_->transfers, in.frame, contents);
     stats.uploadSeconds = secondsSince(start);
+    if ((kernel == GpuKernel::Auto ? autoKernel(impl_->context.info()) : kernel) == GpuKernel::Wavefront) {
+        stats.wavefront = true;
+        stats.samplesPerDispatch = 1;
+        const GpuRenderDevice device{impl_->context, impl_->runner, impl_->transfers, impl_->layout, *impl_->kernels};
+        addSampleRangesWavefront(device, gpuScene, data, in, options, contents, pixels, stats);
+    } else {
+        addSampleRangesMegakernel(gpuScene, in, options, contents, work, acc.width, stats);
+    }
+
+    start = Clock::now();
+    std::vector<glm::uvec4> sums(2 * pixels);
+    impl_->transfers.download(gpuScene.accum(), std::as_writable_bytes(std::span(sums)));
+    for (std::size_t p = 0; p < pixels; ++p) {
+        acc.sum[p] = glm::uintBitsToFloat(glm::uvec3(sums[2 * p]));
+        acc.oddSum[p] = glm::uintBitsToFloat(glm::uvec3(sums[2 * p + 1]));
+    }
+    acc.count = next;
+    stats.readbackSeconds = secondsSince(start);
+    if (statsOut) *statsOut = stats;
+}
+
+void GpuRenderer::addSampleRangesMegakernel(SceneUpload& gpuScene, const KernelInputs& in, const RenderOptions& options,
+                                            const std::vector<glm::uvec4>& contents, const std::vector<glm::uvec4>& work,
+                                            int width, GpuRenderStats& stats) {
+    const std::uint32_t k = in.batching.perDispatch;
+    const vk::raii::Pipeline& pipeline = impl_->kernels->pipeline(in.features, k, &stats.pipelineSeconds);
+    auto start = Clock::now();
+    gpuScene.beginAdaptiveRound(impl_->context, impl_->transfers, in.frame, contents);
+    stats.uploadSeconds += secondsSince(start);
     stats.warmUpSeconds = impl_->runner.run([&](const vk::raii::CommandBuffer& commands) {
         recordWarmUp(commands, *pipeline, impl_->layout.pipelineLayout(), gpuScene.descriptorSet());
     });
@@ -259,23 +286,12 @@ void GpuRenderer::addSampleRanges(const GpuSceneData& data, const RenderOptions&
                 stats.kernelSeconds = std::max(stats.kernelSeconds, 0.0) + impl_->runner.lastDeviceSeconds();
             ++stats.submissions;
             ++stats.dispatches;
-            throwIfKernelFailed(gpuScene.status(), static_cast<std::uint32_t>(acc.width), impl_->context.info().loopLimiter);
+            throwIfKernelFailed(gpuScene.status(), static_cast<std::uint32_t>(width), impl_->context.info().loopLimiter);
         }
         progress.update(static_cast<double>(pass + 1) / passes);
     }
     stats.renderSeconds = secondsSince(start);
     stats.nonFiniteSamples = gpu::statusNonFiniteSamples(gpuScene.status());
-
-    start = Clock::now();
-    std::vector<glm::uvec4> sums(2 * pixels);
-    impl_->transfers.download(gpuScene.accum(), std::as_writable_bytes(std::span(sums)));
-    for (std::size_t p = 0; p < pixels; ++p) {
-        acc.sum[p] = glm::uintBitsToFloat(glm::uvec3(sums[2 * p]));
-        acc.oddSum[p] = glm::uintBitsToFloat(glm::uvec3(sums[2 * p + 1]));
-    }
-    acc.count = next;
-    stats.readbackSeconds = secondsSince(start);
-    if (statsOut) *statsOut = stats;
 }
 
 }  // namespace vkrt

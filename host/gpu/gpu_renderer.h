@@ -28,6 +28,8 @@
 
 namespace vkrt {
 
+class SceneUpload;
+
 // How the GPU computes a render: the megakernel (render.comp: one invocation computes a sample's
 // whole path) or the wavefront stages (wavefront_renderer.h: waves of paths, one stage per kernel).
 // Auto picks by device (chooseGpuKernel).
@@ -91,9 +93,10 @@ public:
     // [acc.count[p], next[p]) of every pixel p to acc.sum and acc.oddSum, in sample order, as
     // render() computes them, and sets acc.count = next. Only the pixels with samples to add are
     // dispatched: a work list, sorted by samples to add, whose pass j covers the entries with more
-    // than j k samples. options.samplesPerPixel is the most any pixel will have (--max-rpp).
+    // than j k samples. options.samplesPerPixel is the most any pixel will have (--max-rpp). With the
+    // wavefront stages (`kernel`, Auto: chooseGpuKernel), waves of entries times sample offsets.
     void addSampleRanges(const GpuSceneData& data, const RenderOptions& options, const std::vector<std::uint32_t>& next,
-                         adaptive::PixelAccumulation& acc, GpuRenderStats* stats = nullptr);
+                         adaptive::PixelAccumulation& acc, GpuRenderStats* stats = nullptr, GpuKernel kernel = GpuKernel::Auto);
 
     // Loads the kernel again (with --shader-dir, compiles the GLSL as it is now) and drops the
     // pipelines made from the old one; returns the seconds it took. On an error (ShaderCompileError)
@@ -109,6 +112,11 @@ public:
     std::size_t pipelineCount() const;
 
 private:
+    // addSampleRanges' dispatches on the megakernel (its ADAPTIVE variant): `contents` the buffer's
+    // sums and work list, `work` the list alone.
+    void addSampleRangesMegakernel(SceneUpload& gpuScene, const KernelInputs& in, const RenderOptions& options,
+                                   const std::vector<glm::uvec4>& contents, const std::vector<glm::uvec4>& work, int width,
+                                   GpuRenderStats& stats);
     Image renderWavefront(const GpuSceneData& data, const KernelInputs& in, const RenderOptions& options, std::uint64_t wavePaths,
                           GpuRenderStats& stats, GpuRenderStats* statsOut);
 

@@ -187,10 +187,10 @@ void SceneUpload::beginRender(const Context& context, Transfers& transfers, cons
 }
 
 void SceneUpload::beginAdaptiveRound(const Context& context, Transfers& transfers, const gpu::FrameParams& frame,
-                                     std::span<const glm::uvec4> accum) {
+                                     std::span<const glm::uvec4> accum, std::uint64_t extraTexels) {
     // The texel buffer's size is kept stable as the tables' are (buffer.h), so that rounds with
     // work lists of different lengths do not change lavapipe's JIT key.
-    growAccum(context, stableTexelBufferBytes(accum.size_bytes()));
+    growAccum(context, stableTexelBufferBytes(accum.size_bytes() + extraTexels * sizeof(glm::uvec4)));
     const std::array<gpu::FrameParams, 1> frames = {frame};
     transfers.upload(buffers_[gpu::BINDING_FRAME], std::as_bytes(std::span(frames)));
     transfers.upload(buffers_[gpu::BINDING_ACCUM], std::as_bytes(accum));

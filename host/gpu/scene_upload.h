@@ -49,9 +49,9 @@ public:
 
     // Adaptive sampling's round (render.comp's ADAPTIVE kernel): the frame uploaded, the accumulation
     // buffer grown to hold `accum` (per pixel the sum and the odd samples' sum, then the work list)
-    // and filled with it, the status zeroed.
+    // and `extraTexels` more (the wavefront stages' paths), filled with `accum`, the status zeroed.
     void beginAdaptiveRound(const Context& context, Transfers& transfers, const gpu::FrameParams& frame,
-                            std::span<const glm::uvec4> accum);
+                            std::span<const glm::uvec4> accum, std::uint64_t extraTexels = 0);
 
     // A wavefront render (wavefront_renderer.h): the frame uploaded, the accumulation buffer grown
     // to the pixel sums and `stateTexels` texels of paths in flight after them, all zeroed, and

@@ -4,6 +4,8 @@
 #include <array>
 #include <chrono>
 #include <cstddef>
+#include <functional>
+#include <span>
 #include <string>
 
 #include "float_range.h"
@@ -53,6 +55,23 @@ public:
         }
     }
 
+    // The queues' lengths and dispatch sizes at a wave's start (GENERATE appends to queue 0 when
+    // some slots have no sample: adaptive rounds), written on the device's timeline.
+    void resetQueues() {
+        struct Counters {
+            glm::uvec3 lengths;  // RenderStatus::paths y, z, w
+            glm::uvec4 groups[3];
+        };
+        static_assert(offsetof(gpu::RenderStatus, queueGroups) == offsetof(gpu::RenderStatus, paths) + 16);
+        static_assert(sizeof(Counters) == 12 + 3 * 16);  // no padding: written over paths.y .. queueGroups[2]
+        const Counters counters{glm::uvec3(0u), {glm::uvec4(1u, 1u, 1u, 0u), glm::uvec4(1u, 1u, 1u, 0u), glm::uvec4(0u, 1u, 1u, 0u)}};
+        commands_.updateBuffer<Counters>(status_, offsetof(gpu::RenderStatus, paths) + 4, counters);
+        vk::MemoryBarrier barrier(vk::AccessFlagBits::eTransferWrite,
+                                  vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite | vk::AccessFlagBits::eIndirectCommandRead);
+        commands_.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer,
+                                  vk::PipelineStageFlagBits::eComputeShader | vk::PipelineStageFlagBits::eDrawIndirect, {}, barrier, {}, {});
+    }
+
     // One stage over `invocations` lanes, after everything recorded before it.
     void stage(std::uint32_t which, std::uint64_t invocations) {
         if (invocations == 0) return;
@@ -78,17 +97,106 @@ private:
     gpu::PassParams wave_;
 };
 
+// One wave at a time through the stages (the pipelines of `in`'s feature set, made once).
+class WaveRunner {
+public:
+    WaveRunner(const GpuRenderDevice& device, SceneUpload& scene, const GpuSceneData& data, const KernelInputs& in,
+               const RenderOptions& options, GpuRenderStats& stats)
+        : device_(device), scene_(scene), stats_(stats), layout_(wavefrontPathLayout(data.tables, in.features, in.frame)),
+          branches_(in.features.pathStackSize > 0), width_(static_cast<std::uint32_t>(options.width)) {
+        for (std::uint32_t stage = gpu::WAVEFRONT_GENERATE; stage < gpu::WAVEFRONT_STAGE_COUNT; ++stage) {
+            FeatureSet features = in.features;
+            features.wavefrontStage = stage;
+            double seconds = 0.0;
+            pipelines_[stage] = &device.kernels.pipeline(features, 1, &seconds);
+            stats.pipelineSeconds += seconds;
+        }
+        // Rounds per submission: a path without a stack has at most one ray per depth.
+        const std::uint32_t depth = std::min(in.features.maxDepth, static_cast<std::uint32_t>(std::max(options.maxDepth, 0)));
+        roundsPerSubmission_ = depth + 1;
+    }
+
+    const WavefrontPathLayout& layout() const { return layout_; }
+
+    // Paths per wave on this device (`wanted`: 0 for its default) for an accumulation buffer that
+    // holds `texelsBefore` texels before the paths.
+    std::uint64_t pathsPerWave(std::uint64_t texelsBefore, std::uint64_t wanted) const {
+        return wavePathsFor(device_.context.limits(), texelsBefore, layout_, device_.context.info().maxWorkGroupCountX,
+                            wanted > 0 ? wanted : targetWavePaths(device_.context.info()));
+    }
+
+    // One wave to its end: GENERATE over `paths` slots, rounds until every path has ended, then
+    // ACCUMULATE over `accumulators` lanes. `wave` is its push constants but the shadow rays per path
+    // and the round parity, set here.
+    void run(gpu::PassParams wave, std::uint64_t paths, std::uint64_t accumulators) {
+        wave.pass.y = layout_.shadowsPerPath;
+        wave.pass.z = 0;  // the round's parity (StageRecorder::rounds)
+        ended_ += static_cast<std::uint32_t>(paths);
+        std::uint32_t rounds = 0;
+        const std::uint32_t shadows = layout_.shadowsPerPath;
+        submit(wave, [&](StageRecorder& r) {
+            r.resetQueues();
+            r.stage(gpu::WAVEFRONT_GENERATE, paths);
+            r.rounds(0, roundsPerSubmission_, shadows);
+            if (!branches_) r.stage(gpu::WAVEFRONT_ACCUMULATE, accumulators);
+        });
+        rounds += roundsPerSubmission_;
+        stats_.dispatches += 1 + roundsPerSubmission_ * (shadows > 0 ? 4 : 2) + (branches_ ? 0 : 1);
+        // A path that branches (a dielectric, gloss samples) may need more rounds than its depth.
+        while (scene_.status().paths.x != ended_) {
+            if (!branches_ || rounds >= kMaxSteps)
+                throw GpuKernelError("the wavefront kernels left " + std::to_string(ended_ - scene_.status().paths.x) +
+                                     " paths unfinished after " + std::to_string(rounds) + " rounds");
+            submit(wave, [&](StageRecorder& r) { r.rounds(rounds, roundsPerSubmission_, shadows); });
+            rounds += roundsPerSubmission_;
+            stats_.dispatches += roundsPerSubmission_ * (shadows > 0 ? 4 : 2);
+        }
+        if (branches_) {
+            submit(wave, [&](StageRecorder& r) { r.stage(gpu::WAVEFRONT_ACCUMULATE, accumulators); });
+            ++stats_.dispatches;
+        }
+    }
+
+private:
+    void submit(const gpu::PassParams& wave, const std::function<void(StageRecorder&)>& record) {
+        const double seconds = device_.runner.run([&](const vk::raii::CommandBuffer& commands) {
+            StageRecorder recorder(commands, device_, scene_, pipelines_, wave);
+            record(recorder);
+            computeToHostBarrier(commands);
+        });
+        if (device_.runner.lastDeviceSeconds() >= 0.0)
+            stats_.kernelSeconds = std::max(stats_.kernelSeconds, 0.0) + device_.runner.lastDeviceSeconds();
+        stats_.maxSubmissionSeconds = std::max(stats_.maxSubmissionSeconds, seconds);
+        ++stats_.submissions;
+        throwIfKernelFailed(scene_.status(), width_, device_.context.info().loopLimiter);
+    }
+
+    const GpuRenderDevice& device_;
+    SceneUpload& scene_;
+    GpuRenderStats& stats_;
+    WavefrontPathLayout layout_;
+    bool branches_;
+    std::uint32_t width_;
+    std::uint32_t roundsPerSubmission_ = 1;
+    std::uint32_t ended_ = 0;  // paths ended so far, as the kernels count them (modulo 2^32)
+    std::array<const vk::raii::Pipeline*, gpu::WAVEFRONT_STAGE_COUNT> pipelines_{};
+};
+
+void throwIfCancelled(const GpuRenderDevice& device, const RenderOptions& options) {
+    if (options.cancel && options.cancel->load()) {
+        device.context.device().waitIdle();
+        throw RenderCancelled{};
+    }
+}
+
 }  // namespace
 
 std::uint64_t targetWavePaths(const DeviceInfo& device) { return device.lavapipe ? (1u << 16) : (1u << 20); }
 
 void renderWavefront(const GpuRenderDevice& device, SceneUpload& gpuScene, const GpuSceneData& data, const KernelInputs& in,
                      const RenderOptions& options, std::uint64_t wavePaths, GpuRenderStats& stats, std::vector<glm::vec4>& sums) {
-    const WavefrontPathLayout pathLayout = wavefrontPathLayout(data.tables, in.features, in.frame);
+    WaveRunner runner(device, gpuScene, data, in, options, stats);
     const std::uint64_t pixels = static_cast<std::uint64_t>(options.width) * options.height;
-    const std::uint64_t pathsPerWave = wavePathsFor(device.context.limits(), pixels, pathLayout,
-                                                    device.context.info().maxWorkGroupCountX,
-                                                    wavePaths > 0 ? wavePaths : targetWavePaths(device.context.info()));
     const glm::ivec2 rows = rowsOf(options);
     std::vector<std::uint32_t> breaks;
     const std::vector<int> checkpoints = checkpointEnds(options.samplesPerPixel, options.checkpoints);
@@ -98,73 +206,23 @@ void renderWavefront(const GpuRenderDevice& device, SceneUpload& gpuScene, const
     // what does not fit).
     const WavePlan plan = planWaves(static_cast<std::uint32_t>(options.width), static_cast<std::uint32_t>(rows.x),
                                     static_cast<std::uint32_t>(rows.y), static_cast<std::uint32_t>(options.samplesPerPixel),
-                                    std::max<std::uint64_t>(pathsPerWave, static_cast<std::uint64_t>(options.width)), breaks);
-
-    std::array<const vk::raii::Pipeline*, gpu::WAVEFRONT_STAGE_COUNT> pipelines{};
-    for (std::uint32_t stage = gpu::WAVEFRONT_GENERATE; stage < gpu::WAVEFRONT_STAGE_COUNT; ++stage) {
-        FeatureSet features = in.features;
-        features.wavefrontStage = stage;
-        double seconds = 0.0;
-        pipelines[stage] = &device.kernels.pipeline(features, 1, &seconds);
-        stats.pipelineSeconds += seconds;
-    }
+                                    std::max<std::uint64_t>(runner.pathsPerWave(pixels, wavePaths), static_cast<std::uint64_t>(options.width)),
+                                    breaks);
 
     auto start = Clock::now();
-    gpuScene.beginWavefront(device.context, device.transfers, in.frame, plan.maxPaths * pathLayout.texelsPerPath());
+    gpuScene.beginWavefront(device.context, device.transfers, in.frame, plan.maxPaths * runner.layout().texelsPerPath());
     stats.uploadSeconds += secondsSince(start);
     stats.sceneBytes = gpuScene.bytes();
 
-    // Steps per submission: a path without a stack has at most one ray per depth.
-    const std::uint32_t depth = std::min(in.features.maxDepth, static_cast<std::uint32_t>(std::max(options.maxDepth, 0)));
-    const std::uint32_t stepsPerSubmission = depth + 1;
-    const bool branches = in.features.pathStackSize > 0;
     const auto width = static_cast<std::uint32_t>(options.width);
     sums.assign(pixels, glm::vec4(0.0f));
     Progress progress("GPU render", options.quiet);
-    std::uint32_t ended = 0;  // paths ended so far, as the kernels count them (modulo 2^32)
     std::size_t round = 0;
     start = Clock::now();
     for (std::size_t w = 0; w < plan.waves.size(); ++w) {
-        if (options.cancel && options.cancel->load()) {
-            device.context.device().waitIdle();
-            throw RenderCancelled{};
-        }
+        throwIfCancelled(device, options);
         const Wave& wave = plan.waves[w];
-        const gpu::PassParams params = passParams(wave.band, wave.firstSample, wave.samples);
-        gpu::PassParams waveParams = params;
-        waveParams.pass.y = pathLayout.shadowsPerPath;
-        waveParams.pass.z = 0;  // the round's parity (StageRecorder::rounds)
-        const std::uint64_t paths = wave.paths();
-        ended += static_cast<std::uint32_t>(paths);
-        std::uint32_t steps = 0;
-        auto submit = [&](const std::function<void(StageRecorder&)>& record) {
-            const double seconds = device.runner.run([&](const vk::raii::CommandBuffer& commands) {
-                StageRecorder recorder(commands, device, gpuScene, pipelines, waveParams);
-                record(recorder);
-                computeToHostBarrier(commands);
-            });
-            if (device.runner.lastDeviceSeconds() >= 0.0)
-                stats.kernelSeconds = std::max(stats.kernelSeconds, 0.0) + device.runner.lastDeviceSeconds();
-            stats.maxSubmissionSeconds = std::max(stats.maxSubmissionSeconds, seconds);
-            ++stats.submissions;
-            throwIfKernelFailed(gpuScene.status(), width, device.context.info().loopLimiter);
-        };
-        submit([&](StageRecorder& r) {
-            r.stage(gpu::WAVEFRONT_GENERATE, paths);
-            r.rounds(0, stepsPerSubmission, pathLayout.shadowsPerPath);
-            if (!branches) r.stage(gpu::WAVEFRONT_ACCUMULATE, wave.band.pixels());
-        });
-        steps += stepsPerSubmission;
-        stats.dispatches += 1 + stepsPerSubmission * (pathLayout.shadowsPerPath > 0 ? 4 : 2) + (branches ? 0 : 1);
-        // A path that branches (a dielectric, gloss samples) may need more steps than its depth.
-        while (gpuScene.status().paths.x != ended) {
-            if (!branches || steps >= kMaxSteps)
-                throw GpuKernelError("the wavefront kernels left " + std::to_string(ended - gpuScene.status().paths.x) +
-                                     " paths unfinished after " + std::to_string(steps) + " steps");
-            submit([&](StageRecorder& r) { r.rounds(steps, stepsPerSubmission, pathLayout.shadowsPerPath); });
-            steps += stepsPerSubmission;
-        }
-        if (branches) submit([&](StageRecorder& r) { r.stage(gpu::WAVEFRONT_ACCUMULATE, wave.band.pixels()); });
+        runner.run(passParams(wave.band, wave.firstSample, wave.samples), wave.paths(), wave.band.pixels());
         progress.update(static_cast<double>(w + 1) / plan.waves.size());
 
         if (round < plan.roundEnds.size() && w + 1 == plan.roundEnds[round]) {
@@ -182,8 +240,42 @@ void renderWavefront(const GpuRenderDevice& device, SceneUpload& gpuScene, const
     }
     stats.renderSeconds = secondsSince(start);
     stats.nonFiniteSamples = gpu::statusNonFiniteSamples(gpuScene.status());
-
     device.transfers.download(gpuScene.accum(), std::as_writable_bytes(std::span(sums)));
+}
+
+void addSampleRangesWavefront(const GpuRenderDevice& device, SceneUpload& gpuScene, const GpuSceneData& data, const KernelInputs& in,
+                              const RenderOptions& options, std::span<const glm::uvec4> contents, std::size_t pixels,
+                              GpuRenderStats& stats) {
+    WaveRunner runner(device, gpuScene, data, in, options, stats);
+    const std::span<const glm::uvec4> work = contents.subspan(2 * pixels);
+    const std::uint64_t pathsPerWave = std::max<std::uint64_t>(runner.pathsPerWave(contents.size(), 0), 1);
+    auto start = Clock::now();
+    gpuScene.beginAdaptiveRound(device.context, device.transfers, in.frame, contents, pathsPerWave * runner.layout().texelsPerPath());
+    stats.uploadSeconds += secondsSince(start);
+
+    // Sample offsets in runs: entries are sorted by samples to add, so those with more than `offset`
+    // left are a prefix; each run takes as many offsets as fill a wave of that prefix.
+    const std::uint32_t most = work.empty() ? 0u : work.front().z - work.front().y;
+    Progress progress("GPU round", options.quiet);
+    start = Clock::now();
+    std::size_t active = work.size();
+    for (std::uint32_t offset = 0; offset < most;) {
+        while (active > 0 && work[active - 1].z - work[active - 1].y <= offset) --active;
+        const auto samples = static_cast<std::uint32_t>(std::clamp<std::uint64_t>(pathsPerWave / active, 1, most - offset));
+        const std::uint64_t entriesPerWave = std::max<std::uint64_t>(1, pathsPerWave / samples);
+        for (std::size_t first = 0; first < active; first += entriesPerWave) {
+            throwIfCancelled(device, options);
+            const auto entries = static_cast<std::uint32_t>(std::min<std::uint64_t>(entriesPerWave, active - first));
+            gpu::PassParams wave{};
+            wave.tile = glm::uvec4(static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(work.size()), entries, 1u);
+            wave.pass = glm::uvec4(offset, 0u, 0u, samples);
+            runner.run(wave, static_cast<std::uint64_t>(entries) * samples, entries);
+        }
+        offset += samples;
+        progress.update(static_cast<double>(offset) / most);
+    }
+    stats.renderSeconds = secondsSince(start);
+    stats.nonFiniteSamples = gpu::statusNonFiniteSamples(gpuScene.status());
 }
 
 }  // namespace vkrt

@@ -5,6 +5,8 @@
 // needs far fewer registers on a GPU compiler (docs/BENCHMARKS.md, kernel registers).
 #pragma once
 
+#include <span>
+
 #include "commands.h"
 #include "compute_pipeline.h"
 #include "context.h"
@@ -33,5 +35,13 @@ std::uint64_t targetWavePaths(const DeviceInfo& device);
 // and calls options.onCheckpoint after the rounds it asks for.
 void renderWavefront(const GpuRenderDevice& device, SceneUpload& gpuScene, const GpuSceneData& data, const KernelInputs& in,
                      const RenderOptions& options, std::uint64_t wavePaths, GpuRenderStats& stats, std::vector<glm::vec4>& sums);
+
+// Adaptive sampling's round with the wavefront stages (GpuRenderer::addSampleRanges): `contents`
+// is the ADAPTIVE accumulation buffer's (per pixel of `pixels` the sum and the odd samples' sum,
+// then the work list, sorted by samples to add); waves are runs of work-list entries times sample
+// offsets within each entry's range. The sums are left on the device for the caller to read.
+void addSampleRangesWavefront(const GpuRenderDevice& device, SceneUpload& gpuScene, const GpuSceneData& data, const KernelInputs& in,
+                              const RenderOptions& options, std::span<const glm::uvec4> contents, std::size_t pixels,
+                              GpuRenderStats& stats);
 
 }  // namespace vkrt

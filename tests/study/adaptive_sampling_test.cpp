@@ -260,5 +260,49 @@ TEST(AdaptiveSampling, TheGpuRoundsAgreeWithTheCpu) {
     EXPECT_EQ(gpu.validationLog()->count(), 0u) << gpu.validationLog()->joined();
 }
 
+// The wavefront stages' rounds (waves of work-list entries times sample offsets, the odd sums in
+// ACCUMULATE) against the megakernel's: the same shading code adds the same samples in the same
+// order, so on lavapipe the same sums and counts bit for bit (elsewhere the two compilations may
+// round apart: the agreement rule). A scene without a path stack and one with a dielectric's.
+TEST(AdaptiveSampling, TheWavefrontRoundsAreTheMegakernels) {
+    GpuRenderer gpu(GpuRendererOptions{.validation = true});
+    for (const char* name : {"soft_shadows", "glass_and_instances"}) {
+        const Scene scene = exampleScene(name);
+        const GpuSceneData data = GpuRenderer::prepare(scene);
+        RenderOptions o = smallOptions(scene, 40);
+        adaptive::AdaptiveOptions a;
+        a.targetError = 0.02;
+        a.maxRpp = 256;
+        o.samplesPerPixel = static_cast<int>(a.maxRpp);
+        auto rounds = [&](GpuKernel kernel) {
+            return adaptive::renderAdaptive(o.width, o.height, rowsOf(o), a,
+                                            [&](const std::vector<std::uint32_t>& next, adaptive::PixelAccumulation& acc) {
+                                                GpuRenderStats stats;
+                                                gpu.addSampleRanges(data, o, next, acc, &stats, kernel);
+                                                EXPECT_EQ(stats.wavefront, kernel == GpuKernel::Wavefront);
+                                            });
+        };
+        const adaptive::AdaptiveResult mega = rounds(GpuKernel::Megakernel);
+        const adaptive::AdaptiveResult waves = rounds(GpuKernel::Wavefront);
+        EXPECT_GT(waves.last.maxCount, waves.last.minCount) << name << ": nothing adapted";
+        if (gpu.deviceInfo().lavapipe) {
+            EXPECT_EQ(waves.acc.count, mega.acc.count) << name;
+            std::size_t differing = 0;
+            for (std::size_t p = 0; p < mega.acc.pixels(); ++p)
+                differing += waves.acc.sum[p] != mega.acc.sum[p] || waves.acc.oddSum[p] != mega.acc.oddSum[p];
+            EXPECT_EQ(differing, 0u) << name;
+        } else {
+            Image megaImage(o.width, o.height), waveImage(o.width, o.height);
+            for (std::size_t p = 0; p < mega.acc.pixels(); ++p) {
+                megaImage.pixels[p] = mega.acc.mean(p);
+                waveImage.pixels[p] = waves.acc.mean(p);
+            }
+            EXPECT_TRUE(meetsAgreementRule(compareImages(waveImage, megaImage))) << name;
+        }
+    }
+    ASSERT_NE(gpu.validationLog(), nullptr);
+    EXPECT_EQ(gpu.validationLog()->count(), 0u) << gpu.validationLog()->joined();
+}
+
 }  // namespace
 }  // namespace vkrt::test
