@@ -6,8 +6,9 @@
 // compiles for a Navi 21 without AMD hardware (docs/BENCHMARKS.md, "Kernel registers"). Default
 // scenes: the course's XML and JSON in ../shared (VKRT_SHARED overrides). The last line:
 // `kernels: N variants, max VGPRs X, spilled VGPRs Y, max scratch Z bytes`; with --wavefront (the
-// wavefront renderer's six stage kernels per scene, after the megakernel) a line of the same form
-// for each of the two renderers precedes it (`megakernel: ...`, `wavefront: ...`).
+// wavefront renderer's six stage kernels per scene, after the megakernel; with --adaptive also their
+// adaptive variants, `a-<stage>`) a line of the same form for each of the two renderers precedes it
+// (`megakernel: ...`, `wavefront: ...`).
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -142,11 +143,17 @@ int runGpuKernelsBench(const std::vector<std::string>& argv) {
             for (const KernelVariant variant : variants) builds.push_back({variant, false, gpu::WAVEFRONT_OFF});
             if (a.adaptive) builds.push_back({KernelVariant::Specialised, true, gpu::WAVEFRONT_OFF});
             if (a.wavefront)
-                for (std::uint32_t s = gpu::WAVEFRONT_GENERATE; s < gpu::WAVEFRONT_STAGE_COUNT; ++s)
-                    builds.push_back({KernelVariant::Specialised, false, s});
+                for (const bool adaptive : {false, true}) {
+                    if (adaptive && !a.adaptive) continue;
+                    for (std::uint32_t s = gpu::WAVEFRONT_GENERATE; s < gpu::WAVEFRONT_STAGE_COUNT; ++s)
+                        builds.push_back({KernelVariant::Specialised, adaptive, s});
+                }
             for (const auto& [variant, adaptive, wavefrontStage] : builds) {
                 const KernelVariantReport r = compiler.compile(data, options, variant, adaptive, wavefrontStage);
-                const std::string stage = variant == KernelVariant::General ? "general" : adaptive ? "adaptive" : r.stage;
+                const std::string stage = variant == KernelVariant::General ? "general"
+                                          : adaptive && wavefrontStage == gpu::WAVEFRONT_OFF ? "adaptive"
+                                          : adaptive ? "a-" + r.stage
+                                                     : r.stage;
                 std::printf("%-40s %-8s %6s %8s %6s %8s %9s %6s %9s  %s%s (k=%u)\n", label.c_str(), stage.c_str(),
                             number(r.vgprs).c_str(), number(r.spilledVgprs).c_str(), number(r.sgprs).c_str(),
                             number(r.spilledSgprs).c_str(), number(r.scratchBytes).c_str(), number(r.wavesPerSimd).c_str(),
