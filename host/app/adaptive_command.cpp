@@ -35,8 +35,8 @@ std::string errorText(const adaptive::ImageErrorEstimate& e) {
     return text;
 }
 
-// The rounds on one device: the GPU when `gpu` and `gpuData` are given, else the CPU reference
-// from `accel`. Both commands (a render, watch mode) run them through here.
+// The rounds on one device: the GPU when `gpu` and `gpuData` are given (with `kernel`: --gpu-kernel),
+// else the CPU reference from `accel`. Both commands (a render, watch mode) run them through here.
 struct DeviceRounds {
     adaptive::AdaptiveResult result;
     std::string device;                 // for the summary: the device, and on the GPU the kernel
@@ -46,7 +46,7 @@ struct DeviceRounds {
 
 DeviceRounds runRounds(GpuRenderer* gpu, const GpuSceneData* gpuData, const Scene& scene, const SceneAccel* accel,
                        const RenderOptions& options, const adaptive::AdaptiveOptions& adaptiveOptions,
-                       const adaptive::RoundDone& onRound) {
+                       const adaptive::RoundDone& onRound, GpuKernel kernel) {
     DeviceRounds out;
     out.onGpu = gpu && gpuData;
     std::optional<CpuSampleRanges> cpu;
@@ -56,7 +56,7 @@ DeviceRounds runRounds(GpuRenderer* gpu, const GpuSceneData* gpuData, const Scen
         options.width, options.height, rowsOf(options), adaptiveOptions,
         [&](const std::vector<std::uint32_t>& next, adaptive::PixelAccumulation& acc) {
             if (cpu) return cpu->add(next, acc);
-            gpu->addSampleRanges(*gpuData, options, next, acc, &gpuStats);
+            gpu->addSampleRanges(*gpuData, options, next, acc, &gpuStats, kernel);
             out.nonFiniteSamples += gpuStats.nonFiniteSamples;
         },
         onRound);
@@ -64,8 +64,8 @@ DeviceRounds runRounds(GpuRenderer* gpu, const GpuSceneData* gpuData, const Scen
         out.nonFiniteSamples = cpu->stats().nonFiniteSamples;
         out.device = "cpu (" + std::to_string(cpu->stats().threads) + " threads)";
     } else {
-        out.device = gpu->deviceName() + " [kernel: " + gpuStats.features + "; samples/dispatch=" +
-                     std::to_string(gpuStats.samplesPerDispatch) + "]";
+        out.device = gpu->deviceName() + " [kernel: " + gpuStats.features +
+                     (gpuStats.wavefront ? "; wavefront stages" : "; samples/dispatch=" + std::to_string(gpuStats.samplesPerDispatch)) + "]";
     }
     return out;
 }
@@ -123,12 +123,12 @@ int runAdaptiveRender(CommandLine& cl) {
             const ExitAtOnceOnInterrupt scope;  // the tree of a large mesh takes seconds
             accel.emplace(prepareCpuScene(scene));
         }
-        return runRounds(nullptr, nullptr, scene, &*accel, cl.render, cl.adaptive, onRound);
+        return runRounds(nullptr, nullptr, scene, &*accel, cl.render, cl.adaptive, onRound, GpuKernel::Auto);
     };
     const DeviceRounds rounds = [&] {
         if (!gpu) return onCpu();
         try {
-            return runRounds(gpu.get(), &*gpuData, scene, nullptr, cl.render, cl.adaptive, onRound);
+            return runRounds(gpu.get(), &*gpuData, scene, nullptr, cl.render, cl.adaptive, onRound, gpuSettingsOf(cl).kernel);
         } catch (const GpuKernelError& e) {
             // The kernel refused this scene (lavapipe's loop limiter): under --device auto the CPU
             // reference computes the same image from the start.
@@ -176,7 +176,7 @@ int runAdaptiveRender(CommandLine& cl) {
 }
 
 DeviceRender renderAdaptivePrepared(GpuRenderer* gpu, const GpuSceneData* gpuData, const Scene& scene, const SceneAccel* accel,
-                                    const RenderOptions& options, const adaptive::AdaptiveOptions& adaptiveOptions) {
+                                    const RenderOptions& options, const adaptive::AdaptiveOptions& adaptiveOptions, GpuKernel kernel) {
     const double pixels = pixelsOf(options);
     const DeviceRounds rounds =
         runRounds(gpu, gpuData, scene, accel, options, adaptiveOptions,
@@ -185,7 +185,8 @@ DeviceRender renderAdaptivePrepared(GpuRenderer* gpu, const GpuSceneData* gpuDat
                       Image soFar = meanImage(acc);
                       clampOverflowedPixels(soFar);
                       options.onCheckpoint->checkpoint(soFar, static_cast<int>(std::lround(r.samples / pixels)));
-                  });
+                  },
+                  kernel);
     DeviceRender out;
     out.image = meanImage(rounds.result.acc);
     clampOverflowedPixels(out.image);

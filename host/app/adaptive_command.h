@@ -14,8 +14,9 @@ int runAdaptiveRender(CommandLine& cl);
 // An adaptive render of a prepared scene (watch mode): on the GPU when `gpu` and `gpuData` are
 // given, else on the CPU reference from `accel`. After every round (the last included),
 // options.onCheckpoint (if set) gets the image so far with its mean rpp. The result's `device`
-// also gives the estimated error, why the rounds stopped, and the counts.
+// also gives the estimated error, why the rounds stopped, and the counts. `kernel`: --gpu-kernel.
 DeviceRender renderAdaptivePrepared(GpuRenderer* gpu, const GpuSceneData* gpuData, const Scene& scene, const SceneAccel* accel,
-                                    const RenderOptions& options, const adaptive::AdaptiveOptions& adaptiveOptions);
+                                    const RenderOptions& options, const adaptive::AdaptiveOptions& adaptiveOptions,
+                                    GpuKernel kernel = GpuKernel::Auto);
 
 }  // namespace vkrt

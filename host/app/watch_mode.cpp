@@ -227,7 +227,8 @@ private:
             // Adaptive sampling's rounds, shown as --progressive's passes are (adaptive_command.h).
             if (loaded_->gpu) {
                 try {
-                    return renderAdaptivePrepared(gpu_.get(), &*loaded_->gpu, loaded_->scene, nullptr, options, cl_.adaptive);
+                    return renderAdaptivePrepared(gpu_.get(), &*loaded_->gpu, loaded_->scene, nullptr, options, cl_.adaptive,
+                                                  gpuSettingsOf(cl_).kernel);
                 } catch (const GpuKernelError& e) {
                     if (cl_.device != DeviceChoice::Auto) throw;
                     std::cerr << "note: " << e.what() << "\nnote: rendering on the CPU reference instead\n";
