@@ -29,7 +29,7 @@ layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 // One atomic site for every failure (each inlined atomic is a per-lane loop that runs whether
 // or not a lane takes it); the first failing pixel and sample are recorded for the message.
 void reportStatus(uint pixel, uint failedSample, uint nonFinite) {
-    uint failures = failureFlags();
+    uint failures = failureFlags() | (WAVEFRONT && g_shadowRaysMismatch ? STATUS_SHADOW_RAYS_MISMATCH : 0u);
     if (failures != 0u) {
         atomicOr(status.flags.x, failures);
         if (atomicCompSwap(status.flags.y, 0u, pixel + 1u) == 0u) status.flags.z = failedSample;

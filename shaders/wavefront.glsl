@@ -63,8 +63,8 @@ void wfGenerate() {
 // Round r's queue of live paths and its length.
 uint wfQueueLength() { return wfRoundQueue() == 0u ? status.paths.y : status.paths.z; }
 
-// EXTEND: the closest hit of a live path's ray. Its first invocation empties the queues this round
-// appends to (read by no stage before SHADE_RECORD).
+// EXTEND: the closest hit of a live path's ray (wavefront_extend.comp's first invocation also
+// empties the queues this round appends to).
 void wfExtend() {
     PathRay ray = wfLoadRay();
     Hit hit;
@@ -82,6 +82,7 @@ void wfShade() {
     PathRay ray = wfLoadRay();
     uvec4 h = wfLoad(WF_HIT);
     uvec4 b = wfLoad(WF_BARY);
+    g_wfRecorded = b.z;
     Hit hit;
     hit.t = uintBitsToFloat(h.x);
     hit.instance = h.y;
@@ -96,13 +97,19 @@ void wfShade() {
     shadeRay(ray, h.w != 0u, hit, key, radiance, q);
     flushQueue(q);
     if (WAVEFRONT_STAGE == WAVEFRONT_SHADE_RECORD) {
-        if (g_wfShadows > 0u) {
-            uint first = atomicAdd(status.paths.w, g_wfShadows);
-            for (uint j = 0u; j < g_wfShadows; ++j) wfSetQueueEntry(WF_SHADOW_QUEUE, first + j, g_wfSlot + j * wfPaths());
-            wfCountGroups(WF_SHADOW_QUEUE, first, g_wfShadows);
+        // At most the slots there are (more is an error shadowRayClear reported): the queue's room.
+        uint recorded = min(g_wfShadows, wfShadowsPerPath());
+        wfStore(WF_BARY, uvec4(b.xy, recorded, 0u));
+        if (recorded > 0u) {
+            uint first = atomicAdd(status.paths.w, recorded);
+            for (uint j = 0u; j < recorded; ++j) wfSetQueueEntry(WF_SHADOW_QUEUE, first + j, g_wfSlot + j * wfPaths());
+            wfCountGroups(WF_SHADOW_QUEUE, first, recorded);
         }
         return;
     }
+    // RESOLVE must have asked for exactly the rays RECORD recorded; a driver that compiled the two
+    // stages' float decisions apart would otherwise read other rays' answers silently.
+    if (g_wfShadows != b.z) g_shadowRaysMismatch = true;
     bool live = !g_budgetExceeded;
     if (live && q.hasNext) {
         ray = q.next;
@@ -140,10 +147,11 @@ void wfShadow(uint invocation) {
 
 // ACCUMULATE: invocation p adds the wave's samples of band pixel p (adaptive: of work-list entry p,
 // those within its range; odd-numbered ones also to its odd sum) to its sum, in sample order (the
-// megakernel's order), a NaN or Inf sample counted and added as black. Returns the pixel.
-uint wfAccumulate(uint p, inout uint nonFinite) {
+// megakernel's order), a NaN or Inf sample counted and added as black. Returns the pixel; `first`
+// gets the first sample it added (for a failure's report).
+uint wfAccumulate(uint p, inout uint nonFinite, out uint first) {
     uint index;
-    uint first = passFirstSample(g_wave);
+    first = passFirstSample(g_wave);
     uint samples = passSamples(g_wave);
     if (ADAPTIVE) {
         uvec4 entry = wfWorkEntry(p);

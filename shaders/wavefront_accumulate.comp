@@ -9,6 +9,7 @@ void main() {
     uint invocation = wfBegin();
     if (invocation >= wfBandPixels()) return;
     uint nonFinite = 0u;
-    uint pixel = wfAccumulate(invocation, nonFinite);
-    reportStatus(pixel, passFirstSample(g_wave), nonFinite);
+    uint first;
+    uint pixel = wfAccumulate(invocation, nonFinite, first);
+    reportStatus(pixel, first, nonFinite);
 }

@@ -33,6 +33,8 @@ const uint WF_LIVE = 0x80000000u;  // RADIANCE.w: the path has a ray to trace
 PassParams g_wave;       // the dispatch's push constants (render.comp sets it)
 uint g_wfSlot = 0u;      // this invocation's path slot
 uint g_wfShadows = 0u;   // shadow rays recorded (SHADE_RECORD) or read back (SHADE_RESOLVE) at this hit
+bool g_shadowRaysMismatch = false;  // SHADE_RESOLVE asked for other rays than SHADE_RECORD recorded
+uint g_wfRecorded = 0u;  // SHADE_RESOLVE: the shadow rays SHADE_RECORD recorded at this hit (BARY.z)
 
 uint wfBandPixels() { return passTileSize(g_wave).x * passTileSize(g_wave).y; }
 uint wfPaths() { return wfBandPixels() * passSamples(g_wave); }
@@ -42,7 +44,7 @@ uint wfShadowsPerPath() { return passStride(g_wave); }
 // round, end, 0) per entry; a wave is entries [tile.x, tile.x + tile.z) (tile.w = 1; tile.y = the
 // list's length) times sample offsets pass.x .. pass.x + pass.w - 1 within each entry's range, and
 // a slot past its entry's range has no sample.
-uint wfWorkListTexel() { return 2u * frameWidth() * frameHeight(); }
+uint wfWorkListTexel() { return ACCUM_TEXELS_PER_PIXEL * frameWidth() * frameHeight(); }
 uvec4 wfWorkEntry(uint slot) { return imageLoad(accumTexels, int(wfWorkListTexel() + passTileOrigin(g_wave).x + slot % wfBandPixels())); }
 // The first texel of the state: after the pixel sums (and, adaptive, the work list).
 uint wfStateTexel() { return ADAPTIVE ? wfWorkListTexel() + passTileOrigin(g_wave).y : frameWidth() * frameHeight(); }
@@ -97,6 +99,10 @@ bool shadowRayClear(vec3 origin, vec3 dir, float tMax) {
             return false;
         }
         uint field = WF_SHADOWS + 2u * j;
+        if (WAVEFRONT_STAGE == WAVEFRONT_SHADE_RESOLVE && j >= g_wfRecorded) {
+            g_shadowRaysMismatch = true;  // RECORD recorded fewer: this ray's answer is not there
+            return false;
+        }
         if (WAVEFRONT_STAGE == WAVEFRONT_SHADE_RECORD) {
             wfStoreFloats(field, vec4(origin, tMax));
             wfStoreFloats(field + 1u, vec4(dir, 0.0));

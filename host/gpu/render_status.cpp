@@ -35,7 +35,12 @@ void throwIfKernelFailed(const gpu::RenderStatus& status, std::uint32_t imageWid
     if (flags & gpu::STATUS_RAY_STACK_OVERFLOW)
         message += " a ray stack overflowed (BVH traversal stack of " + std::to_string(gpu::TRAVERSAL_STACK_SIZE) +
                    " entries, or the pending reflection/refraction rays); reduce --max-depth or --gloss-samples;";
-    const std::uint32_t known = gpu::STATUS_LOOP_BUDGET_EXCEEDED | gpu::STATUS_RAY_STACK_OVERFLOW | gpu::STATUS_LOOP_CUT_OFF;
+    if (flags & gpu::STATUS_SHADOW_RAYS_MISMATCH)
+        message += " the wavefront stages' two shadings of one hit asked for different shadow rays (this driver compiled "
+                   "shaders/wavefront_shade_record.comp and wavefront_shade_resolve.comp to different decisions); "
+                   "render with --gpu-kernel megakernel and please report it with the scene;";
+    const std::uint32_t known = gpu::STATUS_LOOP_BUDGET_EXCEEDED | gpu::STATUS_RAY_STACK_OVERFLOW | gpu::STATUS_LOOP_CUT_OFF |
+                                gpu::STATUS_SHADOW_RAYS_MISMATCH;
     if (flags & ~known) {
         std::ostringstream hex;
         hex << std::hex << (flags & ~known);

@@ -22,7 +22,8 @@ WavePlan planWaves(std::uint32_t width, std::uint32_t rowBegin, std::uint32_t ro
     const std::uint32_t rows = rowEnd - rowBegin;
     const auto bandRows = static_cast<std::uint32_t>(std::min<std::uint64_t>(rows, pathsPerWave / width));
     const std::uint64_t bandPixels = static_cast<std::uint64_t>(bandRows) * width;
-    const auto perWave = static_cast<std::uint32_t>(std::clamp<std::uint64_t>(pathsPerWave / bandPixels, 1, samples));
+    const auto perWave =
+        static_cast<std::uint32_t>(std::clamp<std::uint64_t>(pathsPerWave / bandPixels, 1, std::min(samples, kMaxWaveSamples)));
     WavePlan plan;
     for (std::uint32_t first = 0, count = 0; first < samples; first += count) {
         count = std::min(perWave, samples - first);
@@ -43,8 +44,11 @@ WavePlan planWaves(std::uint32_t width, std::uint32_t rowBegin, std::uint32_t ro
 
 std::uint64_t wavePathsFor(const BufferLimits& limits, std::uint64_t pixels, const WavefrontPathLayout& layout,
                            std::uint32_t maxWorkgroups, std::uint64_t target) {
-    // A quarter of the heap at most: the scene's tables share it.
-    const std::uint64_t texelLimit = std::min({limits.maxTexelBufferElements, limits.maxMemoryAllocationSize / 16, limits.heapBytes / 64});
+    // A quarter of the heap at most: the scene's tables share it. The kernels index texels with a
+    // signed int, and the buffer's size is rounded up a little (stableTexelBufferBytes): margins.
+    const std::uint64_t cap = std::min({limits.maxTexelBufferElements, limits.maxMemoryAllocationSize / 16, limits.heapBytes / 64,
+                                        std::uint64_t{0x7fffffff}});
+    const std::uint64_t texelLimit = cap > 64 ? cap - 64 : 0;
     const std::uint64_t free = texelLimit > pixels ? texelLimit - pixels : 0;
     std::uint64_t paths = std::min(target, free / layout.texelsPerPath());
     const std::uint64_t lanes = static_cast<std::uint64_t>(maxWorkgroups) * 64;

@@ -46,6 +46,10 @@ struct WavePlan {
 WavePlan planWaves(std::uint32_t width, std::uint32_t rowBegin, std::uint32_t rowEnd, std::uint32_t samples,
                    std::uint64_t pathsPerWave, const std::vector<std::uint32_t>& roundBreaks = {});
 
+// The most samples of one pixel a wave holds: ACCUMULATE sums them in one loop, which must stay
+// far below LOOP_BUDGET with lavapipe's lockstep factor (sample_batching.h).
+inline constexpr std::uint32_t kMaxWaveSamples = 4096;
+
 // Paths per wave on a device: `target` (enough to fill it), fewer where one path's texels after
 // the image's sums would not fit the accumulation buffer's limits or the SHADOW stage's dispatch
 // (maxWorkgroups of 64 lanes) could not cover its rays.

@@ -261,7 +261,8 @@ void addSampleRangesWavefront(const GpuRenderDevice& device, SceneUpload& gpuSce
     std::size_t active = work.size();
     for (std::uint32_t offset = 0; offset < most;) {
         while (active > 0 && work[active - 1].z - work[active - 1].y <= offset) --active;
-        const auto samples = static_cast<std::uint32_t>(std::clamp<std::uint64_t>(pathsPerWave / active, 1, most - offset));
+        const auto samples = static_cast<std::uint32_t>(
+            std::clamp<std::uint64_t>(pathsPerWave / active, 1, std::min(most - offset, kMaxWaveSamples)));
         const std::uint64_t entriesPerWave = std::max<std::uint64_t>(1, pathsPerWave / samples);
         for (std::size_t first = 0; first < active; first += entriesPerWave) {
             throwIfCancelled(device, options);

@@ -353,6 +353,8 @@ VKRT_FN bool worldHoldsPrimitive(uvec4 world, uint prim) { return prim - world.z
 VKRT_CONST uint STATUS_LOOP_BUDGET_EXCEEDED = 1u;
 VKRT_CONST uint STATUS_RAY_STACK_OVERFLOW = 2u;
 VKRT_CONST uint STATUS_LOOP_CUT_OFF = 4u;  // a loop ended before its work was done (a driver's loop limiter)
+VKRT_CONST uint STATUS_SHADOW_RAYS_MISMATCH = 8u;  // wavefront: a hit's shading asked SHADE_RECORD and SHADE_RESOLVE
+                                                   // for different shadow rays (their compilations disagree)
 struct RenderStatus {
     uvec4 flags;       // x: STATUS_* bits, y: first offending pixel index + 1 (0: none), z: its sample,
                        // w: number of samples whose radiance was NaN/Inf (replaced by black)
