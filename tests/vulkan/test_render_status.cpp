@@ -56,6 +56,15 @@ TEST(RenderStatus, OtherDriversAreNotToldAboutLavapipe) {
     EXPECT_EQ(budget.find("lavapipe"), std::string::npos) << budget;
 }
 
+// The wavefront stages' self-check (wavefront.glsl): the message says what disagreed and the way round.
+TEST(RenderStatus, ShadowRayMismatchNamesTheStagesAndTheMegakernel) {
+    const std::string m = failure({glm::uvec4(gpu::STATUS_SHADOW_RAYS_MISMATCH, 4u * 10u + 2u + 1u, 3u, 0u)}, 10);
+    EXPECT_NE(m.find("pixel (2, 4), sample 3"), std::string::npos) << m;
+    EXPECT_NE(m.find("wavefront_shade_record.comp"), std::string::npos) << m;
+    EXPECT_NE(m.find("--gpu-kernel megakernel"), std::string::npos) << m;
+    EXPECT_EQ(m.find("unknown status"), std::string::npos) << m;
+}
+
 TEST(RenderStatus, StackOverflowWithoutARecordedPixel) {
     const std::string m = failure({glm::uvec4(gpu::STATUS_RAY_STACK_OVERFLOW, 0u, 0u, 0u)}, 100);
     EXPECT_NE(m.find("stack overflowed"), std::string::npos) << m;
