@@ -29,6 +29,14 @@ Scene load(const std::string& path) {
     return loadScene(path, load, diagnostics);
 }
 
+// A small, quiet render of `scene` through its own camera.
+RenderOptions smallRender(const Scene& scene, int size, int rpp) {
+    RenderOptions options = test::small(size, rpp);
+    options.quiet = true;
+    options.camera = scene.defaultCamera;
+    return options;
+}
+
 GpuRenderSettings wavefront(std::uint64_t wavePaths = 0) {
     GpuRenderSettings s;
     s.kernel = GpuKernel::Wavefront;
@@ -78,10 +86,8 @@ TEST_P(WavefrontFeature, EqualsTheMegakernel) {
     const Case& c = GetParam();
     VKRT_SKIP_WITHOUT(c.path);
     const Scene scene = load(c.path);
-    RenderOptions options = test::small(40, 4);
+    RenderOptions options = smallRender(scene, 40, 4);
     options.height = 30;
-    options.quiet = true;
-    options.camera = scene.defaultCamera;
     options.estimator = c.estimator;
     const GpuSceneData data = GpuRenderer::prepare(scene);
     GpuRenderStats stats;
@@ -106,10 +112,8 @@ INSTANTIATE_TEST_SUITE_P(WavefrontRender, WavefrontFeature, ::testing::ValuesIn(
 TEST(WavefrontRender, TheImageDoesNotDependOnThePathsInFlight) {
     for (const char* file : {"/scenes/glass_and_instances.xml", "/scenes/quad_lit_room.json"}) {
         const Scene scene = load(test::sourceDir() + file);
-        RenderOptions options = test::small(24, 6);
+        RenderOptions options = smallRender(scene, 24, 6);
         options.height = 20;
-        options.quiet = true;
-        options.camera = scene.defaultCamera;
         const GpuSceneData data = GpuRenderer::prepare(scene);
         const Image whole = test::gpu().render(data, options, nullptr, wavefront());
         for (const std::uint64_t paths : {24ull, 24ull * 5, 24ull * 20 * 4}) {
@@ -133,9 +137,7 @@ public:
 // result is the one-pass image, and each image agrees with the CPU's after as many samples.
 TEST(WavefrontRender, ProgressivePassesEndOnTheirSamplesAndAgreeWithTheCpu) {
     const Scene scene = load(test::sourceDir() + "/scenes/glass_and_instances.xml");
-    RenderOptions options = test::small(32, 9);
-    options.quiet = true;
-    options.camera = scene.defaultCamera;
+    RenderOptions options = smallRender(scene, 32, 9);
     const GpuSceneData data = GpuRenderer::prepare(scene);
     const Image plain = test::gpu().render(data, options, nullptr, wavefront());
     options.checkpoints = 3;
@@ -157,9 +159,7 @@ TEST(WavefrontRender, ProgressivePassesEndOnTheirSamplesAndAgreeWithTheCpu) {
 // --part's rows: those rows of the whole image, the others black.
 TEST(WavefrontRender, APartRendersItsRowsOfTheWholeImage) {
     const Scene scene = load(test::sourceDir() + "/scenes/quad_lit_room.json");
-    RenderOptions options = test::small(24, 4);
-    options.quiet = true;
-    options.camera = scene.defaultCamera;
+    RenderOptions options = smallRender(scene, 24, 4);
     const GpuSceneData data = GpuRenderer::prepare(scene);
     const Image whole = test::gpu().render(data, options, nullptr, wavefront());
     options.rows = glm::ivec2(7, 16);

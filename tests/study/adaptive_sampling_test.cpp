@@ -38,6 +38,15 @@ RenderOptions smallOptions(const Scene& scene, int size) {
     return o;
 }
 
+// Rounds toward `target` of at most `maxRpp` samples a pixel; `o` renders up to that many.
+adaptive::AdaptiveOptions roundsUpTo(double target, std::uint32_t maxRpp, RenderOptions& o) {
+    adaptive::AdaptiveOptions a;
+    a.targetError = target;
+    a.maxRpp = maxRpp;
+    o.samplesPerPixel = static_cast<int>(maxRpp);
+    return a;
+}
+
 // The rule: a pixel that got N samples holds the first N samples of its sequence, so it is
 // that pixel of a uniform N-rpp render, bit for bit (both sum the same floats in the same order).
 // Checked for every count the adaptive render used, with both samplers adaptive sampling takes.
@@ -233,10 +242,7 @@ TEST(AdaptiveSampling, TheGpuRoundsAgreeWithTheCpu) {
         const SceneAccel accel = prepareCpuScene(scene);
         const GpuSceneData data = GpuRenderer::prepare(scene);
         RenderOptions o = smallOptions(scene, 48);
-        adaptive::AdaptiveOptions a;
-        a.targetError = 0.01;
-        a.maxRpp = 512;
-        o.samplesPerPixel = static_cast<int>(a.maxRpp);
+        const adaptive::AdaptiveOptions a = roundsUpTo(0.01, 512, o);
         const adaptive::AdaptiveResult onCpu = renderAdaptively(scene, accel, o, a);
         const adaptive::AdaptiveResult onGpu = adaptive::renderAdaptive(
             o.width, o.height, rowsOf(o), a,
@@ -270,10 +276,7 @@ TEST(AdaptiveSampling, TheWavefrontRoundsAreTheMegakernels) {
         const Scene scene = exampleScene(name);
         const GpuSceneData data = GpuRenderer::prepare(scene);
         RenderOptions o = smallOptions(scene, 40);
-        adaptive::AdaptiveOptions a;
-        a.targetError = 0.02;
-        a.maxRpp = 256;
-        o.samplesPerPixel = static_cast<int>(a.maxRpp);
+        const adaptive::AdaptiveOptions a = roundsUpTo(0.02, 256, o);
         auto rounds = [&](GpuKernel kernel) {
             return adaptive::renderAdaptive(o.width, o.height, rowsOf(o), a,
                                             [&](const std::vector<std::uint32_t>& next, adaptive::PixelAccumulation& acc) {
