@@ -30,7 +30,8 @@ void wfStoreRay(PathRay r) {
 }
 
 // GENERATE: the camera ray of the slot's sample; no radiance yet, an empty stack. Round 0's queue
-// is every slot in order; adaptive, the slots with a sample, appended (the rest end here).
+// is every slot in order (its length and dispatch set by the host, StageRecorder::resetQueues);
+// adaptive, the slots with a sample, appended (the rest end here).
 void wfGenerate() {
     uvec2 pixel = wfSlotPixel(g_wfSlot);
     uint sampleNumber = wfSlotSample(g_wfSlot);
@@ -51,13 +52,6 @@ void wfGenerate() {
         return;
     }
     wfSetQueueEntry(0u, g_wfSlot, g_wfSlot);
-    if (g_wfSlot == 0u) {
-        status.paths.y = wfPaths();
-        status.paths.z = 0u;
-        status.queueGroups[0] = uvec4((wfPaths() + 63u) / 64u, 1u, 1u, 0u);
-        status.queueGroups[1] = uvec4(1u, 1u, 1u, 0u);
-        status.queueGroups[2] = uvec4(0u, 1u, 1u, 0u);
-    }
 }
 
 // Round r's queue of live paths and its length.

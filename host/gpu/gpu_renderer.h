@@ -99,8 +99,9 @@ public:
                          adaptive::PixelAccumulation& acc, GpuRenderStats* stats = nullptr, GpuKernel kernel = GpuKernel::Auto);
 
     // Loads the kernel again (with --shader-dir, compiles the GLSL as it is now) and drops the
-    // pipelines made from the old one; returns the seconds it took. On an error (ShaderCompileError)
-    // the old kernel stays.
+    // pipelines made from the old one; returns the seconds it took. On an error in render.comp
+    // (ShaderCompileError) the old kernel stays; the wavefront stages' files are compiled at their
+    // next use, so an error there is thrown by the next wavefront render (kernel_modules.h).
     double reloadKernel();
 
     std::string deviceName() const;

@@ -55,16 +55,20 @@ public:
         }
     }
 
-    // The queues' lengths and dispatch sizes at a wave's start (GENERATE appends to queue 0 when
-    // some slots have no sample: adaptive rounds), written on the device's timeline.
-    void resetQueues() {
+    // The queues' lengths and dispatch sizes at a wave's start, written on the device's timeline:
+    // round 0's queue holds `firstQueue` entries (GENERATE writes every slot in order), or none
+    // when GENERATE appends them (adaptive rounds: only the slots with a sample); the others none.
+    void resetQueues(std::uint32_t firstQueue) {
         struct Counters {
             glm::uvec3 lengths;  // RenderStatus::paths y, z, w
             glm::uvec4 groups[3];
         };
         static_assert(offsetof(gpu::RenderStatus, queueGroups) == offsetof(gpu::RenderStatus, paths) + 16);
         static_assert(sizeof(Counters) == 12 + 3 * 16);  // no padding: written over paths.y .. queueGroups[2]
-        const Counters counters{glm::uvec3(0u), {glm::uvec4(1u, 1u, 1u, 0u), glm::uvec4(1u, 1u, 1u, 0u), glm::uvec4(0u, 1u, 1u, 0u)}};
+        // A path queue keeps one workgroup when empty: its first invocation empties the next queue.
+        const Counters counters{glm::uvec3(firstQueue, 0u, 0u),
+                                {glm::uvec4(std::max(groupsFor(firstQueue), 1u), 1u, 1u, 0u), glm::uvec4(1u, 1u, 1u, 0u),
+                                 glm::uvec4(0u, 1u, 1u, 0u)}};
         commands_.updateBuffer<Counters>(status_, offsetof(gpu::RenderStatus, paths) + 4, counters);
         vk::MemoryBarrier barrier(vk::AccessFlagBits::eTransferWrite,
                                   vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite | vk::AccessFlagBits::eIndirectCommandRead);
@@ -103,7 +107,8 @@ public:
     WaveRunner(const GpuRenderDevice& device, SceneUpload& scene, const GpuSceneData& data, const KernelInputs& in,
                const RenderOptions& options, GpuRenderStats& stats)
         : device_(device), scene_(scene), stats_(stats), layout_(wavefrontPathLayout(data.tables, in.features, in.frame)),
-          branches_(in.features.pathStackSize > 0), width_(static_cast<std::uint32_t>(options.width)) {
+          branches_(in.features.pathStackSize > 0), appends_(in.features.adaptive),
+          width_(static_cast<std::uint32_t>(options.width)) {
         for (std::uint32_t stage = gpu::WAVEFRONT_GENERATE; stage < gpu::WAVEFRONT_STAGE_COUNT; ++stage) {
             FeatureSet features = in.features;
             features.wavefrontStage = stage;
@@ -135,7 +140,7 @@ public:
         std::uint32_t rounds = 0;
         const std::uint32_t shadows = layout_.shadowsPerPath;
         submit(wave, [&](StageRecorder& r) {
-            r.resetQueues();
+            r.resetQueues(appends_ ? 0u : static_cast<std::uint32_t>(paths));
             r.stage(gpu::WAVEFRONT_GENERATE, paths);
             r.rounds(0, roundsPerSubmission_, shadows);
             if (!branches_) r.stage(gpu::WAVEFRONT_ACCUMULATE, accumulators);
@@ -176,6 +181,7 @@ private:
     GpuRenderStats& stats_;
     WavefrontPathLayout layout_;
     bool branches_;
+    bool appends_;  // GENERATE appends round 0's queue (adaptive) instead of writing every slot
     std::uint32_t width_;
     std::uint32_t roundsPerSubmission_ = 1;
     std::uint32_t ended_ = 0;  // paths ended so far, as the kernels count them (modulo 2^32)
