@@ -60,6 +60,12 @@ struct GpuRenderer::Impl {
     }
 };
 
+void countSubmission(GpuRenderStats& stats, double wallSeconds, double deviceSeconds) {
+    if (deviceSeconds >= 0.0) stats.kernelSeconds = std::max(stats.kernelSeconds, 0.0) + deviceSeconds;
+    stats.maxSubmissionSeconds = std::max(stats.maxSubmissionSeconds, wallSeconds);
+    ++stats.submissions;
+}
+
 GpuKernel chooseGpuKernel(const DeviceInfo& device) { return device.lavapipe ? GpuKernel::Megakernel : GpuKernel::Wavefront; }
 
 namespace {
@@ -162,11 +168,8 @@ Image GpuRenderer::render(const GpuSceneData& data, const RenderOptions& options
             recordSubmission(commands, *pipeline, impl_->layout.pipelineLayout(), gpuScene.descriptorSet(), submission, batching);
         });
         planner.reportSeconds(seconds);
-        if (impl_->runner.lastDeviceSeconds() >= 0.0)
-            stats.kernelSeconds = std::max(stats.kernelSeconds, 0.0) + impl_->runner.lastDeviceSeconds();
-        ++stats.submissions;
+        countSubmission(stats, seconds, impl_->runner.lastDeviceSeconds());
         stats.dispatches += submission.sampleCount;
-        stats.maxSubmissionSeconds = std::max(stats.maxSubmissionSeconds, seconds);
         throwIfKernelFailed(gpuScene.status(), width, impl_->context.info().loopLimiter);
         progress.update(planner.fractionDone());
         if (options.onCheckpoint && submission.endsPasses) {
@@ -281,10 +284,7 @@ void GpuRenderer::addSampleRangesMegakernel(SceneUpload& gpuScene, const KernelI
                 recordAdaptivePass(commands, *pipeline, impl_->layout.pipelineLayout(), gpuScene.descriptorSet(),
                                    static_cast<std::uint32_t>(first), count, pass * k, k);
             });
-            stats.maxSubmissionSeconds = std::max(stats.maxSubmissionSeconds, seconds);
-            if (impl_->runner.lastDeviceSeconds() >= 0.0)
-                stats.kernelSeconds = std::max(stats.kernelSeconds, 0.0) + impl_->runner.lastDeviceSeconds();
-            ++stats.submissions;
+            countSubmission(stats, seconds, impl_->runner.lastDeviceSeconds());
             ++stats.dispatches;
             throwIfKernelFailed(gpuScene.status(), static_cast<std::uint32_t>(width), impl_->context.info().loopLimiter);
         }

@@ -74,6 +74,11 @@ struct GpuRenderStats {
     std::uint64_t overflowedPixels = 0;  // finite samples summed past float: clamped (float_range.h)
 };
 
+// One submission's times into the render's stats: its wall-clock seconds, and the device's own
+// (timestamps; negative where the queue writes none). The renderer's loops (megakernel passes,
+// adaptive passes, wavefront waves) all count through this.
+void countSubmission(GpuRenderStats& stats, double wallSeconds, double deviceSeconds);
+
 class GpuRenderer {
 public:
     // Creates the device, layouts and loads the kernel (compiling it with --shader-dir).

@@ -169,10 +169,7 @@ private:
             record(recorder);
             computeToHostBarrier(commands);
         });
-        if (device_.runner.lastDeviceSeconds() >= 0.0)
-            stats_.kernelSeconds = std::max(stats_.kernelSeconds, 0.0) + device_.runner.lastDeviceSeconds();
-        stats_.maxSubmissionSeconds = std::max(stats_.maxSubmissionSeconds, seconds);
-        ++stats_.submissions;
+        countSubmission(stats_, seconds, device_.runner.lastDeviceSeconds());
         throwIfKernelFailed(scene_.status(), width_, device_.context.info().loopLimiter);
     }
 
