@@ -88,6 +88,7 @@ float frameShutterClose() { return frame.shutter.y; }
 uint frameWidth() { return frame.image.x; }
 uint frameHeight() { return frame.image.y; }
 uint frameCameraType() { return frame.image.z; }
+uint frameFinalRaysDark() { return frame.image.w; }  // FINAL_*_DARK bits
 uint frameSampler() { return frame.sampling.x; }
 uint frameLightSamples() { return frame.sampling.z; }
 uint frameGlossSamples() { return frame.sampling.w; }

@@ -51,6 +51,12 @@ PathRay loadStackEntry(uint e) {
     return PathRay(a.xyz, b.xyz, wfLoadFloats(field + 2u).xyz, floatBitsToUint(a.w), b.w);
 }
 
+// Whether a child ray of a hit of this depth would end at the maximum depth where it can find no
+// light (FINAL_*_DARK, host/lighting/final_rays.h): it is not traced, and the image is the same.
+bool finalRayDark(uint depth, uint kind) {
+    return depth + 1u >= frameMaxDepth() && (frameFinalRaysDark() & kind) != 0u;
+}
+
 // Records a child ray; a hit emits at most two between flushes (emitReflection flushes after each
 // gloss sample).
 void emitRay(inout PathQueue q, vec3 origin, vec3 dir, vec3 weight, uint depth, float bouncePdf) {
@@ -99,7 +105,7 @@ vec3 glossyDirection(vec3 r, float roughness, vec2 u) {
 
 // Reflection rays of a reflective material (mirror direction, or glossy samples of it).
 void emitReflection(inout PathQueue q, PathRay ray, Surface s, vec3 N, float roughness, vec3 weight, SampleKey key) {
-    if (ray.depth >= MAX_DEPTH || ray.depth >= frameMaxDepth()) return;
+    if (ray.depth >= MAX_DEPTH || ray.depth >= frameMaxDepth() || finalRayDark(ray.depth, FINAL_REFLECTION_DARK)) return;
     vec3 r = reflect(ray.dir, N);
     if (!HAS_GLOSS || roughness <= 0.0) {
         if (dot(r, s.geomNormal) > 0.0) emitRay(q, offsetTowards(s, r), r, weight, ray.depth + 1u, 0.0);
@@ -126,7 +132,7 @@ void emitDielectric(inout PathQueue q, PathRay ray, Surface s, Material m, float
     vec3 weight = ray.weight;
     // Leaving the medium: Beer-Lambert over the distance travelled inside (per-unit transmittance).
     if (!entering) weight *= pow(max(m.attenuation.rgb, vec3(0.0)), vec3(hitDistance));
-    if (ray.depth >= MAX_DEPTH || ray.depth >= frameMaxDepth()) return;
+    if (ray.depth >= MAX_DEPTH || ray.depth >= frameMaxDepth() || finalRayDark(ray.depth, FINAL_REFLECTION_DARK)) return;
     float eta = materialRefractiveIndex(m);
     vec3 n = entering ? s.shadeNormal : -s.shadeNormal;  // faces the incoming ray
     float n1 = entering ? 1.0 : eta;
@@ -169,6 +175,7 @@ void emitDielectric(inout PathQueue q, PathRay ray, Surface s, Material m, float
 // The Diffuse bounce (RENDERING.md §5): one cosine-weighted direction per pixel sample, carrying
 // kd (f cos / pdf = (kd / pi) cos / (cos / pi)); none below the geometric surface.
 void emitBounce(inout PathQueue q, PathRay ray, Surface s, vec3 N, vec3 kd, SampleKey key) {
+    if (finalRayDark(ray.depth, FINAL_BOUNCE_DARK)) return;
     vec2 u = sample2D(samplerKind(), frame.pixelGrid, key.pixel, key.index, dimBounce(ray.depth), key.seed);
     vec3 dir = cosineDirection(N, u);
     if (dot(dir, s.geomNormal) <= 0.0) return;

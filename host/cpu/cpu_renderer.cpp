@@ -167,6 +167,7 @@ void copyTotals(const PassTotals& totals, int threads, RenderStats& stats) {
     stats.shadowRays = totals.rays.shadow;
     stats.reflectionRays = totals.rays.reflection;
     stats.refractionRays = totals.rays.refraction;
+    stats.bounceRays = totals.rays.bounce;
     stats.nonFiniteSamples = totals.nonFinite;
 }
 
@@ -257,6 +258,7 @@ void CpuSampleRanges::add(const std::vector<std::uint32_t>& next, adaptive::Pixe
     stats_.shadowRays += round.shadowRays;
     stats_.reflectionRays += round.reflectionRays;
     stats_.refractionRays += round.refractionRays;
+    stats_.bounceRays += round.bounceRays;
     stats_.nonFiniteSamples += round.nonFiniteSamples;
 }
 

@@ -25,6 +25,7 @@ struct RenderStats {
     std::uint64_t shadowRays = 0;
     std::uint64_t reflectionRays = 0;      // mirror, glossy and dielectric reflections
     std::uint64_t refractionRays = 0;
+    std::uint64_t bounceRays = 0;          // Diffuse bounces
     std::uint64_t nonFiniteSamples = 0;    // samples replaced by black; any is a bug (RENDERING.md §8)
     std::uint64_t overflowedPixels = 0;    // finite samples summed past float: clamped (float_range.h)
 };

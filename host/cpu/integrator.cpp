@@ -223,6 +223,8 @@ glm::vec3 Integrator::diffuse(const Shader& shader, const SurfacePoint& sp, cons
     if (depth >= ctx_.maxDepth) return glm::vec3(0.0f);
     glm::vec3 radiance = directLight(shader, sp, n, ng, n, kd, glm::vec3(0.0f), depth, key);
     if (ctx_.environment && diffuseSamplesLights()) radiance += kd * environmentLight(sp, n, ng, depth, key);
+    // A bounce ending at the maximum depth where it can find no light is not traced (final_rays.h).
+    if (depth + 1 >= ctx_.maxDepth && !ctx_.finalRays.bounceSeesLight) return radiance;
 
     // One cosine-weighted bounce per pixel sample: f cos / pdf = (kd / pi) cos / (cos / pi) = kd.
     const glm::vec2 u = sampling::sample2D(ctx_.sampler, ctx_.pixelGrid, key.pixel, key.sample,
@@ -252,6 +254,7 @@ glm::vec3 Integrator::diffuse(const Shader& shader, const SurfacePoint& sp, cons
 glm::vec3 Integrator::reflection(const bvh::Ray& ray, const SurfacePoint& sp, const glm::vec3& n, const glm::vec3& ng,
                                  float roughness, int depth, glm::vec3 weight, SampleKey key) {
     if (depth >= ctx_.maxDepth) return glm::vec3(0.0f);
+    if (depth + 1 >= ctx_.maxDepth && !ctx_.finalRays.reflectionSeesLight) return glm::vec3(0.0f);  // final_rays.h
     const glm::vec3 r = mirrorDirection(ray.dir, n);
 
     auto traceFrom = [&](const glm::vec3& dir, const glm::vec3& branchWeight) -> glm::vec3 {
@@ -294,7 +297,8 @@ glm::vec3 Integrator::dielectric(const bvh::Ray& ray, const bvh::Hit& hit, const
     const glm::vec3 here = weight * transmittance;
 
     glm::vec3 reflected(0.0f), refracted(0.0f);
-    if (depth < ctx_.maxDepth) {
+    // Neither branch is traced where it would end at the maximum depth and find no light (final_rays.h).
+    if (depth < ctx_.maxDepth && (depth + 1 < ctx_.maxDepth || ctx_.finalRays.reflectionSeesLight)) {
         if (worthTracing(here * f)) {
             ++counts_.reflection;
             bvh::Ray next;

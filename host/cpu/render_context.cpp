@@ -47,6 +47,7 @@ RenderContext makeRenderContext(const Scene& scene, const SceneAccel& accel, con
     ctx.sampler = static_cast<unsigned>(options.sampler);
     ctx.seed = options.seed;
     ctx.maxDepth = options.maxDepth;
+    ctx.finalRays = finalRays(scene, options);
     ctx.samplesPerPixel = static_cast<unsigned>(options.samplesPerPixel);
     ctx.lightSamples = static_cast<unsigned>(options.lightSamples);
     ctx.glossSamples = static_cast<unsigned>(options.glossSamples);

@@ -9,6 +9,7 @@
 #include "camera.h"
 #include <memory>
 
+#include "final_rays.h"
 #include "scene_lighting.h"
 #include "lights.h"
 #include "render_options.h"
@@ -29,6 +30,7 @@ struct RenderContext {
     unsigned sampler = 0;              // gpu::SAMPLER_*
     unsigned seed = 0;
     int maxDepth = 4;
+    FinalRays finalRays;               // which rays ending at maxDepth can bring light (final_rays.h)
     unsigned samplesPerPixel = 1;
     unsigned lightSamples = 1;         // k per area light per pixel sample
     unsigned glossSamples = 1;         // g per glossy reflection per pixel sample

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "environment_distribution.h"
+#include "final_rays.h"
 #include "sampling.h"
 
 namespace vkrt {
@@ -53,6 +54,8 @@ gpu::FrameParams makeFrameParams(const Scene& scene, const SceneAccel& accel, co
     f.background = glm::vec4(options.background.value_or(scene.background), camera.thinLens() ? camera.focusDistance : 0.0f);
     f.image = glm::uvec4(static_cast<std::uint32_t>(options.width), static_cast<std::uint32_t>(options.height),
                          camera.type == CameraType::Orthographic ? gpu::CAMERA_ORTHOGRAPHIC : gpu::CAMERA_PERSPECTIVE, 0u);
+    const FinalRays finals = finalRays(scene, options);
+    f.image.w = (finals.bounceSeesLight ? 0u : gpu::FINAL_BOUNCE_DARK) | (finals.reflectionSeesLight ? 0u : gpu::FINAL_REFLECTION_DARK);
     f.sampling = glm::uvec4(static_cast<std::uint32_t>(options.sampler), rpp, lightSamples, glossSamples);
     f.scene = glm::uvec4(options.seed, static_cast<std::uint32_t>(options.maxDepth), static_cast<std::uint32_t>(scene.lights.size()),
                          accel.bvh.topRoot);

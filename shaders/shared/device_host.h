@@ -295,6 +295,10 @@ VKRT_FN uint textureHeight(TextureInfo t) { return t.info.z; }
 // Per-render constants (UBO, std140-compatible because every member is a 16-byte vector).
 VKRT_CONST uint CAMERA_PERSPECTIVE = 0u;
 VKRT_CONST uint CAMERA_ORTHOGRAPHIC = 1u;
+// FrameParams::image.w: a Diffuse bounce (1) / a reflection or refraction ray (2) that would end
+// at the maximum depth finds no light there, so it is not traced (the image is the same).
+VKRT_CONST uint FINAL_BOUNCE_DARK = 1u;
+VKRT_CONST uint FINAL_REFLECTION_DARK = 2u;
 VKRT_CONST uint SAMPLER_JITTERED = 0u;
 VKRT_CONST uint SAMPLER_REGULAR = 1u;
 VKRT_CONST uint SAMPLER_RANDOM = 2u;
@@ -323,7 +327,8 @@ struct FrameParams {
     vec4 cameraV;         // xyz unit up vector,    w = image plane height
     vec4 cameraW;         // xyz unit backward vector (-gaze), w = focal length
     vec4 background;      // rgb, w = focus distance (0 for a pinhole)
-    uvec4 image;          // x width, y height, z camera type, w unused
+    uvec4 image;          // x width, y height, z camera type, w FINAL_*_DARK bits: rays ending at
+                          // the maximum depth that cannot bring light (host/lighting/final_rays.h)
     uvec4 sampling;       // x sampler, y samples per pixel, z light samples, w gloss samples
     uvec4 scene;          // x seed, y max depth, z light count, w top-level root node
     uvec4 pixelGrid;      // SampleGrid of the rpp pixel samples (see sampling.h)
