@@ -132,8 +132,8 @@ int runAdaptiveRender(CommandLine& cl) {
         } catch (const GpuKernelError& e) {
             // The kernel refused this scene (lavapipe's loop limiter): under --device auto the CPU
             // reference computes the same image from the start.
-            if (cl.device != DeviceChoice::Auto) throw;
-            std::cerr << "note: " << e.what() << "\nnote: rendering on the CPU reference instead\n";
+            if (cl.device != DeviceChoice::Auto) throw kernelErrorIn(scene.path, e);
+            noteCpuFallback(scene.path, e);
             return onCpu();
         }
     }();

@@ -231,11 +231,19 @@ DeviceRender renderScene(CommandLine& cl) {
     } catch (const GpuKernelError& e) {
         // The kernel refused this scene (e.g. lavapipe's loop limiter): with --device auto the
         // CPU reference computes the same image; with --device gpu the error stands.
-        if (cl.device != DeviceChoice::Auto) throw;
-        std::cerr << "note: " << e.what() << "\nnote: rendering on the CPU reference instead\n";
+        if (cl.device != DeviceChoice::Auto) throw kernelErrorIn(scene.path, e);
+        noteCpuFallback(scene.path, e);
         result = renderOnCpu(scene, cl.render);
     }
     return result;
+}
+
+GpuKernelError kernelErrorIn(const std::string& scenePath, const GpuKernelError& e) {
+    return GpuKernelError(scenePath + ": " + e.what());
+}
+
+void noteCpuFallback(const std::string& scenePath, const GpuKernelError& e) {
+    std::cerr << "note: " << kernelErrorIn(scenePath, e).what() << "\nnote: rendering on the CPU reference instead\n";
 }
 
 }  // namespace vkrt

@@ -9,6 +9,7 @@
 #include "command_line.h"
 #include "diagnostics.h"
 #include "gpu_renderer.h"
+#include "kernel_error.h"
 #include "image.h"
 #include "render_options.h"
 #include "scene.h"
@@ -74,5 +75,11 @@ void checkOutputBeforeRendering(const std::string& output, const std::string& sc
 // Load, pick the device, render: what one process or one MPI rank does. A GPU kernel that refuses
 // the scene falls back to the CPU reference under --device auto.
 DeviceRender renderScene(CommandLine& cl);
+
+// A GPU kernel's refusal of a scene (GpuKernelError: it names the pixel and sample) under
+// --device auto: the note that the CPU reference renders it instead, naming the scene file.
+// Under --device gpu, `kernelErrorIn` is the error that stands, with the file named too.
+GpuKernelError kernelErrorIn(const std::string& scenePath, const GpuKernelError& e);
+void noteCpuFallback(const std::string& scenePath, const GpuKernelError& e);
 
 }  // namespace vkrt

@@ -230,8 +230,8 @@ private:
                     return renderAdaptivePrepared(gpu_.get(), &*loaded_->gpu, loaded_->scene, nullptr, options, cl_.adaptive,
                                                   gpuSettingsOf(cl_).kernel);
                 } catch (const GpuKernelError& e) {
-                    if (cl_.device != DeviceChoice::Auto) throw;
-                    std::cerr << "note: " << e.what() << "\nnote: rendering on the CPU reference instead\n";
+                    if (cl_.device != DeviceChoice::Auto) throw kernelErrorIn(loaded_->scene.path, e);
+                    noteCpuFallback(loaded_->scene.path, e);
                 }
             }
             if (!loaded_->cpu) loaded_->cpu.emplace(prepareCpuScene(loaded_->scene));
@@ -241,8 +241,8 @@ private:
             try {
                 return renderPreparedOnGpu(*gpu_, *loaded_->gpu, options, gpuSettingsOf(cl_));
             } catch (const GpuKernelError& e) {
-                if (cl_.device != DeviceChoice::Auto) throw;
-                std::cerr << "note: " << e.what() << "\nnote: rendering on the CPU reference instead\n";
+                if (cl_.device != DeviceChoice::Auto) throw kernelErrorIn(loaded_->scene.path, e);
+                noteCpuFallback(loaded_->scene.path, e);
                 if (!loaded_->cpu) loaded_->cpu.emplace(prepareCpuScene(loaded_->scene));
             }
         }

@@ -10,6 +10,7 @@
 // the group's counter also pays for other lanes' passes and for every loop's exit pass.
 #include <cstdint>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <string>
 
@@ -121,7 +122,8 @@ TEST(LoopLimit, ALoopCutOffIsAnErrorNeverAWrongImage) {
 }
 
 // `vkrt scene.xml` with --device auto (the default): a kernel error makes it render on the CPU
-// reference, whose traversal needs the BVH's CPU copy that a GPU render skips building. --gpu N
+// reference, whose traversal needs the BVH's CPU copy that a GPU render skips building; the note
+// saying so, and under --device gpu the error, name the scene file before the pixel. --gpu N
 // (the device auto would pick among Vulkan's) keeps auto on Vulkan where lavapipe is the only
 // device: without it auto renders on the CPU reference from the start (device_choice.h).
 TEST(LoopLimit, TheCommandLineFallsBackToTheCpuOnALoopCutOff) {
@@ -134,14 +136,35 @@ TEST(LoopLimit, TheCommandLineFallsBackToTheCpuOnALoopCutOff) {
                               "--gpu", gpu.c_str(), "--validate", "-o", out.c_str()};
         return runVkrt(static_cast<int>(std::size(argv)), argv);
     };
+    // What the command prints on stderr, with its exit code.
+    auto runCapturing = [&](const std::string& out, const char* device, std::string& printed) {
+        std::ostringstream err;
+        std::streambuf* saved = std::cerr.rdbuf(err.rdbuf());
+        const int code = run(out, device);
+        std::cerr.rdbuf(saved);
+        printed = err.str();
+        return code;
+    };
+    std::string autoPrinted, gpuPrinted;
     ASSERT_EQ(run(dir + "/loop_limit_cpu.exr", "cpu"), 0);
-    ASSERT_EQ(run(dir + "/loop_limit_auto.exr", "auto"), 0);
+    ASSERT_EQ(runCapturing(dir + "/loop_limit_auto.exr", "auto", autoPrinted), 0);
+    const int gpuCode = runCapturing(dir + "/loop_limit_gpu.exr", "gpu", gpuPrinted);
     const Image cpu = readImage(dir + "/loop_limit_cpu.exr");
     const Image automatic = readImage(dir + "/loop_limit_auto.exr");
     if (hasMesaLoopLimiter(sharedGpu().deviceName())) {
         // The fallback ran the CPU reference itself: the same image to the bit.
         EXPECT_EQ(cpu.pixels, automatic.pixels);
+        // Both the note and, under --device gpu, the error name the scene file, then the pixel.
+        EXPECT_NE(autoPrinted.find("note: " + scenePath + ": the GPU kernel could not compute the image correctly at pixel ("),
+                  std::string::npos)
+            << autoPrinted;
+        EXPECT_NE(autoPrinted.find("rendering on the CPU reference instead"), std::string::npos) << autoPrinted;
+        EXPECT_EQ(gpuCode, 1);
+        EXPECT_NE(gpuPrinted.find("vkrt: error: " + scenePath + ": the GPU kernel could not compute the image correctly at pixel ("),
+                  std::string::npos)
+            << gpuPrinted;
     } else {
+        EXPECT_EQ(gpuCode, 0) << gpuPrinted;
         const Distance d = distance(cpu, automatic);
         EXPECT_TRUE(agrees(d)) << d.describe();
     }
