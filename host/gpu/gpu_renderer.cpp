@@ -14,6 +14,7 @@
 #include "kernel_layouts.h"
 #include "kernel_source.h"
 #include "progress.h"
+#include "render_cancel.h"
 #include "render_status.h"
 #include "scene_upload.h"
 #include "pixel_sums.h"
@@ -158,10 +159,7 @@ Image GpuRenderer::render(const GpuSceneData& data, const RenderOptions& options
     Progress progress("GPU render", options.quiet);
     start = Clock::now();
     while (!planner.done()) {
-        if (options.cancel && options.cancel->load()) {
-            impl_->context.device().waitIdle();
-            throw RenderCancelled{};
-        }
+        throwIfCancelled(impl_->context, options);
         Submission submission = planner.next();
         submission.tile.y += static_cast<std::uint32_t>(rows.x);
         const double seconds = impl_->runner.run([&](const vk::raii::CommandBuffer& commands) {
@@ -275,10 +273,7 @@ void GpuRenderer::addSampleRangesMegakernel(SceneUpload& gpuScene, const KernelI
     for (std::uint32_t pass = 0; pass < passes; ++pass) {
         while (active > 0 && work[active - 1].z - work[active - 1].y <= pass * k) --active;
         for (std::size_t first = 0; first < active; first += kEntriesPerDispatch) {
-            if (options.cancel && options.cancel->load()) {
-                impl_->context.device().waitIdle();
-                throw RenderCancelled{};
-            }
+            throwIfCancelled(impl_->context, options);
             const auto count = static_cast<std::uint32_t>(std::min<std::size_t>(kEntriesPerDispatch, active - first));
             const double seconds = impl_->runner.run([&](const vk::raii::CommandBuffer& commands) {
                 recordAdaptivePass(commands, *pipeline, impl_->layout.pipelineLayout(), gpuScene.descriptorSet(),

@@ -11,6 +11,7 @@
 #include "float_range.h"
 #include "pixel_sums.h"
 #include "progress.h"
+#include "render_cancel.h"
 #include "render_status.h"
 #include "wavefront_plan.h"
 
@@ -185,13 +186,6 @@ private:
     std::array<const vk::raii::Pipeline*, gpu::WAVEFRONT_STAGE_COUNT> pipelines_{};
 };
 
-void throwIfCancelled(const GpuRenderDevice& device, const RenderOptions& options) {
-    if (options.cancel && options.cancel->load()) {
-        device.context.device().waitIdle();
-        throw RenderCancelled{};
-    }
-}
-
 }  // namespace
 
 std::uint64_t targetWavePaths(const DeviceInfo& device) { return device.lavapipe ? (1u << 16) : (1u << 20); }
@@ -223,7 +217,7 @@ void renderWavefront(const GpuRenderDevice& device, SceneUpload& gpuScene, const
     std::size_t round = 0;
     start = Clock::now();
     for (std::size_t w = 0; w < plan.waves.size(); ++w) {
-        throwIfCancelled(device, options);
+        throwIfCancelled(device.context, options);
         const Wave& wave = plan.waves[w];
         runner.run(passParams(wave.band, wave.firstSample, wave.samples), wave.paths(), wave.band.pixels());
         progress.update(static_cast<double>(w + 1) / plan.waves.size());
@@ -268,7 +262,7 @@ void addSampleRangesWavefront(const GpuRenderDevice& device, SceneUpload& gpuSce
             std::clamp<std::uint64_t>(pathsPerWave / active, 1, std::min(most - offset, kMaxWaveSamples)));
         const std::uint64_t entriesPerWave = std::max<std::uint64_t>(1, pathsPerWave / samples);
         for (std::size_t first = 0; first < active; first += entriesPerWave) {
-            throwIfCancelled(device, options);
+            throwIfCancelled(device.context, options);
             const auto entries = static_cast<std::uint32_t>(std::min<std::uint64_t>(entriesPerWave, active - first));
             gpu::PassParams wave{};
             wave.tile = glm::uvec4(static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(work.size()), entries, 1u);
