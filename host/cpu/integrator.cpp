@@ -297,6 +297,7 @@ glm::vec3 Integrator::dielectric(const bvh::Ray& ray, const bvh::Hit& hit, const
     const glm::vec3 here = weight * transmittance;
 
     glm::vec3 reflected(0.0f), refracted(0.0f);
+    bool traced = false;
     // Neither branch is traced where it would end at the maximum depth and find no light (final_rays.h).
     if (depth < ctx_.maxDepth && (depth + 1 < ctx_.maxDepth || ctx_.finalRays.reflectionSeesLight)) {
         if (worthTracing(here * f)) {
@@ -305,6 +306,7 @@ glm::vec3 Integrator::dielectric(const bvh::Ray& ray, const bvh::Hit& hit, const
             next.dir = mirrorDirection(ray.dir, n);
             next.origin = offsetRayOrigin(sp.position, sideOf(sp.geometricNormal, next.dir), sp.errorMagnitude);
             reflected = trace(next, depth + 1, here * f, key);
+            traced = true;
         }
         if (worthTracing(here * (1.0f - f))) {
             bvh::Ray next;
@@ -323,9 +325,13 @@ glm::vec3 Integrator::dielectric(const bvh::Ray& ray, const bvh::Hit& hit, const
                 ++counts_.refraction;
                 next.origin = offsetRayOrigin(sp.position, sideOf(sp.geometricNormal, next.dir), sp.errorMagnitude);
                 refracted = trace(next, depth + 1, here * (1.0f - f), key);
+                traced = true;
             }
         }
     }
+    // No branch traced: no light, as in the kernel, where such a hit emits no ray (transmittance
+    // times 0 would be NaN where an attenuation above 1 has overflowed it).
+    if (!traced) return glm::vec3(0.0f);
     return transmittance * (f * reflected + (1.0f - f) * refracted);
 }
 

@@ -206,6 +206,21 @@ TEST(FrameParams, CarryTheCamerasUpVector) {
     EXPECT_EQ(glm::vec3(f.cameraW), glm::vec3(0.0f, 1.0f, 0.0f));
 }
 
+// FrameParams::image.w carries host/lighting/final_rays.h's answer, each flag in its own bit.
+TEST(FrameParams, SayWhichRaysAtTheMaximumDepthCannotBringLight) {
+    test::TinyScene tiny;
+    RenderOptions o = test::smallRender(8, 8, 1);
+    EXPECT_EQ(makeFrameParams(tiny.scene, tiny.accel, o).image.w, 0u);  // its Lambertian is lit at every depth
+    tiny.scene.shaders[0].diffuseBounce = true;  // Diffuse: black at the maximum depth
+    tiny.scene.background = glm::vec3(0.0f);
+    EXPECT_EQ(makeFrameParams(tiny.scene, tiny.accel, o).image.w, gpu::FINAL_BOUNCE_DARK | gpu::FINAL_REFLECTION_DARK);
+    tiny.scene.emitters.emplace_back();
+    o.estimator = Estimator::Nee;  // light samples alone find the emitter; mirror rays see it
+    EXPECT_EQ(makeFrameParams(tiny.scene, tiny.accel, o).image.w, gpu::FINAL_BOUNCE_DARK);
+    o.estimator = Estimator::MisPower;
+    EXPECT_EQ(makeFrameParams(tiny.scene, tiny.accel, o).image.w, 0u);
+}
+
 TEST(FrameParams, RefusesOptionsTheKernelCannotHonour) {
     test::TinyScene tiny;
     auto bad = [&](auto change) {

@@ -53,6 +53,9 @@ TEST(FinalRays, TheBackgroundCountsUnlessBlackAndTheOptionOverridesTheScene) {
     RenderOptions grey;
     grey.background = glm::vec3(50.0f / 255.0f);
     expectFlags(darkAtMaxDepth(), grey, true, true, "--bg grey over a black scene");
+    // The background is never light-sampled: a bounce finds it under every estimator, nee too.
+    grey.estimator = Estimator::Nee;
+    expectFlags(darkAtMaxDepth(), grey, true, true, "--bg grey under nee");
 }
 
 TEST(FinalRays, EmittersAndTheMapAreFoundByReflectionsAlwaysAndByBouncesUnlessNeeAlone) {

@@ -561,37 +561,56 @@ TEST(PathTracing, OnlyDiffuseSurfacesDependOnTheEstimator) {
 }
 
 // ---- rays that cannot bring light (host/lighting/final_rays.h) ----
-// In a closed Diffuse box with a mirror, a glossy mirror and a glass sphere, lit by an area light
-// under a black sky, a ray that ends at the maximum depth can add nothing: there the Diffuse walls
-// reflect nothing, the mirrors and the glass pass rays no further, and no emitter, background or
-// local shader waits. The renderers do not trace such rays. The same box with a black sphere
-// emitter outside it (which no ray reaches) makes them traceable again (under mis a bounce could
-// meet an emitter): both must give the same image bit for bit, the first with fewer rays.
-// Bug targeted: a skipped ray that would have brought light (a pixel differs), or a rule that
-// never skips (the counts are equal), on either device.
+// In a closed Diffuse box with a mirror, a glossy mirror and a glass sphere under a black sky, a
+// ray that ends at the maximum depth meets only surfaces black there: the renderers do not trace
+// it. Two cases: an area light (no ray at the last depth can bring light), and a sphere emitter in
+// the box under `nee` (mirror, gloss and glass rays still see the emitter in full, so only the
+// last Diffuse bounces go). Each is rendered again with a Lambertian sphere outside the box,
+// which no ray reaches but which is lit at every depth, so that every ray is traced: the images
+// must be the same bit for bit, the first with fewer rays of the kinds skipped and as many of the
+// others.
+// Bug targeted: a skipped ray that would have brought light, e.g. a mirror ray skipped under nee
+// with an emitter (a pixel differs, on either device: also the GPU's two flags swapped), or a
+// rule that never skips (the CPU's counts are equal; the GPU's flags are FrameParams' test in
+// tests/gpu/scene_tables_test.cpp).
 TEST(PathTracing, RaysThatCannotBringLightAreNotTracedAndTheImageIsTheSame) {
-    Scene dark;
-    dark.path = "a closed Diffuse box under an area light (built in code)";
-    dark.background = glm::vec3(0.0f);
-    dark.cameras.push_back(perspective({0.0f, 0.0f, 0.9f}, {0.0f, -0.2f, 0.0f}, 1.0f, 1.2f));
-    dark.lights.push_back(areaLight({0.0f, 0.95f, 0.0f}, {0.0f, -1.0f, 0.0f}, 0.5f, 0.5f, {3.0f, 2.8f, 2.5f}));
-    dark.shapes.push_back(box({-1.0f, -1.0f, -1.0f}, {1.0f, 1.0f, 1.0f}, add(dark, diffuse({0.7f, 0.6f, 0.5f}))));
-    dark.shapes.push_back(sphere({-0.5f, -0.6f, -0.3f}, 0.3f, add(dark, mirror())));
-    dark.shapes.push_back(sphere({0.5f, -0.6f, -0.3f}, 0.3f, add(dark, dielectric(1.5f))));
-    dark.shapes.push_back(sphere({0.0f, -0.7f, 0.2f}, 0.25f, add(dark, mirror(0.3f))));
-    Scene traced = dark;
-    addSphereEmitter(traced, {0.0f, 0.0f, 5.0f}, 0.5f, glm::vec3(0.0f));
-    for (int depth : {1, 3}) {
-        const RenderOptions options = pathOptions(24, 8, depth, Estimator::MisPower);
-        const BothImages skipped = renderBoth(dark, options);
-        const BothImages all = renderBoth(traced, options);
-        const std::string at = "depth " + std::to_string(depth);
-        EXPECT_EQ(differingPixels(skipped.cpu, all.cpu), 0) << "CPU, " << at;
-        expectSameGpuImage(skipped.gpu, all.gpu, "GPU, " + at);
-        EXPECT_LT(skipped.cpuStats.bounceRays, all.cpuStats.bounceRays) << at;
-        EXPECT_LT(skipped.cpuStats.reflectionRays, all.cpuStats.reflectionRays) << at;
-        EXPECT_LT(skipped.cpuStats.refractionRays, all.cpuStats.refractionRays) << at;
-        expectDevicesAgree(skipped, "closed Diffuse box, final rays skipped, " + at);
+    struct Case {
+        const char* what;
+        bool emitter;
+        Estimator estimator;
+        bool reflectionsSkipped;
+    };
+    for (const Case& c : {Case{"area light, mis", false, Estimator::MisPower, true},
+                          Case{"sphere emitter, nee", true, Estimator::Nee, false}}) {
+        Scene dark;
+        dark.path = std::string("a closed Diffuse box, ") + c.what + " (built in code)";
+        dark.background = glm::vec3(0.0f);
+        dark.cameras.push_back(perspective({0.0f, 0.0f, 0.9f}, {0.0f, -0.2f, 0.0f}, 1.0f, 1.2f));
+        if (c.emitter) addSphereEmitter(dark, {0.0f, 0.7f, -0.2f}, 0.15f, {6.0f, 5.5f, 5.0f});
+        else dark.lights.push_back(areaLight({0.0f, 0.95f, 0.0f}, {0.0f, -1.0f, 0.0f}, 0.5f, 0.5f, {3.0f, 2.8f, 2.5f}));
+        dark.shapes.push_back(box({-1.0f, -1.0f, -1.0f}, {1.0f, 1.0f, 1.0f}, add(dark, diffuse({0.7f, 0.6f, 0.5f}))));
+        dark.shapes.push_back(sphere({-0.5f, -0.6f, -0.3f}, 0.3f, add(dark, mirror())));
+        dark.shapes.push_back(sphere({0.5f, -0.6f, -0.3f}, 0.3f, add(dark, dielectric(1.5f))));
+        dark.shapes.push_back(sphere({0.0f, -0.7f, 0.2f}, 0.25f, add(dark, mirror(0.3f))));
+        Scene traced = dark;
+        traced.shapes.push_back(sphere({0.0f, 0.0f, 5.0f}, 0.5f, add(traced, lambertian(glm::vec3(0.5f)))));
+        for (int depth : {1, 3}) {
+            const RenderOptions options = pathOptions(24, 8, depth, c.estimator);
+            const BothImages skipped = renderBoth(dark, options);
+            const BothImages all = renderBoth(traced, options);
+            const std::string at = std::string(c.what) + ", depth " + std::to_string(depth);
+            EXPECT_EQ(differingPixels(skipped.cpu, all.cpu), 0) << "CPU, " << at;
+            expectSameGpuImage(skipped.gpu, all.gpu, "GPU, " + at);
+            EXPECT_LT(skipped.cpuStats.bounceRays, all.cpuStats.bounceRays) << at;
+            if (c.reflectionsSkipped) {
+                EXPECT_LT(skipped.cpuStats.reflectionRays, all.cpuStats.reflectionRays) << at;
+                EXPECT_LT(skipped.cpuStats.refractionRays, all.cpuStats.refractionRays) << at;
+            } else {
+                EXPECT_EQ(skipped.cpuStats.reflectionRays, all.cpuStats.reflectionRays) << at;
+                EXPECT_EQ(skipped.cpuStats.refractionRays, all.cpuStats.refractionRays) << at;
+            }
+            expectDevicesAgree(skipped, at);
+        }
     }
 }
 
