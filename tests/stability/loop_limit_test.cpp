@@ -123,7 +123,8 @@ TEST(LoopLimit, ALoopCutOffIsAnErrorNeverAWrongImage) {
 
 // `vkrt scene.xml` with --device auto (the default): a kernel error makes it render on the CPU
 // reference, whose traversal needs the BVH's CPU copy that a GPU render skips building; the note
-// saying so, and under --device gpu the error, name the scene file before the pixel. --gpu N
+// saying so, and under --device gpu (or in `vkrt compare`) the error, name the scene file before
+// the pixel. --gpu N
 // (the device auto would pick among Vulkan's) keeps auto on Vulkan where lavapipe is the only
 // device: without it auto renders on the CPU reference from the start (device_choice.h).
 TEST(LoopLimit, TheCommandLineFallsBackToTheCpuOnALoopCutOff) {
@@ -163,6 +164,19 @@ TEST(LoopLimit, TheCommandLineFallsBackToTheCpuOnALoopCutOff) {
         EXPECT_NE(gpuPrinted.find("vkrt: error: " + scenePath + ": the GPU kernel could not compute the image correctly at pixel ("),
                   std::string::npos)
             << gpuPrinted;
+        // `vkrt compare` renders on the GPU too, outside the render command's path: app.cpp names the file.
+        std::string comparePrinted;
+        {
+            std::ostringstream err;
+            std::streambuf* saved = std::cerr.rdbuf(err.rdbuf());
+            const char* argv[] = {"vkrt", "compare", scenePath.c_str(), "-w", "32", "-h", "32", "-r", "1", "--gpu", gpu.c_str()};
+            EXPECT_EQ(runVkrt(static_cast<int>(std::size(argv)), argv), 1);
+            std::cerr.rdbuf(saved);
+            comparePrinted = err.str();
+        }
+        EXPECT_NE(comparePrinted.find("vkrt: error: " + scenePath + ": the GPU kernel could not compute the image correctly"),
+                  std::string::npos)
+            << comparePrinted;
     } else {
         EXPECT_EQ(gpuCode, 0) << gpuPrinted;
         const Distance d = distance(cpu, automatic);
