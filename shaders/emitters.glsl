@@ -35,31 +35,40 @@ uint pickEmitter(uint count, float u) {
     return min(lo, count - 1u);
 }
 
-// The total solid angle at x of an EMITTER_TRIANGLES emitter's triangles (emitter_sampling.h).
-float emitterSolidAngle(EmitterRecord e, vec3 x) {
+// The total solid angle at x of the EMITTER_TRIANGLES emitter's triangles that x's light samples
+// go to: all, or for a convex emitter seen from outside those in front of x (`onlyFacing`,
+// emitter_sampling.h triangleFacesPoint).
+float emitterSolidAngle(EmitterRecord e, vec3 x, out bool onlyFacing) {
     uint first = emitterFirstTriangle(e);
     uint n = emitterTriangleCount(e);
+    bool convex = emitterConvex(e);
     float total = 0.0;
+    float facing = 0.0;
     uint i = 0u;
     for (; i < n; ++i) {
         if (!chargeLoop()) break;
-        total += triangleSolidAngle(loadEmitterTriangle(first + i), x);
+        EmitterTriangle t = loadEmitterTriangle(first + i);
+        float w = triangleSolidAngle(t, x);
+        total += w;
+        if (convex && triangleFacesPoint(t, x)) facing += w;
     }
     if (i < n) markLoopCutOff();
-    return total;
+    onlyFacing = facing > 0.0;
+    return onlyFacing ? facing : total;
 }
 
 // Whether x samples the emitter's triangles by solid angle, and then their total `omega`.
-bool samplesBySolidAngle(EmitterRecord e, vec3 x, out float omega) {
+bool samplesBySolidAngle(EmitterRecord e, vec3 x, out float omega, out bool onlyFacing) {
     omega = 0.0;
+    onlyFacing = false;
     if (emitterTriangleCount(e) > SOLID_ANGLE_MAX_TRIANGLES) return false;
-    omega = emitterSolidAngle(e, x);
+    omega = emitterSolidAngle(e, x, onlyFacing);
     return omega >= SOLID_ANGLE_MIN;
 }
 
 // A direction in the solid angle `omega` of the emitter's triangles: the triangle whose running
 // solid angle first exceeds u.x omega (host/lighting/emitter_table.cpp is the same walk).
-EmitterSample sampleEmitterBySolidAngle(EmitterRecord e, vec3 x, vec2 u, float omega) {
+EmitterSample sampleEmitterBySolidAngle(EmitterRecord e, vec3 x, vec2 u, float omega, bool onlyFacing) {
     uint first = emitterFirstTriangle(e);
     uint n = emitterTriangleCount(e);
     if (n == 1u) return sampleSphericalTriangle(loadEmitterTriangle(first), x, u, omega, 1.0 / omega);
@@ -72,7 +81,8 @@ EmitterSample sampleEmitterBySolidAngle(EmitterRecord e, vec3 x, vec2 u, float o
     uint i = 0u;
     for (; i < n; ++i) {
         if (!chargeLoop()) break;
-        float w = triangleSolidAngle(loadEmitterTriangle(first + i), x);
+        EmitterTriangle t = loadEmitterTriangle(first + i);
+        float w = onlyFacing && !triangleFacesPoint(t, x) ? 0.0 : triangleSolidAngle(t, x);
         if (w > 0.0) {
             chosen = i;
             chosenStart = running;
@@ -104,7 +114,8 @@ EmitterSample sampleEmitter(EmitterRecord e, vec3 x, vec2 u) {
     none.pdf = 0.0;
     if (emitterTriangleCount(e) == 0u) return none;
     float omega;
-    if (samplesBySolidAngle(e, x, omega)) return sampleEmitterBySolidAngle(e, x, u, omega);
+    bool onlyFacing;
+    if (samplesBySolidAngle(e, x, omega, onlyFacing)) return sampleEmitterBySolidAngle(e, x, u, omega, onlyFacing);
     uint i = pickEmitterTriangle(e, u.x);
     float previous = i > emitterFirstTriangle(e) ? emitterTriangleShare(i - 1u) : 0.0;
     return sampleEmitterTriangle(loadEmitterTriangle(i), previous, emitterAreaPdf(e), x, u);
@@ -118,7 +129,9 @@ float emitterPdf(EmitterRecord e, vec3 x, vec3 q, vec3 nq) {
     if (kind == EMITTER_ELLIPSOID) return ellipsoidEmitterPdf(e, x, q, nq);
     if (emitterTriangleCount(e) == 0u) return 0.0;
     float omega;
-    if (samplesBySolidAngle(e, x, omega)) return 1.0 / omega;
+    bool onlyFacing;
+    // A face that does not face x gets no light samples (only a grazing ray reaches one).
+    if (samplesBySolidAngle(e, x, omega, onlyFacing)) return onlyFacing && !(dot(nq, x - q) > 0.0) ? 0.0 : 1.0 / omega;
     return solidAnglePdf(emitterAreaPdf(e), x, q, nq);
 }
 

@@ -67,6 +67,15 @@ std::vector<glm::vec3> worldTriangles(const Scene& scene, const Shape& shape, co
     return corners;
 }
 
+// A box's world triangles wound so that e1 x e2 points away from its centre, whatever the
+// transform (a mirroring one reverses every winding): emitter_sampling.h triangleFacesPoint.
+void windOutwards(std::vector<glm::vec3>& corners, const glm::vec3& centre) {
+    for (std::size_t i = 0; i + 2 < corners.size(); i += 3) {
+        const glm::dvec3 a(corners[i]), b(corners[i + 1]), c(corners[i + 2]);
+        if (glm::dot(glm::cross(b - a, c - a), glm::dvec3(centre) - a) > 0.0) std::swap(corners[i + 1], corners[i + 2]);
+    }
+}
+
 void addTriangles(EmitterTable& table, gpu::EmitterRecord& record, const std::vector<glm::vec3>& corners) {
     const std::size_t count = corners.size() / 3;
     std::vector<double> areas(count);
@@ -120,7 +129,8 @@ void setChoiceShares(EmitterTable& table, const std::vector<double>& powers) {
     for (std::size_t e = 0; e < n; ++e) {
         const double share = total > 0.0 ? powers[e] / total : 1.0 / double(n);
         running += share;
-        table.records[e].choice = glm::vec4(static_cast<float>(share), e + 1 == n ? 1.0f : static_cast<float>(running), 0.0f, 0.0f);
+        table.records[e].choice.x = static_cast<float>(share);
+        table.records[e].choice.y = e + 1 == n ? 1.0f : static_cast<float>(running);
     }
 }
 
@@ -162,7 +172,13 @@ EmitterTable buildEmitterTable(const Scene& scene) {
                 record.radiance.w = static_cast<float>(1.0 / (4.0 * std::numbers::pi * r * r * det));
             }
         } else {
-            addTriangles(table, record, worldTriangles(scene, shape, emitter.objectToWorld));
+            std::vector<glm::vec3> corners = worldTriangles(scene, shape, emitter.objectToWorld);
+            if (shape.type == ShapeType::Box) {
+                // Convex: its light samples go to the faces in front of the point (choice.z).
+                windOutwards(corners, glm::vec3(emitter.objectToWorld * glm::vec4(0.5f * (shape.minPt + shape.maxPt), 1.0f)));
+                record.choice.z = 1.0f;
+            }
+            addTriangles(table, record, corners);
         }
         const glm::dvec3 radiance(emitter.radiance);
         const double power = std::max(0.0, (radiance.r + radiance.g + radiance.b) / 3.0) * emitterArea(record, emitter.objectToWorld);
@@ -175,26 +191,42 @@ EmitterTable buildEmitterTable(const Scene& scene) {
 
 namespace {
 
-// The kernel's emitterSolidAngle and samplesBySolidAngle (shaders/emitters.glsl).
-bool samplesBySolidAngle(const EmitterTable& table, const gpu::EmitterRecord& r, const glm::vec3& x, float& omega) {
+// The kernel's emitterSolidAngle and samplesBySolidAngle (shaders/emitters.glsl): the total solid
+// angle of the triangles x's light samples go to, and whether those are only the faces in front
+// of x (a convex emitter seen from outside: emitter_sampling.h triangleFacesPoint).
+bool samplesBySolidAngle(const EmitterTable& table, const gpu::EmitterRecord& r, const glm::vec3& x, float& omega,
+                         bool& onlyFacing) {
     omega = 0.0f;
+    onlyFacing = false;
     if (gpu::emitterTriangleCount(r) > emitters::SOLID_ANGLE_MAX_TRIANGLES) return false;
     const std::uint32_t first = gpu::emitterFirstTriangle(r), n = gpu::emitterTriangleCount(r);
-    for (std::uint32_t i = 0; i < n; ++i) omega += emitters::triangleSolidAngle(table.triangles[first + i], x);
+    const bool convex = gpu::emitterConvex(r);
+    float facing = 0.0f;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const gpu::EmitterTriangle& t = table.triangles[first + i];
+        const float w = emitters::triangleSolidAngle(t, x);
+        omega += w;
+        if (convex && emitters::triangleFacesPoint(t, x)) facing += w;
+    }
+    if (facing > 0.0f) {
+        omega = facing;
+        onlyFacing = true;
+    }
     return omega >= emitters::SOLID_ANGLE_MIN;
 }
 
 // The kernel's sampleEmitterBySolidAngle: the triangle whose running solid angle first exceeds
 // u.x omega (or the last with any, should rounding leave u.x omega beyond the sum).
 emitters::EmitterSample sampleBySolidAngle(const EmitterTable& table, const gpu::EmitterRecord& r, const glm::vec3& x,
-                                           glm::vec2 u, float omega) {
+                                           glm::vec2 u, float omega, bool onlyFacing) {
     const std::uint32_t first = gpu::emitterFirstTriangle(r), n = gpu::emitterTriangleCount(r);
     if (n == 1) return emitters::sampleSphericalTriangle(table.triangles[first], x, u, omega, 1.0f / omega);
     const float target = u.x * omega;
     float running = 0.0f, chosenStart = 0.0f, chosenOmega = 0.0f;
     std::uint32_t chosen = n;
     for (std::uint32_t i = 0; i < n; ++i) {
-        const float w = emitters::triangleSolidAngle(table.triangles[first + i], x);
+        const gpu::EmitterTriangle& t = table.triangles[first + i];
+        const float w = onlyFacing && !emitters::triangleFacesPoint(t, x) ? 0.0f : emitters::triangleSolidAngle(t, x);
         if (w > 0.0f) {
             chosen = i, chosenStart = running, chosenOmega = w;
             if (target < running + w) break;
@@ -217,7 +249,8 @@ emitters::EmitterSample sampleEmitter(const EmitterTable& table, const gpu::Emit
     }
     if (gpu::emitterTriangleCount(r) == 0) return emitters::EmitterSample{x, glm::vec3(0.0f, 0.0f, 1.0f), 0.0f};
     float omega = 0.0f;
-    if (samplesBySolidAngle(table, r, x, omega)) return sampleBySolidAngle(table, r, x, u, omega);
+    bool onlyFacing = false;
+    if (samplesBySolidAngle(table, r, x, omega, onlyFacing)) return sampleBySolidAngle(table, r, x, u, omega, onlyFacing);
     const std::uint32_t i = pickEmitterTriangle(table, r, u.x);
     const float previous = i > gpu::emitterFirstTriangle(r) ? gpu::emitterTriangleCdf(table.triangles[i - 1]) : 0.0f;
     return emitters::sampleEmitterTriangle(table.triangles[i], previous, gpu::emitterAreaPdf(r), x, u);
@@ -232,7 +265,10 @@ float emitterPdf(const EmitterTable& table, const gpu::EmitterRecord& r, const g
     }
     if (gpu::emitterTriangleCount(r) == 0) return 0.0f;
     float omega = 0.0f;
-    if (samplesBySolidAngle(table, r, x, omega)) return 1.0f / omega;
+    bool onlyFacing = false;
+    // A face that does not face x gets no light samples (only a grazing ray reaches one).
+    if (samplesBySolidAngle(table, r, x, omega, onlyFacing))
+        return onlyFacing && !(glm::dot(nq, x - q) > 0.0f) ? 0.0f : 1.0f / omega;
     return emitters::solidAnglePdf(gpu::emitterAreaPdf(r), x, q, nq);
 }
 

@@ -264,7 +264,9 @@ struct EmitterRecord {
                        // w: light ordinal (its sampling dimension, after the area lights)
     vec4 choice;       // x: the probability that a light sample goes to this emitter (its share
                        // of the emitters' estimated power), y: the cumulative share up to and
-                       // including it (the last is exactly 1)
+                       // including it (the last is exactly 1), z: 1 for a convex emitter (a box),
+                       // whose light samples seen from outside go to the faces in front
+                       // (emitter_sampling.h triangleFacesPoint), else 0
 };
 VKRT_CONST uint EMITTER_TEXELS = 10;
 VKRT_FN uint emitterKind(EmitterRecord e) { return e.info.x; }
@@ -273,6 +275,7 @@ VKRT_FN uint emitterTriangleCount(EmitterRecord e) { return e.info.z; }
 VKRT_FN uint emitterLightOrdinal(EmitterRecord e) { return e.info.w; }
 VKRT_FN float emitterAreaPdf(EmitterRecord e) { return e.radiance.w; }
 VKRT_FN float emitterChoicePdf(EmitterRecord e) { return e.choice.x; }
+VKRT_FN bool emitterConvex(EmitterRecord e) { return e.choice.z != 0.0f; }
 struct EmitterTriangle {
     vec4 corner;  // xyz v0 (world), w: the emitter's area share of its triangles up to and including this one
     vec4 edge1;   // xyz v1 - v0

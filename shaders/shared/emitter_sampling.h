@@ -226,6 +226,15 @@ VKRT_FN EmitterSample sampleEmitterTriangle(EmitterTriangle t, float previousCdf
 VKRT_CONST uint SOLID_ANGLE_MAX_TRIANGLES = 12u;
 VKRT_CONST float SOLID_ANGLE_MIN = 1e-4f;
 
+// A convex emitter (a box: EmitterRecord::choice.z = 1, its triangles wound so that e1 x e2 points
+// outwards) seen from a point outside it shows only the faces whose plane the point is in front
+// of: a direction towards any other face meets the box first. Those are the triangles its light
+// samples go to (half the box's solid angle, where sampling every face wasted half the samples on
+// the hidden side); from inside the box no face is in front and every face counts.
+VKRT_FN bool triangleFacesPoint(EmitterTriangle t, vec3 x) {
+    return dot(cross(vec3(t.edge1), vec3(t.edge2)), x - vec3(t.corner)) > 0.0f;
+}
+
 // The solid angle of triangle t at x (Van Oosterom & Strackee 1983: tan(omega / 2) =
 // |a . (b x c)| / (|a||b||c| + (a.b)|c| + (b.c)|a| + (c.a)|b|) for the corners a, b, c relative to
 // x). The triple product is written a . (e1 x e2), which keeps its digits for a far triangle where

@@ -142,6 +142,74 @@ TEST(EmitterSampling, SamplesNearAQuadCarryBoundedWeights) {
                                                            "directions is >= 1/2 here";
 }
 
+// A box emitter, [-0.5, 0.5]^3 under `toWorld`.
+Scene boxEmitterScene(const glm::mat4& toWorld) {
+    Scene scene;
+    Emitter e;
+    e.shape.type = ShapeType::Box;
+    e.shape.minPt = glm::vec3(-0.5f);
+    e.shape.maxPt = glm::vec3(0.5f);
+    e.shape.shader = -1;
+    e.objectToWorld = toWorld;
+    scene.emitters.push_back(e);
+    return scene;
+}
+
+// The solid angle of a rectangle of sides a, b seen from distance d on its centre's normal.
+double centredRectangleSolidAngle(double a, double b, double d) {
+    return 4.0 * std::asin(a * b / std::sqrt((a * a + 4.0 * d * d) * (b * b + 4.0 * d * d)));
+}
+
+// emitter_sampling.h triangleFacesPoint: a box's light samples seen from outside go only to the
+// faces in front of the point, and the density is 1 / their solid angle; from inside, to every face,
+// whose solid angle is then the whole sphere's 4 pi. Under a rotation with a mirror (which reverses
+// every triangle's winding: the table winds them outwards again) and a scale.
+// Bug targeted: samples spent on the hidden faces (the density would be 1 / both sides' solid
+// angle, half the samples occluded by the box itself), a winding left mirrored (the hidden faces
+// taken for the front ones: samples behind the box), a point inside given no light at all, a
+// bounce's hit weighed with another density than the samples'.
+TEST(EmitterSampling, ABoxsLightSamplesGoToTheFacesInFrontOfThePoint) {
+    const glm::mat4 toWorld = glm::rotate(glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(1.0f, 2.0f, -3.0f)),
+                                                     glm::vec3(-2.0f, 2.0f, 2.0f)),
+                                          0.7f, glm::normalize(glm::vec3(1.0f, 2.0f, 0.5f)));
+    const EmitterTable table = buildEmitterTable(boxEmitterScene(toWorld));
+    const gpu::EmitterRecord& record = table.records.at(0);
+    ASSERT_TRUE(gpu::emitterConvex(record));
+    const glm::mat4 toObject = glm::inverse(toWorld);
+    // An object-space point 1.5 in front of the +z face, on its centre's normal: only that face (2 x 2
+    // in the world) faces it, at world distance 3.
+    struct Probe {
+        glm::vec3 objectPoint;
+        double omega;
+    };
+    const Probe probes[] = {{glm::vec3(0.0f, 0.0f, 2.0f), centredRectangleSolidAngle(2.0, 2.0, 3.0)},
+                            {glm::vec3(0.1f, -0.2f, 0.15f), 4.0 * kPi}};
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<float> u01(0.0f, 1.0f);
+    for (const Probe& probe : probes) {
+        const glm::vec3 x(toWorld * glm::vec4(probe.objectPoint, 1.0f));
+        const bool outside = glm::any(glm::greaterThan(glm::abs(probe.objectPoint), glm::vec3(0.5f)));
+        for (int i = 0; i < 4000; ++i) {
+            const emitters::EmitterSample s = sampleEmitter(table, record, x, glm::vec2(u01(rng), u01(rng)));
+            ASSERT_GT(s.pdf, 0.0f);
+            EXPECT_NEAR(s.pdf * probe.omega, 1.0, 2e-5) << (outside ? "outside" : "inside");
+            const glm::vec3 q(toObject * glm::vec4(s.point, 1.0f));
+            ASSERT_NEAR(std::max({std::fabs(q.x), std::fabs(q.y), std::fabs(q.z)}), 0.5f, 1e-5f);  // on the box
+            // Outside: on the +z face, the one in front of the point.
+            if (outside) ASSERT_NEAR(q.z, 0.5f, 1e-5f) << q.x << ", " << q.y << ", " << q.z;
+            ASSERT_NEAR(emitterPdf(table, record, x, s.point, s.normal) / s.pdf, 1.0f, 1e-5f);
+        }
+    }
+    // From a point off every face's axis, three faces are in front: every sample lands on one of them.
+    const glm::vec3 corner(toWorld * glm::vec4(1.5f, 1.2f, 0.9f, 1.0f));
+    for (int i = 0; i < 4000; ++i) {
+        const emitters::EmitterSample s = sampleEmitter(table, record, corner, glm::vec2(u01(rng), u01(rng)));
+        const glm::vec3 q(toObject * glm::vec4(s.point, 1.0f));
+        const bool front = std::fabs(q.x - 0.5f) < 1e-5f || std::fabs(q.y - 0.5f) < 1e-5f || std::fabs(q.z - 0.5f) < 1e-5f;
+        ASSERT_TRUE(front) << q.x << ", " << q.y << ", " << q.z;
+    }
+}
+
 // Bug targeted: the ellipsoid's cone density missing the Jacobian |det A| / |A w|^3 (or with the
 // map's inverse), a sample off the ellipsoid, a bounce weighed with another density than the
 // sample's. Inside or on it, area sampling; outside, the object sphere's cone.

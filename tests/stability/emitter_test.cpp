@@ -8,7 +8,8 @@
 //     scale) lights it as Lambert's integral over its silhouette says, by light samples (Nanson's
 //     area density) and by bounces alike;
 //   - a quad of two triangles (world space, non-uniformly scaled and tilted, mirrored) lights it
-//     as Lambert's polygon formula says, from either side (emission is two-sided);
+//     as Lambert's polygon formula says, from either side (emission is two-sided); a box (rotated,
+//     mirrored, non-uniformly scaled) as the formula summed over the faces in front of each point;
 //   - the two devices agree by the project's rule on every image.
 // The plane is the top face of a box, seen from a camera below every emitter (top view at height
 // 0.5, every emitter above), so no pixel sees an emitter and every pixel is the receiver.
@@ -223,6 +224,50 @@ TEST(Emitters, AQuadMeshLightsAsLambertsPolygonFormulaSays) {
         for (Scene* s : {&lambertianPlane, &diffusePlane}) addPlacedEmitter(*s, meshShape(addMesh(*s, unitQuad())), k.toWorld, kRadiance);
         expectEveryReceiverMatches(lambertianPlane, diffusePlane, expected, k.name, 64);
     }
+}
+
+// ---- a box ----
+// Seen from a plane point, a convex box shows the faces whose plane the point is in front of, and
+// those are where its light samples go (emitter_sampling.h triangleFacesPoint): the reflected light
+// is Lambert's polygon formula summed over them.
+// Bug targeted: samples on the hidden faces counted (or their density left in: 2x too dark), a
+// mirrored box's winding taken for the outside (the hidden faces sampled: black), a bounce's hit
+// weighed with another density than the light samples'.
+TEST(Emitters, ABoxLightsAsLambertsFormulaOverTheFacesInFrontOfEachPoint) {
+    const glm::mat4 toWorld =
+        glm::scale(glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(0.1f, 1.3f, -0.05f)), 0.6f, glm::vec3(1.0f, 0.4f, -0.3f)),
+                   glm::vec3(-0.5f, 0.3f, 0.6f));
+    // The six faces of [-0.5, 0.5]^3 in the world, each a convex quad in cyclic order, with a point
+    // inside the box to orient them.
+    std::vector<std::vector<glm::dvec3>> faces;
+    for (int axis = 0; axis < 3; ++axis)
+        for (float side : {-0.5f, 0.5f}) {
+            const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+            std::vector<glm::dvec3> quad;
+            for (glm::vec2 c : {glm::vec2(-0.5f, -0.5f), glm::vec2(0.5f, -0.5f), glm::vec2(0.5f, 0.5f), glm::vec2(-0.5f, 0.5f)}) {
+                glm::vec3 p(0.0f);
+                p[axis] = side, p[u] = c.x, p[v] = c.y;
+                quad.push_back(glm::dvec3(toWorld * glm::vec4(p, 1.0f)));
+                ASSERT_GT(quad.back().y, kCameraHeight) << "the camera would see the emitter";
+            }
+            faces.push_back(quad);
+        }
+    const glm::dvec3 centre(toWorld * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    const auto inFront = [&](const std::vector<glm::dvec3>& f, glm::dvec3 p) {
+        glm::dvec3 n = glm::cross(f[1] - f[0], f[3] - f[0]);
+        if (glm::dot(n, centre - f[0]) > 0.0) n = -n;  // outwards
+        return glm::dot(n, p - f[0]) > 0.0;
+    };
+    const Image expected = expectedTopView(kSize, kHalf, reflected(kRadiance, [&](glm::dvec3 p) {
+        double sum = 0.0;
+        for (const std::vector<glm::dvec3>& f : faces)
+            if (inFront(f, p)) sum += polygonCosineIntegral(p, {0, 1, 0}, f);
+        return sum;
+    }));
+    Scene lambertianPlane = plane(lambertian(kKd)), diffusePlane = plane(diffuse(kKd));
+    for (Scene* s : {&lambertianPlane, &diffusePlane})
+        addPlacedEmitter(*s, box({-0.5f, -0.5f, -0.5f}, {0.5f, 0.5f, 0.5f}, -1), toWorld, kRadiance);
+    expectEveryReceiverMatches(lambertianPlane, diffusePlane, expected, "box rotated, scaled by (-0.5, 0.3, 0.6)", 64);
 }
 
 // The closed forms' own check: Lambert's polygon integral over a sphere's silhouette (an
