@@ -21,7 +21,8 @@ struct EmitterTable {
 std::uint32_t areaLightCount(const Scene& scene);
 
 // A sphere stays a sphere (sampled by its cone) under a similarity; any other affine map makes it
-// an ellipsoid (sampled by area). Boxes are their twelve triangles, meshes their triangles. Each
+// an ellipsoid (sampled by area). Boxes are their twelve triangles, wound outwards and marked
+// convex (choice.z: light samples go to the faces in front of the point), meshes their triangles. Each
 // record's choice share is its estimated power (mean radiance of r, g, b times area) over the
 // emitters' total: the emitter a light sample goes to (docs/RENDERING.md §4).
 EmitterTable buildEmitterTable(const Scene& scene);
