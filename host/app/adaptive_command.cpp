@@ -132,7 +132,7 @@ int runAdaptiveRender(CommandLine& cl) {
         } catch (const GpuKernelError& e) {
             // The kernel refused this scene (lavapipe's loop limiter): under --device auto the CPU
             // reference computes the same image from the start.
-            if (cl.device != DeviceChoice::Auto) throw kernelErrorIn(scene.path, e);
+            if (cl.device != DeviceChoice::Auto) throw;  // app.cpp names the scene file
             noteCpuFallback(scene.path, e);
             return onCpu();
         }

@@ -328,10 +328,8 @@ int runVkrt(int argc, const char* const* argv) {
         return kExitFailure;
     } catch (const GpuKernelError& e) {
         // The kernel names the pixel and sample; every command that renders (render, compare,
-        // sweep, adaptive) renders one scene file, named here unless the render named it already.
-        const std::string what = e.what();
-        const bool named = cl.scenePath.empty() || what.rfind(cl.scenePath + ": ", 0) == 0;
-        std::cerr << "vkrt: error: " << (named ? what : cl.scenePath + ": " + what) << "\n";
+        // sweep, adaptive) renders one scene file, named here (watch mode names it in its own log).
+        std::cerr << "vkrt: error: " << kernelErrorIn(cl.scenePath, e).what() << "\n";
         return kExitFailure;
     } catch (const std::exception& e) {
         std::cerr << "vkrt: error: " << e.what() << "\n";

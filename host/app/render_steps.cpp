@@ -231,7 +231,7 @@ DeviceRender renderScene(CommandLine& cl) {
     } catch (const GpuKernelError& e) {
         // The kernel refused this scene (e.g. lavapipe's loop limiter): with --device auto the
         // CPU reference computes the same image; with --device gpu the error stands.
-        if (cl.device != DeviceChoice::Auto) throw kernelErrorIn(scene.path, e);
+        if (cl.device != DeviceChoice::Auto) throw;  // app.cpp names the scene file
         noteCpuFallback(scene.path, e);
         result = renderOnCpu(scene, cl.render);
     }

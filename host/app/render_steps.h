@@ -76,9 +76,9 @@ void checkOutputBeforeRendering(const std::string& output, const std::string& sc
 // the scene falls back to the CPU reference under --device auto.
 DeviceRender renderScene(CommandLine& cl);
 
-// A GPU kernel's refusal of a scene (GpuKernelError: it names the pixel and sample) under
-// --device auto: the note that the CPU reference renders it instead, naming the scene file.
-// Under --device gpu, `kernelErrorIn` is the error that stands, with the file named too.
+// A GPU kernel's refusal of a scene (GpuKernelError: it names the pixel and sample) with the scene
+// file named: the error that stands under --device gpu (app.cpp, watch mode's log), and under
+// --device auto the note that the CPU reference renders it instead.
 GpuKernelError kernelErrorIn(const std::string& scenePath, const GpuKernelError& e);
 void noteCpuFallback(const std::string& scenePath, const GpuKernelError& e);
 
