@@ -33,9 +33,10 @@ void wfStoreRay(PathRay r) {
 // is every slot in order (its length and dispatch set by the host, StageRecorder::resetQueues);
 // adaptive, the slots with a sample, appended (the rest end here).
 void wfGenerate() {
-    uvec2 pixel = wfSlotPixel(g_wfSlot);
-    uint sampleNumber = wfSlotSample(g_wfSlot);
-    if (ADAPTIVE && sampleNumber >= wfWorkEntry(g_wfSlot).z) {
+    WfSlotSample slot = wfSlotSample(g_wfSlot);
+    uvec2 pixel = slot.pixel;
+    uint sampleNumber = slot.sampleNumber;
+    if (ADAPTIVE && sampleNumber >= slot.end) {
         wfStore(WF_RADIANCE, uvec4(0u));
         atomicAdd(status.paths.x, 1u);
         return;
@@ -82,7 +83,8 @@ void wfShade() {
     hit.instance = h.y;
     hit.prim = h.z;
     hit.bary = uintBitsToFloat(b.xy);
-    SampleKey key = wfSampleKey(wfSlotPixel(g_wfSlot), wfSlotSample(g_wfSlot));
+    WfSlotSample slot = wfSlotSample(g_wfSlot);
+    SampleKey key = wfSampleKey(slot.pixel, slot.sampleNumber);
     g_pathTop = state.w & 0xffffu;
     vec3 radiance = uintBitsToFloat(state.xyz);
     PathQueue q;
@@ -185,8 +187,8 @@ uint wfBegin() {
 
 // The stage's failures, if any, reported for the slot's pixel and sample.
 void wfReport() {
-    uvec2 p = wfSlotPixel(g_wfSlot);
-    reportStatus(p.y * frameWidth() + p.x, wfSlotSample(g_wfSlot), 0u);
+    WfSlotSample slot = wfSlotSample(g_wfSlot);
+    reportStatus(slot.pixel.y * frameWidth() + slot.pixel.x, slot.sampleNumber, 0u);
 }
 
 #endif

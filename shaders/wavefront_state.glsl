@@ -75,16 +75,28 @@ void wfCountGroups(uint q, uint first, uint n) {
     if (added > 0u) atomicAdd(status.queueGroups[q].x, added);
 }
 
-// The pixel and sample of path slot `slot` of the wave.
-uvec2 wfSlotPixel(uint slot) {
+// The pixel and sample of path slot `slot` of the wave; adaptive, `end` is its entry's end (one
+// work-list load for all three), else no limit.
+struct WfSlotSample {
+    uvec2 pixel;
+    uint sampleNumber;
+    uint end;
+};
+WfSlotSample wfSlotSample(uint slot) {
+    WfSlotSample s;
+    s.sampleNumber = passFirstSample(g_wave) + slot / wfBandPixels();
+    s.end = 0xffffffffu;
     if (ADAPTIVE) {
-        uint pixel = wfWorkEntry(slot).x;
-        return uvec2(pixel % frameWidth(), pixel / frameWidth());
+        uvec4 entry = wfWorkEntry(slot);
+        s.pixel = uvec2(entry.x % frameWidth(), entry.x / frameWidth());
+        s.sampleNumber += entry.y;
+        s.end = entry.z;
+        return s;
     }
     uint p = slot % wfBandPixels();
-    return passTileOrigin(g_wave) + uvec2(p % passTileSize(g_wave).x, p / passTileSize(g_wave).x);
+    s.pixel = passTileOrigin(g_wave) + uvec2(p % passTileSize(g_wave).x, p / passTileSize(g_wave).x);
+    return s;
 }
-uint wfSlotSample(uint slot) { return (ADAPTIVE ? wfWorkEntry(slot).y : 0u) + passFirstSample(g_wave) + slot / wfBandPixels(); }
 
 // A hit's shadow rays in the two shading stages. SHADE_RECORD stores each ray and answers
 // "blocked" (its shading is thrown away); SHADE_RESOLVE runs the same shading, which asks for the
