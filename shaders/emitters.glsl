@@ -61,7 +61,7 @@ float emitterSolidAngle(EmitterRecord e, vec3 x, out bool onlyFacing) {
 bool samplesBySolidAngle(EmitterRecord e, vec3 x, out float omega, out bool onlyFacing) {
     omega = 0.0;
     onlyFacing = false;
-    if (emitterTriangleCount(e) > SOLID_ANGLE_MAX_TRIANGLES) return false;
+    if (emitterTriangleCount(e) > SOLID_ANGLE_MAX_TRIANGLES || !solidAngleNear(e, x)) return false;
     omega = emitterSolidAngle(e, x, onlyFacing);
     return omega >= SOLID_ANGLE_MIN;
 }

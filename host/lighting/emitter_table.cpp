@@ -90,6 +90,14 @@ void addTriangles(EmitterTable& table, gpu::EmitterRecord& record, const std::ve
     if (!(total > 0.0)) return;  // no area: nothing to sample (and nothing to see)
     record.info.z = static_cast<std::uint32_t>(count);
     record.radiance.w = static_cast<float>(1.0 / total);
+    // The triangles' bounding sphere (centre of their box, radius to the farthest corner, rounded
+    // up), for the rule that picks solid-angle or area sampling (emitter_sampling.h solidAngleNear).
+    glm::dvec3 lo(corners[0]), hi(corners[0]);
+    for (const glm::vec3& c : corners) lo = glm::min(lo, glm::dvec3(c)), hi = glm::max(hi, glm::dvec3(c));
+    const glm::dvec3 centre = 0.5 * (lo + hi);
+    double radius = 0.0;
+    for (const glm::vec3& c : corners) radius = std::max(radius, glm::length(glm::dvec3(c) - centre));
+    record.sphere = glm::vec4(glm::vec3(centre), static_cast<float>(radius * (1.0 + 1e-6)));
     double running = 0.0;
     for (std::size_t i = 0; i < count; ++i) {
         running += areas[i];
@@ -198,7 +206,7 @@ bool samplesBySolidAngle(const EmitterTable& table, const gpu::EmitterRecord& r,
                          bool& onlyFacing) {
     omega = 0.0f;
     onlyFacing = false;
-    if (gpu::emitterTriangleCount(r) > emitters::SOLID_ANGLE_MAX_TRIANGLES) return false;
+    if (gpu::emitterTriangleCount(r) > emitters::SOLID_ANGLE_MAX_TRIANGLES || !emitters::solidAngleNear(r, x)) return false;
     const std::uint32_t first = gpu::emitterFirstTriangle(r), n = gpu::emitterTriangleCount(r);
     const bool convex = gpu::emitterConvex(r);
     float facing = 0.0f;

@@ -257,7 +257,8 @@ VKRT_CONST uint EMITTER_TRIANGLES = 2u;
 struct EmitterRecord {
     vec4 radiance;     // rgb emitted radiance (both sides); w: the area density, 1 / total world
                        // area (TRIANGLES), or 1 / (4 pi r^2 |det M|) (ELLIPSOID, emitter_sampling.h)
-    vec4 sphere;       // xyz centre, w radius: in world space (SPHERE), in object space (ELLIPSOID)
+    vec4 sphere;       // xyz centre, w radius: in world space (SPHERE), in object space (ELLIPSOID),
+                       // the triangles' world bounding sphere (TRIANGLES: emitter_sampling.h solidAngleNear)
     vec4 toWorld[3];   // ELLIPSOID: rows of the 3x4 object-to-world transform
     vec4 toObject[3];  // ELLIPSOID: rows of its inverse
     uvec4 info;        // x: EMITTER_* kind, y: first EmitterTriangle, z: triangle count,

@@ -142,6 +142,43 @@ TEST(EmitterSampling, SamplesNearAQuadCarryBoundedWeights) {
                                                            "directions is >= 1/2 here";
 }
 
+// emitter_sampling.h solidAngleNear: a triangle set is sampled by solid angle from points within
+// SOLID_ANGLE_NEAR radii of its bounding sphere's centre (the density 1 / the triangles' total solid
+// angle wherever the sample lands) and by area beyond (the density distance^2 / (area cos)).
+// Bug targeted: a bounding sphere not filled in (every point sampled by area, heavy-tailed near
+// the emitter), the rule inverted, or a bounce's hit weighed by the other rule than its sample's
+// (a wrong MIS weight: a bias the images would show only as a slight brightness error).
+TEST(EmitterSampling, ATriangleSetIsSampledBySolidAngleNearItAndByAreaFarFromIt) {
+    const Scene scene = quadEmitterScene();
+    const EmitterTable table = buildEmitterTable(scene);
+    const gpu::EmitterRecord& record = table.records.at(0);
+    // The 1 x 0.8 quad's bounding sphere: its centre and half its diagonal.
+    EXPECT_NEAR(record.sphere.x, 0.0f, 1e-6f);
+    EXPECT_NEAR(record.sphere.y, 1.0f, 1e-6f);
+    EXPECT_NEAR(record.sphere.z, 0.0f, 1e-6f);
+    const float radius = std::sqrt(0.25f + 0.16f);
+    EXPECT_NEAR(record.sphere.w, radius, 1e-5f);
+    const float reach = emitters::SOLID_ANGLE_NEAR * radius;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u01(0.0f, 1.0f);
+    // Straight under the centre, just inside and just outside the reach, and far off to the side.
+    for (const float distance : {0.3f, 0.99f * reach, 1.01f * reach, 4.0f * reach}) {
+        const glm::vec3 x(0.0f, 1.0f - distance, 0.0f);
+        const bool near = distance < reach;
+        const double omega = double(emitters::triangleSolidAngle(table.triangles[0], x)) +
+                             emitters::triangleSolidAngle(table.triangles[1], x);
+        for (int i = 0; i < 256; ++i) {
+            const emitters::EmitterSample s = sampleEmitter(table, record, x, glm::vec2(u01(rng), u01(rng)));
+            ASSERT_GT(s.pdf, 0.0f);
+            const glm::dvec3 d = glm::dvec3(s.point) - glm::dvec3(x);
+            const double byArea = glm::dot(d, d) / (0.8 * std::fabs(glm::normalize(d).y));
+            const double expected = near ? 1.0 / omega : byArea;
+            ASSERT_NEAR(s.pdf / expected, 1.0, 1e-4) << "distance " << distance << (near ? " (near)" : " (far)");
+            ASSERT_NEAR(emitterPdf(table, record, x, s.point, s.normal) / s.pdf, 1.0f, 1e-5f);
+        }
+    }
+}
+
 // A box emitter, [-0.5, 0.5]^3 under `toWorld`.
 Scene boxEmitterScene(const glm::mat4& toWorld) {
     Scene scene;
