@@ -144,7 +144,10 @@ VKRT_FN vec2 gridPoint(uvec4 grid, uint stratum, vec2 offset) {
 //
 // Integer operations only (no loop), then the exact float conversion of unitFloat.
 
-// The 32 bits of x in reverse order (swap halves, then quarters, ... , then neighbouring bits).
+// The 32 bits of x in reverse order. GLSL has it built in (one instruction on GPUs: AMD's
+// v_bfrev_b32, NVIDIA's BREV); in C++ swap halves, then quarters, ... , then neighbouring bits
+// (compilers turn the first two steps into one bswap).
+#ifdef __cplusplus
 VKRT_FN uint reverseBits32(uint x) {
     x = (x >> 16u) | (x << 16u);
     x = ((x >> 8u) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8u);
@@ -153,6 +156,9 @@ VKRT_FN uint reverseBits32(uint x) {
     x = ((x >> 1u) & 0x55555555u) | ((x & 0x55555555u) << 1u);
     return x;
 }
+#else
+VKRT_FN uint reverseBits32(uint x) { return bitfieldReverse(x); }
+#endif
 
 // Sobol dimension 1 of the point number `index`, with its digits in reversed order (bit r is the
 // digit of weight 2^-(r+1)). Its generator matrix is Pascal's triangle mod 2: digit r is the xor
