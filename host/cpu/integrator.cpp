@@ -221,14 +221,18 @@ glm::vec3 Integrator::diffuse(const Shader& shader, const SurfacePoint& sp, cons
     // Every light a Diffuse surface reflects, its direct light included, is a bounce: none at the
     // maximum depth (so -k 0 shows emitters and the environment only).
     if (depth >= ctx_.maxDepth) return glm::vec3(0.0f);
+    // One cosine-weighted bounce per pixel sample: f cos / pdf = (kd / pi) cos / (cos / pi) = kd.
+    // Drawn before the light samples, whose shadow rays hide the Sobol sample's latency (a chain
+    // of ~15 dependent multiplies) that the bounce would otherwise wait for.
+    const bool bounces = depth + 1 < ctx_.maxDepth || ctx_.finalRays.bounceSeesLight;
+    const glm::vec2 u = bounces ? sampling::sample2D(ctx_.sampler, ctx_.pixelGrid, key.pixel, key.sample,
+                                                     sampling::dimBounce(static_cast<std::uint32_t>(depth)), key.seed)
+                                : glm::vec2(0.0f);
     glm::vec3 radiance = directLight(shader, sp, n, ng, n, kd, glm::vec3(0.0f), depth, key);
     if (ctx_.environment && diffuseSamplesLights()) radiance += kd * environmentLight(sp, n, ng, depth, key);
     // A bounce ending at the maximum depth where it can find no light is not traced (final_rays.h).
-    if (depth + 1 >= ctx_.maxDepth && !ctx_.finalRays.bounceSeesLight) return radiance;
+    if (!bounces) return radiance;
 
-    // One cosine-weighted bounce per pixel sample: f cos / pdf = (kd / pi) cos / (cos / pi) = kd.
-    const glm::vec2 u = sampling::sample2D(ctx_.sampler, ctx_.pixelGrid, key.pixel, key.sample,
-                                           sampling::dimBounce(static_cast<std::uint32_t>(depth)), key.seed);
     const glm::vec3 dir = emitters::cosineDirection(n, u);
     if (glm::dot(dir, ng) <= 0.0f) return radiance;  // no light from inside
     // Russian roulette where the path's weight has fallen below its depth's threshold (RENDERING.md §5).
