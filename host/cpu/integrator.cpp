@@ -31,6 +31,35 @@ glm::vec3 textured(const Scene& scene, glm::vec3 colour, int texture, glm::vec2 
 
 }  // namespace
 
+Integrator::Integrator(const RenderContext& context) : ctx_(context) {
+    for (const LightSource& light : ctx_.lights) hasAreaLights_ |= light.type == LightType::Area;
+}
+
+std::uint32_t Integrator::pickEmitterFor(int depth, SampleKey key, std::uint32_t index) const {
+    const EmitterTable& table = ctx_.lighting->emitters;
+    if (table.records.size() == 1) return 0u;
+    return pickEmitter(table, sampling::sample1D(ctx_.sampler, ctx_.lightGrid, key.pixel, index,
+                                                 sampling::dimEmitterChoice(static_cast<std::uint32_t>(depth)), key.seed));
+}
+
+void Integrator::drawEarlyLightSample(int depth, SampleKey key) {
+    if (ctx_.lightSamples == 0) return;
+    const bool emitters = !ctx_.lighting->emitters.records.empty();
+    if (!hasAreaLights_ && !emitters) return;
+    const std::uint32_t index = key.sample * ctx_.lightSamples;  // sample j = 0
+    early_.pixel = key.pixel, early_.sample = key.sample, early_.seed = key.seed, early_.depth = depth;
+    if (hasAreaLights_)
+        early_.area = sampling::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel, index,
+                                         sampling::dimLight(static_cast<std::uint32_t>(depth), 0u), key.seed);
+    if (emitters) {
+        early_.emitter = pickEmitterFor(depth, key, index);
+        const gpu::EmitterRecord& r = ctx_.lighting->emitters.records[early_.emitter];
+        early_.emitterSample = sampling::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel, index,
+                                                  sampling::dimLight(static_cast<std::uint32_t>(depth), gpu::emitterLightOrdinal(r)),
+                                                  key.seed);
+    }
+}
+
 glm::vec3 Integrator::cameraRadiance(const bvh::Ray& ray, SampleKey key) {
     ++counts_.camera;
     return trace(ray, 0, glm::vec3(1.0f), key);
@@ -40,6 +69,7 @@ glm::vec3 Integrator::trace(const bvh::Ray& ray, int depth, glm::vec3 weight, Sa
     bvh::Ray timed = ray;
     timed.time = key.time;
     bvh::Hit hit;
+    drawEarlyLightSample(depth, key);
     if (!bvh::intersectClosest(ctx_.accel->bvh, timed, hit)) return escaped(timed.dir, bouncePdf);
     return shade(timed, hit, depth, weight, key, bouncePdf);
 }
@@ -162,6 +192,7 @@ glm::vec3 Integrator::directLight(const Shader& shader, const SurfacePoint& sp, 
         return c;
     };
 
+    const bool early = hasEarlyLightSample(depth, key);
     glm::vec3 sum(0.0f);
     for (const LightSource& light : ctx_.lights) {
         if (light.type == LightType::Point) {
@@ -171,8 +202,10 @@ glm::vec3 Integrator::directLight(const Shader& shader, const SurfacePoint& sp, 
         glm::vec3 lightSum(0.0f);
         const std::uint32_t dim = sampling::dimLight(static_cast<std::uint32_t>(depth), light.areaOrdinal);
         for (std::uint32_t j = 0; j < ctx_.lightSamples; ++j) {
-            const glm::vec2 s = sampling::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel,
-                                              key.sample * ctx_.lightSamples + j, dim, key.seed);
+            const glm::vec2 s = j == 0 && light.areaOrdinal == 0 && early
+                                    ? early_.area
+                                    : sampling::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel,
+                                                         key.sample * ctx_.lightSamples + j, dim, key.seed);
             lightSum += contribution(lightPoint(light, s), light.intensity);
         }
         sum += lightSum / static_cast<float>(ctx_.lightSamples);
@@ -191,15 +224,13 @@ glm::vec3 Integrator::directLight(const Shader& shader, const SurfacePoint& sp, 
     glm::vec3 emitterSum(0.0f);
     for (std::uint32_t j = 0; j < ctx_.lightSamples; ++j) {
         const std::uint32_t index = key.sample * ctx_.lightSamples + j;
-        const std::uint32_t e =
-            table.records.size() == 1
-                ? 0u
-                : pickEmitter(table, sampling::sample1D(ctx_.sampler, ctx_.lightGrid, key.pixel, index,
-                                                        sampling::dimEmitterChoice(static_cast<std::uint32_t>(depth)), key.seed));
+        const bool drawn = j == 0 && early;
+        const std::uint32_t e = drawn ? early_.emitter : pickEmitterFor(depth, key, index);
         const gpu::EmitterRecord& r = table.records[e];
-        const glm::vec2 u = sampling::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel, index,
-                                               sampling::dimLight(static_cast<std::uint32_t>(depth), gpu::emitterLightOrdinal(r)),
-                                               key.seed);
+        const glm::vec2 u = drawn ? early_.emitterSample
+                                  : sampling::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel, index,
+                                                       sampling::dimLight(static_cast<std::uint32_t>(depth), gpu::emitterLightOrdinal(r)),
+                                                       key.seed);
         const emitters::EmitterSample s = sampleEmitter(table, r, sp.position, u);
         const float pdf = gpu::emitterChoicePdf(r) * s.pdf;
         if (!(pdf > 0.0f) || !std::isfinite(pdf)) continue;

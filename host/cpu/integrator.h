@@ -41,7 +41,7 @@ struct SampleKey {
 
 class Integrator {
 public:
-    explicit Integrator(const RenderContext& context) : ctx_(context) {}
+    explicit Integrator(const RenderContext& context);
 
     // The radiance of a camera ray (unit direction).
     glm::vec3 cameraRadiance(const bvh::Ray& ray, SampleKey key);
@@ -79,12 +79,30 @@ private:
     glm::vec3 dielectric(const bvh::Ray& ray, const bvh::Hit& hit, const Shader& shader, const SurfacePoint& sp,
                          int depth, glm::vec3 weight, SampleKey key);
     bool occluded(const glm::vec3& origin, const glm::vec3& lightPoint, float time);
+    // The first light sample a hit at `depth` takes, drawn before the ray that finds the hit is
+    // traced: a Sobol sample is a chain of dependent multiplies whose latency the shadow ray
+    // would otherwise wait for, and the traversal hides it. directLight takes it from here when it
+    // draws that sample for the same pixel sample and depth.
+    struct EarlyLightSample {
+        std::uint32_t pixel = 0, sample = 0, seed = 0;
+        int depth = -1;
+        glm::vec2 area{0.0f};       // the first area light's sample 0
+        std::uint32_t emitter = 0;  // the shape emitter light sample 0 goes to, and its sample
+        glm::vec2 emitterSample{0.0f};
+    };
+    void drawEarlyLightSample(int depth, SampleKey key);
+    bool hasEarlyLightSample(int depth, SampleKey key) const {
+        return early_.depth == depth && early_.pixel == key.pixel && early_.sample == key.sample && early_.seed == key.seed;
+    }
+    std::uint32_t pickEmitterFor(int depth, SampleKey key, std::uint32_t index) const;
     // Whether a Diffuse surface samples emitters and the environment (every estimator but the
     // plain bounce), and whether it weighs those samples against its bounce (MIS).
     bool diffuseSamplesLights() const { return ctx_.estimator != Estimator::Bounce; }
     bool diffuseWeighs() const { return ctx_.estimator == Estimator::MisBalance || ctx_.estimator == Estimator::MisPower; }
 
     const RenderContext& ctx_;
+    bool hasAreaLights_ = false;
+    EarlyLightSample early_;
     RayCounts counts_;
 };
 
