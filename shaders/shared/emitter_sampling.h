@@ -215,7 +215,7 @@ VKRT_FN EmitterSample sampleEmitterTriangle(EmitterTriangle t, float previousCdf
 }
 
 // EMITTER_TRIANGLES with at most SOLID_ANGLE_MAX_TRIANGLES triangles (a triangle, a quad, a
-// box): by solid angle. Each light sample picks a triangle in proportion to the solid angle it
+// box, a small mesh): by solid angle near the emitter (SOLID_ANGLE_NEAR below). Each light sample picks a triangle in proportion to the solid angle it
 // subtends at x and a direction uniformly inside it (Arvo 1995), so the density is 1 / (the
 // triangles' total solid angle) wherever the sample lands: no 1 / distance^2 tail near the
 // emitter, where area sampling's samples are heavy-tailed (docs/RENDERING.md §4). Larger meshes
@@ -231,8 +231,8 @@ VKRT_CONST float SOLID_ANGLE_MIN = 1e-4f;
 // atan per triangle for the solid angles, a sin and a cos per sample) costs more than the
 // variance it saves. So a triangle set is sampled by solid angle only from points within
 // SOLID_ANGLE_NEAR bounding-sphere radii of its centre (EmitterRecord::sphere), by area beyond
-// (Cycles' triangle lights draw the same line: solid angle where the longest edge exceeds the
-// distance to the plane). At 2 radii the quad-lit room's error per sample is that of solid-angle
+// (Cycles' triangle lights make the same kind of choice, per triangle: solid angle where the
+// longest edge exceeds the distance to the triangle's plane). At 2 radii the quad-lit room's error per sample is that of solid-angle
 // sampling everywhere to three digits, at less time per sample (docs/BENCHMARKS.md). A convex
 // emitter keeps solid-angle sampling everywhere: area sampling would spend half its samples on
 // the faces turned away from the point.
