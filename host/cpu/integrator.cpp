@@ -42,21 +42,21 @@ std::uint32_t Integrator::pickEmitterFor(int depth, SampleKey key, std::uint32_t
                                                  sampling::dimEmitterChoice(static_cast<std::uint32_t>(depth)), key.seed));
 }
 
+glm::vec2 Integrator::lightSample(int depth, SampleKey key, std::uint32_t index, std::uint32_t ordinal) const {
+    return sampling::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel, index,
+                              sampling::dimLight(static_cast<std::uint32_t>(depth), ordinal), key.seed);
+}
+
 void Integrator::drawEarlyLightSample(int depth, SampleKey key) {
-    if (ctx_.lightSamples == 0) return;
     const bool emitters = !ctx_.lighting->emitters.records.empty();
     if (!hasAreaLights_ && !emitters) return;
     const std::uint32_t index = key.sample * ctx_.lightSamples;  // sample j = 0
     early_.pixel = key.pixel, early_.sample = key.sample, early_.seed = key.seed, early_.depth = depth;
-    if (hasAreaLights_)
-        early_.area = sampling::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel, index,
-                                         sampling::dimLight(static_cast<std::uint32_t>(depth), 0u), key.seed);
+    if (hasAreaLights_) early_.area = lightSample(depth, key, index, 0u);
     if (emitters) {
         early_.emitter = pickEmitterFor(depth, key, index);
-        const gpu::EmitterRecord& r = ctx_.lighting->emitters.records[early_.emitter];
-        early_.emitterSample = sampling::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel, index,
-                                                  sampling::dimLight(static_cast<std::uint32_t>(depth), gpu::emitterLightOrdinal(r)),
-                                                  key.seed);
+        early_.emitterSample =
+            lightSample(depth, key, index, gpu::emitterLightOrdinal(ctx_.lighting->emitters.records[early_.emitter]));
     }
 }
 
@@ -200,12 +200,10 @@ glm::vec3 Integrator::directLight(const Shader& shader, const SurfacePoint& sp, 
             continue;
         }
         glm::vec3 lightSum(0.0f);
-        const std::uint32_t dim = sampling::dimLight(static_cast<std::uint32_t>(depth), light.areaOrdinal);
         for (std::uint32_t j = 0; j < ctx_.lightSamples; ++j) {
             const glm::vec2 s = j == 0 && light.areaOrdinal == 0 && early
                                     ? early_.area
-                                    : sampling::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel,
-                                                         key.sample * ctx_.lightSamples + j, dim, key.seed);
+                                    : lightSample(depth, key, key.sample * ctx_.lightSamples + j, light.areaOrdinal);
             lightSum += contribution(lightPoint(light, s), light.intensity);
         }
         sum += lightSum / static_cast<float>(ctx_.lightSamples);
@@ -227,10 +225,7 @@ glm::vec3 Integrator::directLight(const Shader& shader, const SurfacePoint& sp, 
         const bool drawn = j == 0 && early;
         const std::uint32_t e = drawn ? early_.emitter : pickEmitterFor(depth, key, index);
         const gpu::EmitterRecord& r = table.records[e];
-        const glm::vec2 u = drawn ? early_.emitterSample
-                                  : sampling::sample2D(ctx_.sampler, ctx_.lightGrid, key.pixel, index,
-                                                       sampling::dimLight(static_cast<std::uint32_t>(depth), gpu::emitterLightOrdinal(r)),
-                                                       key.seed);
+        const glm::vec2 u = drawn ? early_.emitterSample : lightSample(depth, key, index, gpu::emitterLightOrdinal(r));
         const emitters::EmitterSample s = sampleEmitter(table, r, sp.position, u);
         const float pdf = gpu::emitterChoicePdf(r) * s.pdf;
         if (!(pdf > 0.0f) || !std::isfinite(pdf)) continue;

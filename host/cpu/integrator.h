@@ -95,6 +95,9 @@ private:
         return early_.depth == depth && early_.pixel == key.pixel && early_.sample == key.sample && early_.seed == key.seed;
     }
     std::uint32_t pickEmitterFor(int depth, SampleKey key, std::uint32_t index) const;
+    // Light sample `index` of a hit at `depth` for the light of ordinal `ordinal` (an area light's
+    // areaOrdinal, an emitter's emitterLightOrdinal): RENDERING.md §2's dimension dimLight.
+    glm::vec2 lightSample(int depth, SampleKey key, std::uint32_t index, std::uint32_t ordinal) const;
     // Whether a Diffuse surface samples emitters and the environment (every estimator but the
     // plain bounce), and whether it weighs those samples against its bounce (MIS).
     bool diffuseSamplesLights() const { return ctx_.estimator != Estimator::Bounce; }

@@ -214,28 +214,29 @@ VKRT_FN EmitterSample sampleEmitterTriangle(EmitterTriangle t, float previousCdf
     return s;
 }
 
-// EMITTER_TRIANGLES with at most SOLID_ANGLE_MAX_TRIANGLES triangles (a triangle, a quad, a
-// box, a small mesh): by solid angle near the emitter (SOLID_ANGLE_NEAR below). Each light sample picks a triangle in proportion to the solid angle it
-// subtends at x and a direction uniformly inside it (Arvo 1995), so the density is 1 / (the
-// triangles' total solid angle) wherever the sample lands: no 1 / distance^2 tail near the
-// emitter, where area sampling's samples are heavy-tailed (docs/RENDERING.md §4). Larger meshes
-// keep area sampling (the per-sample loop over their triangles would cost more than it saves).
-// Below SOLID_ANGLE_MIN steradians (an emitter ~70 times its size away) Arvo's construction loses
-// its digits in float (sin of the sampled arc from 1 - q^2) and area sampling is near-uniform in
-// solid angle anyway, so the emitter is sampled by area there; the rule depends on x alone, so
-// a bounce's hit is weighed with the density of the same rule.
+// EMITTER_TRIANGLES with at most SOLID_ANGLE_MAX_TRIANGLES triangles (a triangle, a quad, a box, a
+// small mesh): by solid angle near the emitter (SOLID_ANGLE_NEAR below). Each light sample picks a
+// triangle in proportion to the solid angle it subtends at x and a direction uniformly inside it
+// (Arvo 1995), so the density is 1 / (the triangles' total solid angle) wherever the sample lands:
+// no 1 / distance^2 tail near the emitter, where area sampling's samples are heavy-tailed
+// (docs/RENDERING.md §4). Larger meshes keep area sampling (the per-sample loop over their
+// triangles would cost more than it saves). Below SOLID_ANGLE_MIN steradians (an emitter ~70 times
+// its size away) Arvo's construction loses its digits in float (sin of the sampled arc from
+// 1 - q^2) and area sampling is near-uniform in solid angle anyway, so the emitter is sampled by area
+// there; the rule depends on x alone, so a bounce's hit is weighed with the density of the same
+// rule.
 VKRT_CONST uint SOLID_ANGLE_MAX_TRIANGLES = 12u;
 VKRT_CONST float SOLID_ANGLE_MIN = 1e-4f;
 // Solid-angle sampling pays near the emitter, where area sampling's 1 / distance^2 tail lives;
-// farther away the two densities differ little across the emitter and Arvo's construction (an
-// atan per triangle for the solid angles, a sin and a cos per sample) costs more than the
-// variance it saves. So a triangle set is sampled by solid angle only from points within
-// SOLID_ANGLE_NEAR bounding-sphere radii of its centre (EmitterRecord::sphere), by area beyond
-// (Cycles' triangle lights make the same kind of choice, per triangle: solid angle where the
-// longest edge exceeds the distance to the triangle's plane). At 2 radii the quad-lit room's error per sample is that of solid-angle
-// sampling everywhere to three digits, at less time per sample (docs/BENCHMARKS.md). A convex
-// emitter keeps solid-angle sampling everywhere: area sampling would spend half its samples on
-// the faces turned away from the point.
+// farther away the two densities differ little across the emitter and Arvo's construction (an atan
+// per triangle for the solid angles, a sin and a cos per sample) costs more than the variance it
+// saves. So a triangle set is sampled by solid angle only from points within SOLID_ANGLE_NEAR
+// bounding-sphere radii of its centre (EmitterRecord::sphere), by area beyond (Cycles' triangle
+// lights make the same kind of choice, per triangle: solid angle where the longest edge exceeds the
+// distance to the triangle's plane). At 2 radii the quad-lit room's error per sample is that of
+// solid-angle sampling everywhere to three digits, at less time per sample (docs/BENCHMARKS.md). A
+// convex emitter keeps solid-angle sampling everywhere: area sampling would spend half its samples
+// on the faces turned away from the point.
 VKRT_CONST float SOLID_ANGLE_NEAR = 2.0f;
 VKRT_FN bool solidAngleNear(EmitterRecord e, vec3 x) {
     if (emitterConvex(e)) return true;
