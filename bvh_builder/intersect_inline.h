@@ -19,7 +19,11 @@ bool collinear(const glm::vec3& v0, const glm::vec3& v1, const glm::vec3& v2);
 
 [[gnu::always_inline]] inline bool intersectTriangleInline(const WatertightRay& r, const glm::vec3& v0, const glm::vec3& v1,
                               const glm::vec3& v2, float tmax, PrimHit& hit) {
-    const glm::vec3 a = v0 - r.org, b = v1 - r.org, c = v2 - r.org;
+    // Plain arrays, not glm::vec3: glm indexes a vector by a runtime axis with a chain of compares
+    // and branches, an array by one indexed load.
+    const float a[3] = {v0.x - r.org.x, v0.y - r.org.y, v0.z - r.org.z};
+    const float b[3] = {v1.x - r.org.x, v1.y - r.org.y, v1.z - r.org.z};
+    const float c[3] = {v2.x - r.org.x, v2.y - r.org.y, v2.z - r.org.z};
     const float ax = a[r.kx] - r.sx * a[r.kz], ay = a[r.ky] - r.sy * a[r.kz];
     const float bx = b[r.kx] - r.sx * b[r.kz], by = b[r.ky] - r.sy * b[r.kz];
     const float cx = c[r.kx] - r.sx * c[r.kz], cy = c[r.ky] - r.sy * c[r.kz];
