@@ -17,6 +17,29 @@ void edgeFunctionsDouble(float ax, float ay, float bx, float by, float cx, float
 bool collinear(const glm::vec3& v0, const glm::vec3& v1, const glm::vec3& v2);
 }  // namespace detail
 
+// The watertight test after its three edge functions (u, v, w: float, with exact zeros already
+// redone in double) and the sheared corners' z (az, bz, cz): the sign test, then the distance.
+// Shared by the one-triangle test below and the traversal's four-triangle leaves (traverse.cpp),
+// so both report the same hits bit for bit. Does not check for collinear corners.
+[[gnu::always_inline]] inline bool watertightDistance(float u, float v, float w, float az, float bz, float cz,
+                                                      float tmax, PrimHit& hit) {
+    if ((u < 0.0f || v < 0.0f || w < 0.0f) && (u > 0.0f || v > 0.0f || w > 0.0f)) return false;
+    const float det = u + v + w;
+    if (det == 0.0f) return false;
+    const float tScaled = u * az + v * bz + w * cz;
+    // Reject before dividing: t = tScaled / det must lie in (0, tmax), with det of either sign.
+    if (det > 0.0f ? (tScaled <= 0.0f || tScaled >= tmax * det) : (tScaled >= 0.0f || tScaled <= tmax * det))
+        return false;
+    const float inv = 1.0f / det;
+    const float t = tScaled * inv;
+    if (!(t > 0.0f && t < tmax)) return false;  // rounding of the division
+    hit.t = t;
+    hit.u = v * inv;
+    hit.v = w * inv;
+    hit.face = -1;
+    return true;
+}
+
 [[gnu::always_inline]] inline bool intersectTriangleInline(const WatertightRay& r, const glm::vec3& v0, const glm::vec3& v1,
                               const glm::vec3& v2, float tmax, PrimHit& hit) {
     // Plain arrays, not glm::vec3: glm indexes a vector by a runtime axis with a chain of compares
@@ -31,22 +54,10 @@ bool collinear(const glm::vec3& v0, const glm::vec3& v1, const glm::vec3& v2);
     float v = ax * cy - ay * cx;
     float w = bx * ay - by * ax;
     if (u == 0.0f || v == 0.0f || w == 0.0f) detail::edgeFunctionsDouble(ax, ay, bx, by, cx, cy, u, v, w);
-    if ((u < 0.0f || v < 0.0f || w < 0.0f) && (u > 0.0f || v > 0.0f || w > 0.0f)) return false;
-    const float det = u + v + w;
-    if (det == 0.0f) return false;
-    const float az = r.sz * a[r.kz], bz = r.sz * b[r.kz], cz = r.sz * c[r.kz];
-    const float tScaled = u * az + v * bz + w * cz;
-    // Reject before dividing: t = tScaled / det must lie in (0, tmax), with det of either sign.
-    if (det > 0.0f ? (tScaled <= 0.0f || tScaled >= tmax * det) : (tScaled >= 0.0f || tScaled <= tmax * det))
-        return false;
-    const float inv = 1.0f / det;
-    const float t = tScaled * inv;
-    if (!(t > 0.0f && t < tmax)) return false;  // rounding of the division
+    PrimHit h;
+    if (!watertightDistance(u, v, w, r.sz * a[r.kz], r.sz * b[r.kz], r.sz * c[r.kz], tmax, h)) return false;
     if (detail::collinear(v0, v1, v2)) return false;  // only reached by rays along a degenerate triangle
-    hit.t = t;
-    hit.u = v * inv;
-    hit.v = w * inv;
-    hit.face = -1;
+    hit = h;
     return true;
 }
 

@@ -116,13 +116,15 @@ void buildWideCopy(const std::vector<std::vector<std::uint32_t>>& groupBlocks, c
     for (const CollapsePlan& plan : plans) wideTotal += plan.total;
     reserveHuge(bvh.cpu.nodes, wideTotal);
     bvh.cpu.nodes.resize(wideTotal);
-    std::uint32_t wideFirst = 0;
+    std::uint32_t wideFirst = 0, bottomNodes = 0;
     for (std::size_t k = 0; k < plans.size(); ++k) {
         const std::uint32_t root = writeCollapse(bvh.nodes, plans[k], pool, bvh.cpu.nodes.data(), wideFirst);
         if (k < groupBlocks.size()) bvh.cpu.groupRoots.push_back(root);
         else bvh.cpu.topRoot = root;
         wideFirst += plans[k].total;
+        if (k < groupBlocks.size()) bottomNodes = wideFirst;
     }
+    bvh.cpu.triangles = buildTriangleGroups(bvh.prims, bvh.cpu.nodes.data(), bottomNodes);
     for (const InstanceInput& in : instances)
         bvh.cpu.identity.push_back(in.objectToWorld == glm::mat4(1.0f) && !in.moving ? 1 : 0);
     bvh.cpu.built = true;

@@ -14,6 +14,7 @@
 #include "hit_order.h"
 #include "intersect_inline.h"
 #include "node_layout.h"
+#include "triangle_groups.h"
 
 namespace vkrt::bvh {
 
@@ -134,6 +135,53 @@ inline bool intersectPrim(const gpu::Primitive& p, const WatertightRay& wr, cons
     }
 }
 
+// A leaf of triangle groups (triangle_groups.h) against the ray: the watertight test's edge
+// functions for four triangles per instruction, the same float operations in the same order as
+// intersectTriangleInline, so each lane's u, v, w are its scalar test's bit for bit; a lane whose
+// edge function is exactly 0 is redone by the scalar's double fallback. The lanes left are
+// finished one by one in primitive order by the scalar test's own tail (watertightDistance) with
+// the tmax of that moment, as the one-at-a-time loop would. accept(prim, hit) returns true to
+// stop (any-hit).
+template <class Accept>
+bool triangleLeaf(const TriangleGroup* group, std::uint32_t groups, const WatertightRay& r, const float& tmax,
+                  Accept&& accept) {
+    const __m128 sx = _mm_set1_ps(r.sx), sy = _mm_set1_ps(r.sy), sz = _mm_set1_ps(r.sz), zero = _mm_setzero_ps();
+    const __m128 ox = _mm_set1_ps(r.org[r.kx]), oy = _mm_set1_ps(r.org[r.ky]), oz = _mm_set1_ps(r.org[r.kz]);
+    for (const TriangleGroup* g = group; g != group + groups; ++g) {
+        // Corner c relative to the origin, sheared: (x - sx z, y - sy z) and sz z.
+        __m128 x[3], y[3], z[3];
+        for (int c = 0; c < 3; ++c) {
+            const __m128 cz = _mm_sub_ps(_mm_load_ps(g->corner[c][r.kz]), oz);
+            x[c] = _mm_sub_ps(_mm_sub_ps(_mm_load_ps(g->corner[c][r.kx]), ox), _mm_mul_ps(sx, cz));
+            y[c] = _mm_sub_ps(_mm_sub_ps(_mm_load_ps(g->corner[c][r.ky]), oy), _mm_mul_ps(sy, cz));
+            z[c] = _mm_mul_ps(sz, cz);
+        }
+        const __m128 u = _mm_sub_ps(_mm_mul_ps(x[2], y[1]), _mm_mul_ps(y[2], x[1]));
+        const __m128 v = _mm_sub_ps(_mm_mul_ps(x[0], y[2]), _mm_mul_ps(y[0], x[2]));
+        const __m128 w = _mm_sub_ps(_mm_mul_ps(x[1], y[0]), _mm_mul_ps(y[1], x[0]));
+        // Lanes that can still hit: no two edge functions of opposite signs, and not padding or
+        // collinear. Redoing an exact zero in double cannot save a lane dropped here: rounding is
+        // monotonic, so a nonzero float difference of products has its exact value's sign.
+        const __m128 negative = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(u, zero), _mm_cmplt_ps(v, zero)), _mm_cmplt_ps(w, zero));
+        const __m128 positive = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(u, zero), _mm_cmpgt_ps(v, zero)), _mm_cmpgt_ps(w, zero));
+        int lanes = static_cast<int>(g->lanes) & ~_mm_movemask_ps(_mm_and_ps(negative, positive));
+        if (!lanes) continue;
+        alignas(16) float U[4], V[4], W[4], X[3][4], Y[3][4], Z[3][4];
+        _mm_store_ps(U, u), _mm_store_ps(V, v), _mm_store_ps(W, w);
+        for (int c = 0; c < 3; ++c) _mm_store_ps(X[c], x[c]), _mm_store_ps(Y[c], y[c]), _mm_store_ps(Z[c], z[c]);
+        while (lanes) {
+            const int k = std::countr_zero(static_cast<unsigned>(lanes));
+            lanes &= lanes - 1;
+            if (U[k] == 0.0f || V[k] == 0.0f || W[k] == 0.0f)
+                detail::edgeFunctionsDouble(X[0][k], Y[0][k], X[1][k], Y[1][k], X[2][k], Y[2][k], U[k], V[k], W[k]);
+            PrimHit h;
+            if (watertightDistance(U[k], V[k], W[k], Z[0][k], Z[1][k], Z[2][k], tmax, h) && accept(g->prim[k], h))
+                return true;
+        }
+    }
+    return false;
+}
+
 // The ray enters object space in double and is rounded once: float dot products would lose
 // digits to cancellation (a far origin against a large translation), and t inherits that error.
 glm::vec3 transformPoint(const glm::vec4 rows[3], const glm::vec3& p) {
@@ -177,21 +225,28 @@ bool trace(const SceneBvh& bvh, const Ray& ray, Hit* out) {
             const NodeRay objectRay = identity ? worldRay : NodeRay(o, d);
             const WatertightRay wr(o, d);
             bool stop = false;
+            // A primitive's hit: true ends the walk (any-hit).
+            const auto accept = [&](std::uint32_t p, const PrimHit& h) {
+                if constexpr (AnyHit) {
+                    found = stop = true;
+                    return true;
+                } else {
+                    // The kernels' rule for hits whose distances differ by rounding only
+                    // (shaders/shared/hit_order.h); tmax becomes the end of the best's bucket.
+                    if (found && !gpu::hitWins(h.t, i, p, out->t, out->instance, out->prim)) return false;
+                    found = true;
+                    tmax = std::min(gpu::hitBucketLimit(h.t), ray.tmax);
+                    *out = {h.t, i, p, h.u, h.v, h.face};
+                    return false;
+                }
+            };
             walk(bvh.cpu.nodes, bvh.cpu.groupRoots[gpu::instanceGroup(inst.info)], objectRay, tmax, [&](std::uint32_t first, std::uint32_t n) {
+                const std::uint32_t group = bvh.cpu.triangles.leafGroup[first];
+                if (group != TriangleGroups::kNone)
+                    return triangleLeaf(&bvh.cpu.triangles.groups[group], (n + 3) / 4, wr, tmax, accept);
                 for (std::uint32_t p = first; p < first + n; ++p) {
                     PrimHit h;
-                    if (!intersectPrim(bvh.prims[p], wr, o, d, tmax, h)) continue;
-                    if constexpr (AnyHit) {
-                        found = stop = true;
-                        return true;
-                    } else {
-                        // The kernels' rule for hits whose distances differ by rounding only
-                        // (shaders/shared/hit_order.h); tmax becomes the end of the best's bucket.
-                        if (found && !gpu::hitWins(h.t, i, p, out->t, out->instance, out->prim)) continue;
-                        found = true;
-                        tmax = std::min(gpu::hitBucketLimit(h.t), ray.tmax);
-                        *out = {h.t, i, p, h.u, h.v, h.face};
-                    }
+                    if (intersectPrim(bvh.prims[p], wr, o, d, tmax, h) && accept(p, h)) return true;
                 }
                 return false;
             });

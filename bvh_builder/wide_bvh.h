@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "triangle_groups.h"
+
 namespace vkrt::bvh {
 
 struct alignas(64) WideNode {
@@ -27,6 +29,8 @@ struct WideBvh {
     // Per instance: its transform is exactly the identity, so rays enter its group unchanged
     // (saves the ray transform, which a single-mesh scene would otherwise pay on every ray).
     std::vector<std::uint8_t> identity;
+    // The leaves of two or more triangles, four triangles per SSE test.
+    TriangleGroups triangles;
     // Built at all (BuildOptions::cpuTraversal): a scene without instances has no nodes either way,
     // and traversing a BVH built for the GPU only must fail loudly, not report no hits.
     bool built = false;

@@ -2,7 +2,7 @@
 """Alternating A/B runs of two vkrt builds, or of one build with two kernel directories: the
 measurement behind the before -> after figures in docs/lab/ and the commit messages.
 
-    # renders: the GPU render time vkrt prints, per scene
+    # renders: the GPU render time vkrt prints, per scene (--device cpu: the CPU reference's)
     tools/ab_compare.py renders --a /tmp/old/build/vkrt --b build/vkrt [--pairs 4] [--size 400] [--rpp 16] \\
         ../shared/scenes/upstream/pt_objects.xml ../shared/scenes/upstream/threeEggs.xml
     # the same binary, two copies of shaders/ (edit B, keep A): --a-args / --b-args go to each run
@@ -39,8 +39,8 @@ def run(command):
 
 
 def render_seconds(binary, extra, scene, args, output):
-    # --device gpu: the default, auto, renders on the CPU reference where lavapipe is the only device.
-    command = [binary, scene, "-w", str(args.size), "-h", str(args.size), "-r", str(args.rpp), "--device", "gpu",
+    # --device gpu by default: auto renders on the CPU reference where lavapipe is the only device.
+    command = [binary, scene, "-w", str(args.size), "-h", str(args.size), "-r", str(args.rpp), "--device", args.device,
                "-o", output] + extra
     text = run(command)
     m = RENDER_TIME.search(text)
@@ -75,6 +75,8 @@ def main():
     parser.add_argument("--pairs", type=int, default=4, help="A/B pairs per input (default 4)")
     parser.add_argument("--size", type=int, default=400, help="renders: image width and height (default 400)")
     parser.add_argument("--rpp", type=int, default=16, help="renders: samples per pixel (default 16)")
+    parser.add_argument("--device", choices=["gpu", "cpu"], default="gpu",
+                        help="renders: the device rendering (default gpu; cpu times the CPU reference)")
     parser.add_argument("--rounds", type=int, default=4, help="rays: timed rounds per run (default 4)")
     parser.add_argument("--rays-size", type=int, nargs=3, default=[512, 512, 4], metavar=("W", "H", "SPP"),
                         help="rays: the camera's image and samples per pixel (default 512 512 4, the peer's)")
