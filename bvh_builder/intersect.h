@@ -35,10 +35,11 @@ struct WatertightRay {
         kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
         kx = (kz + 1) % 3;
         ky = (kx + 1) % 3;
-        if (d[kz] < 0.0f) std::swap(kx, ky);  // keeps the winding, so U, V, W keep their meaning
-        sx = d[kx] / d[kz];
-        sy = d[ky] / d[kz];
-        sz = 1.0f / d[kz];
+        const float dv[3] = {d.x, d.y, d.z};  // an array: glm indexes by a runtime axis with branches
+        if (dv[kz] < 0.0f) std::swap(kx, ky);  // keeps the winding, so U, V, W keep their meaning
+        sx = dv[kx] / dv[kz];
+        sy = dv[ky] / dv[kz];
+        sz = 1.0f / dv[kz];
     }
 };
 

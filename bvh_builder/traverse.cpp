@@ -217,9 +217,10 @@ bool trace(const SceneBvh& bvh, const Ray& ray, Hit* out) {
     const NodeRay worldRay(ray.origin, ray.dir);
     const auto instances = [&](std::uint32_t instanceIndex, std::uint32_t count) {
         for (std::uint32_t i = instanceIndex; i < instanceIndex + count; ++i) {
-            gpu::Instance posed;
-            const gpu::Instance& inst = instanceAtTime(bvh, i, ray.time, posed);
+            // An identity instance never moves (wide_bvh.h): no pose to look up.
             const bool identity = bvh.cpu.identity[i] != 0;
+            gpu::Instance posed;
+            const gpu::Instance& inst = identity ? bvh.instances[i] : instanceAtTime(bvh, i, ray.time, posed);
             const glm::vec3 o = identity ? ray.origin : transformPoint(inst.worldToObject, ray.origin);
             const glm::vec3 d = identity ? ray.dir : transformVector(inst.worldToObject, ray.dir);
             const NodeRay objectRay = identity ? worldRay : NodeRay(o, d);

@@ -26,8 +26,9 @@ struct WideBvh {
     std::vector<WideNode> nodes;
     std::vector<std::uint32_t> groupRoots;  // per geometry group
     std::uint32_t topRoot = 0;
-    // Per instance: its transform is exactly the identity, so rays enter its group unchanged
-    // (saves the ray transform, which a single-mesh scene would otherwise pay on every ray).
+    // Per instance: its transform is exactly the identity and it does not move, so rays enter its
+    // group unchanged (saves the ray transform, which a single-mesh scene would otherwise pay on
+    // every ray, and the pose lookup).
     std::vector<std::uint8_t> identity;
     // The leaves of two or more triangles, four triangles per SSE test.
     TriangleGroups triangles;
