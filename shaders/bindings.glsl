@@ -88,7 +88,8 @@ float frameShutterClose() { return frame.shutter.y; }
 uint frameWidth() { return frame.image.x; }
 uint frameHeight() { return frame.image.y; }
 uint frameCameraType() { return frame.image.z; }
-uint frameFinalRaysDark() { return frame.image.w; }  // FINAL_*_DARK bits
+uint frameFinalRaysDark() { return frame.image.w; }  // FINAL_*_DARK bits (and PATH_DIELECTRIC_ONE_BRANCH)
+bool frameDielectricOneBranch() { return (frame.image.w & PATH_DIELECTRIC_ONE_BRANCH) != 0u; }
 uint frameSampler() { return frame.sampling.x; }
 uint frameLightSamples() { return frame.sampling.z; }
 uint frameGlossSamples() { return frame.sampling.w; }

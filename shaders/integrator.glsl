@@ -155,11 +155,20 @@ void emitDielectric(inout PathQueue q, PathRay ray, Surface s, Material m, float
             refracted = normalize(ratio * ray.dir + (ratio * cosI - cosT) * n);
         }
     }
-    if (F > 0.0) {
-        vec3 r = reflect(ray.dir, n);
-        emitRay(q, offsetTowards(s, r), r, weight * F, ray.depth + 1u, 0.0);
+    // A path-traced scene continues one branch, reflection with probability F, each carrying the
+    // whole weight (F / F): the same expectation as both branches, at the cost of one path.
+    bool reflects = F > 0.0, refracts = F < 1.0;
+    vec3 reflectedWeight = weight * F, refractedWeight = weight * (1.0 - F);
+    if (HAS_DIFFUSE && frameDielectricOneBranch() && reflects && refracts) {
+        reflects = sample1D(samplerKind(), frame.pixelGrid, key.pixel, key.index, dimRoulette(ray.depth), key.seed) < F;
+        refracts = !reflects;
+        reflectedWeight = refractedWeight = weight;
     }
-    if (F < 1.0) {
+    if (reflects) {
+        vec3 r = reflect(ray.dir, n);
+        emitRay(q, offsetTowards(s, r), r, reflectedWeight, ray.depth + 1u, 0.0);
+    }
+    if (refracts) {
         float roughness = materialRoughness(m);
         if (HAS_TRANSLUCENCY && roughness > 0.0) {
             // Glossy translucency: the refracted direction perturbed in its (U, V) basis, one
@@ -168,7 +177,7 @@ void emitDielectric(inout PathQueue q, PathRay ray, Surface s, Material m, float
             refracted = glossyDirection(refracted, roughness, u);
             if (dot(refracted, n) >= 0.0) return;
         }
-        emitRay(q, offsetTowards(s, refracted), refracted, weight * (1.0 - F), ray.depth + 1u, 0.0);
+        emitRay(q, offsetTowards(s, refracted), refracted, refractedWeight, ray.depth + 1u, 0.0);
     }
 }
 

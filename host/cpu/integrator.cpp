@@ -328,17 +328,29 @@ glm::vec3 Integrator::dielectric(const bvh::Ray& ray, const bvh::Hit& hit, const
 
     glm::vec3 reflected(0.0f), refracted(0.0f);
     bool traced = false;
+    // A path-traced scene continues one branch, reflection with probability f, each carrying the
+    // whole weight (f / f): the same expectation as both, at the cost of one path (RENDERING.md §6).
+    bool reflects = f > 0.0f, refracts = f < 1.0f;
+    glm::vec3 reflectedWeight = here * f, refractedWeight = here * (1.0f - f);
+    float reflectedShare = f, refractedShare = 1.0f - f;
     // Neither branch is traced where it would end at the maximum depth and find no light (final_rays.h).
     if (depth < ctx_.maxDepth && (depth + 1 < ctx_.maxDepth || ctx_.finalRays.reflectionSeesLight)) {
-        if (worthTracing(here * f)) {
+        if (ctx_.dielectricOneBranch && reflects && refracts) {
+            reflects = sampling::sample1D(ctx_.sampler, ctx_.pixelGrid, key.pixel, key.sample,
+                                          sampling::dimRoulette(static_cast<std::uint32_t>(depth)), key.seed) < f;
+            refracts = !reflects;
+            reflectedWeight = refractedWeight = here;
+            reflectedShare = refractedShare = 1.0f;
+        }
+        if (reflects && worthTracing(reflectedWeight)) {
             ++counts_.reflection;
             bvh::Ray next;
             next.dir = mirrorDirection(ray.dir, n);
             next.origin = offsetRayOrigin(sp.position, sideOf(sp.geometricNormal, next.dir), sp.errorMagnitude);
-            reflected = trace(next, depth + 1, here * f, key);
+            reflected = trace(next, depth + 1, reflectedWeight, key);
             traced = true;
         }
-        if (worthTracing(here * (1.0f - f))) {
+        if (refracts && worthTracing(refractedWeight)) {
             bvh::Ray next;
             next.dir = refractDirection(ray.dir, n, n1, n2);
             bool transmits = true;
@@ -354,7 +366,7 @@ glm::vec3 Integrator::dielectric(const bvh::Ray& ray, const bvh::Hit& hit, const
             if (transmits) {
                 ++counts_.refraction;
                 next.origin = offsetRayOrigin(sp.position, sideOf(sp.geometricNormal, next.dir), sp.errorMagnitude);
-                refracted = trace(next, depth + 1, here * (1.0f - f), key);
+                refracted = trace(next, depth + 1, refractedWeight, key);
                 traced = true;
             }
         }
@@ -362,7 +374,7 @@ glm::vec3 Integrator::dielectric(const bvh::Ray& ray, const bvh::Hit& hit, const
     // No branch traced: no light, as in the kernel, where such a hit emits no ray (transmittance
     // times 0 would be NaN where an attenuation above 1 has overflowed it).
     if (!traced) return glm::vec3(0.0f);
-    return transmittance * (f * reflected + (1.0f - f) * refracted);
+    return transmittance * (reflectedShare * reflected + refractedShare * refracted);
 }
 
 }  // namespace vkrt::cpu

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "sampling.h"
+#include "used_shaders.h"
 
 namespace vkrt::cpu {
 
@@ -48,6 +49,7 @@ RenderContext makeRenderContext(const Scene& scene, const SceneAccel& accel, con
     ctx.seed = options.seed;
     ctx.maxDepth = options.maxDepth;
     ctx.finalRays = finalRays(scene, options);
+    ctx.dielectricOneBranch = pathTraced(scene);
     ctx.samplesPerPixel = static_cast<unsigned>(options.samplesPerPixel);
     ctx.lightSamples = static_cast<unsigned>(options.lightSamples);
     ctx.glossSamples = static_cast<unsigned>(options.glossSamples);

@@ -31,6 +31,7 @@ struct RenderContext {
     unsigned seed = 0;
     int maxDepth = 4;
     FinalRays finalRays;               // which rays ending at maxDepth can bring light (final_rays.h)
+    bool dielectricOneBranch = false;  // a dielectric hit continues one branch (used_shaders.h pathTraced)
     unsigned samplesPerPixel = 1;
     unsigned lightSamples = 1;         // k per area light per pixel sample
     unsigned glossSamples = 1;         // g per glossy reflection per pixel sample

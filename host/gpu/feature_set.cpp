@@ -4,6 +4,7 @@
 #include <set>
 
 #include "top_level.h"
+#include "used_shaders.h"
 
 namespace vkrt {
 
@@ -19,19 +20,12 @@ std::uint32_t pathStack(std::uint32_t maxDepth, const RenderOptions& options) {
 // the kernel. They are not free when unused: lavapipe runs every statement for all 8 lanes whatever
 // the branches decide, and a store to the per-lane indexed stack is a per-lane loop of masked
 // stores, at each push site (integrator.glsl, host/gpu/README.md).
+// A dielectric emits two rays only where no Diffuse surface is rendered: with one, it continues
+// one branch (used_shaders.h pathTraced, the frame's PATH_DIELECTRIC_ONE_BRANCH).
 std::uint32_t scenePathStack(const FeatureSet& f, const RenderOptions& options) {
     const bool glossFanOut = f.reflection && f.gloss && options.glossSamples > 1;
-    return (f.dielectric || glossFanOut) ? pathStack(f.maxDepth, options) : 0u;
-}
-
-// Shader indices reachable from what is rendered: loose and mesh shapes, and instanced
-// prototypes under their instance's override. Unused <shader> elements switch nothing on.
-std::set<int> usedShaders(const Scene& scene) {
-    std::set<int> used;
-    for (const Shape& shape : scene.shapes) used.insert(shape.shader);
-    for (const Instance& instance : scene.instances)
-        used.insert(instance.shaderOverride >= 0 ? instance.shaderOverride : scene.prototypes.at(instance.prototype).shader);
-    return used;
+    const bool dielectricSplits = f.dielectric && !f.diffuse;
+    return (dielectricSplits || glossFanOut) ? pathStack(f.maxDepth, options) : 0u;
 }
 
 // Which primitive kinds the BVH holds and whether it has a top level to walk.

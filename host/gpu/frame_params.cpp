@@ -9,6 +9,7 @@
 #include "environment_distribution.h"
 #include "final_rays.h"
 #include "sampling.h"
+#include "used_shaders.h"
 
 namespace vkrt {
 
@@ -55,7 +56,8 @@ gpu::FrameParams makeFrameParams(const Scene& scene, const SceneAccel& accel, co
     f.image = glm::uvec4(static_cast<std::uint32_t>(options.width), static_cast<std::uint32_t>(options.height),
                          camera.type == CameraType::Orthographic ? gpu::CAMERA_ORTHOGRAPHIC : gpu::CAMERA_PERSPECTIVE, 0u);
     const FinalRays finals = finalRays(scene, options);
-    f.image.w = (finals.bounceSeesLight ? 0u : gpu::FINAL_BOUNCE_DARK) | (finals.reflectionSeesLight ? 0u : gpu::FINAL_REFLECTION_DARK);
+    f.image.w = (finals.bounceSeesLight ? 0u : gpu::FINAL_BOUNCE_DARK) | (finals.reflectionSeesLight ? 0u : gpu::FINAL_REFLECTION_DARK) |
+                (pathTraced(scene) ? gpu::PATH_DIELECTRIC_ONE_BRANCH : 0u);
     f.sampling = glm::uvec4(static_cast<std::uint32_t>(options.sampler), rpp, lightSamples, glossSamples);
     f.scene = glm::uvec4(options.seed, static_cast<std::uint32_t>(options.maxDepth), static_cast<std::uint32_t>(scene.lights.size()),
                          accel.bvh.topRoot);

@@ -303,6 +303,9 @@ VKRT_CONST uint CAMERA_ORTHOGRAPHIC = 1u;
 // at the maximum depth finds no light there, so it is not traced (the image is the same).
 VKRT_CONST uint FINAL_BOUNCE_DARK = 1u;
 VKRT_CONST uint FINAL_REFLECTION_DARK = 2u;
+// FrameParams::image.w, too: a Diffuse surface is rendered (used_shaders.h pathTraced), so a
+// dielectric hit continues one branch, reflection with probability F (docs/RENDERING.md §6).
+VKRT_CONST uint PATH_DIELECTRIC_ONE_BRANCH = 4u;
 VKRT_CONST uint SAMPLER_JITTERED = 0u;
 VKRT_CONST uint SAMPLER_REGULAR = 1u;
 VKRT_CONST uint SAMPLER_RANDOM = 2u;
@@ -332,7 +335,8 @@ struct FrameParams {
     vec4 cameraW;         // xyz unit backward vector (-gaze), w = focal length
     vec4 background;      // rgb, w = focus distance (0 for a pinhole)
     uvec4 image;          // x width, y height, z camera type, w FINAL_*_DARK bits: rays ending at
-                          // the maximum depth that cannot bring light (host/lighting/final_rays.h)
+                          // the maximum depth that cannot bring light (host/lighting/final_rays.h),
+                          // and PATH_DIELECTRIC_ONE_BRANCH
     uvec4 sampling;       // x sampler, y samples per pixel, z light samples, w gloss samples
     uvec4 scene;          // x seed, y max depth, z light count, w top-level root node
     uvec4 pixelGrid;      // SampleGrid of the rpp pixel samples (see sampling.h)

@@ -80,8 +80,9 @@ VKRT_FN uint dimTranslucency(uint depth) { return ((depth + 1u) << 16u) | 0xffff
 // there (shape emitters take light ordinals after the area lights: dimLight).
 VKRT_FN uint dimBounce(uint depth) { return ((depth + 1u) << 16u) | 0xfffeu; }
 VKRT_FN uint dimEnvironment(uint depth) { return ((depth + 1u) << 16u) | 0xfffdu; }
-// Russian roulette of the Diffuse bounce leaving a hit of this depth (its x only), and the choice
-// of the shape emitter each light sample there goes to (its x only; docs/RENDERING.md §2).
+// Russian roulette of the Diffuse bounce leaving a hit of this depth, or the branch a dielectric
+// hit of this depth continues in a path-traced scene (its x only: a hit is one or the other), and
+// the choice of the shape emitter each light sample there goes to (its x only; docs/RENDERING.md §2).
 VKRT_FN uint dimRoulette(uint depth) { return ((depth + 1u) << 16u) | 0xfffcu; }
 VKRT_FN uint dimEmitterChoice(uint depth) { return ((depth + 1u) << 16u) | 0xfffbu; }
 // Light ordinals 0 .. MAX_LIGHT_ORDINALS - 1 (area lights, then shape emitters) have their own

@@ -179,6 +179,42 @@ TEST(PathTracing, TheWhiteFurnaceIsExactInEverySingleSampleOfTheReportedRender) 
         for (Estimator e : kAllEstimators) expectFurnace(glm::vec3(1.0f), depth, e, 128, 1, 1);
 }
 
+// ---- glass in a path-traced scene ----
+// Bug targeted: a branch chosen with probability F (or 1 - F) whose weight is still multiplied by
+// it (the glass comes out F L or (1 - F) L instead of L), a path-traced scene that still splits at
+// every glass hit (twice the rays), or a Whitted scene (no Diffuse surface) that stops splitting.
+// A glass sphere (eta 1.5, no absorption) in the uniform sky: every path through it leaves to the
+// sky with weight exactly 1, so every pixel wholly on it is the sky to the bit, in every sample;
+// a tiny white Diffuse sphere far behind the camera makes the scene path-traced.
+TEST(PathTracing, GlassInAPathTracedSceneContinuesOneBranchAndStaysExactInTheFurnace) {
+    const glm::vec3 sky(0.5f, 1.0f, 2.0f);
+    const int n = 32;
+    Scene scene = furnace(glm::vec3(1.0f), sky);
+    scene.shapes[0].shader = add(scene, dielectric(1.5f));  // the furnace's sphere, now glass
+    Scene pathTraced = scene;
+    pathTraced.shapes.push_back(sphere({0.0f, 0.0f, 60.0f}, 0.01f, add(pathTraced, diffuse(glm::vec3(1.0f)))));
+    Scene whitted = scene;
+    whitted.shapes.push_back(sphere({0.0f, 0.0f, 60.0f}, 0.01f, add(whitted, lambertian(glm::vec3(1.0f)))));
+    RenderOptions options = pathOptions(n, 4, 16, Estimator::MisPower);
+    const BothImages one = renderBoth(pathTraced, options);
+    for (const auto& [device, image] : {std::pair{"CPU", &one.cpu}, std::pair{"GPU", &one.gpu}}) {
+        int inside = 0, wrong = 0;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)
+                if (furnaceCoverage(i, j, n) == 1) ++inside, wrong += image->at(i, j) != sky;
+        EXPECT_GT(inside, n * n / 4);
+        EXPECT_EQ(wrong, 0) << device << ": pixels wholly on the glass that are not the sky exactly";
+    }
+    expectDevicesAgree(one, "glass in the furnace, path-traced");
+    // The same glass where nothing is Diffuse splits at every hit: at least twice the glass rays
+    // (a camera hit alone makes two, a path-traced one makes one).
+    const BothImages both = renderBoth(whitted, options);
+    const std::uint64_t oneRays = one.cpuStats.reflectionRays + one.cpuStats.refractionRays;
+    const std::uint64_t bothRays = both.cpuStats.reflectionRays + both.cpuStats.refractionRays;
+    EXPECT_GT(oneRays, 0u);
+    EXPECT_GE(bothRays, 2 * oneRays) << "path-traced glass rays " << oneRays << ", Whitted " << bothRays;
+}
+
 // ---- Russian roulette ----
 // Bug targeted: a dark path cut off instead of played for (the old 1/1024 cut-off: these pixels
 // were black), a survivor not divided by its probability (2^10 times too dark), or roulette keyed to
