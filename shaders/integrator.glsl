@@ -1,7 +1,8 @@
 // The radiance of one camera sample: Whitted-style recursion with Cook's distribution effects and
 // the course's path-traced Diffuse, written as a loop over an explicit stack of pending rays (GLSL
-// has no recursion). Only dielectrics (two branches) and depth-0 gloss samples push; everything
-// else (a mirror's reflection, a Diffuse bounce) continues in place,
+// has no recursion). Only dielectrics (two branches, in a scene without Diffuse surfaces: a
+// path-traced scene's glass continues one) and depth-0 gloss samples push; everything else (a
+// mirror's reflection, a Diffuse bounce) continues in place,
 // so the stack never holds more than MAX_DEPTH + glossSamples entries (PATH_STACK_SIZE), and a
 // scene with neither has no stack at all (PATH_STACK_SIZE = 0).
 #ifndef VKRT_INTEGRATOR_GLSL
