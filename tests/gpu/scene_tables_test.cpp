@@ -210,15 +210,32 @@ TEST(FrameParams, CarryTheCamerasUpVector) {
 TEST(FrameParams, SayWhichRaysAtTheMaximumDepthCannotBringLight) {
     test::TinyScene tiny;
     RenderOptions o = test::smallRender(8, 8, 1);
-    EXPECT_EQ(makeFrameParams(tiny.scene, tiny.accel, o).image.w, 0u);  // its Lambertian is lit at every depth
+    const auto finalBits = [&] {
+        return makeFrameParams(tiny.scene, tiny.accel, o).image.w & (gpu::FINAL_BOUNCE_DARK | gpu::FINAL_REFLECTION_DARK);
+    };
+    EXPECT_EQ(finalBits(), 0u);  // its Lambertian is lit at every depth
     tiny.scene.shaders[0].diffuseBounce = true;  // Diffuse: black at the maximum depth
     tiny.scene.background = glm::vec3(0.0f);
-    EXPECT_EQ(makeFrameParams(tiny.scene, tiny.accel, o).image.w, gpu::FINAL_BOUNCE_DARK | gpu::FINAL_REFLECTION_DARK);
+    EXPECT_EQ(finalBits(), gpu::FINAL_BOUNCE_DARK | gpu::FINAL_REFLECTION_DARK);
     tiny.scene.emitters.emplace_back();
     o.estimator = Estimator::Nee;  // light samples alone find the emitter; mirror rays see it
-    EXPECT_EQ(makeFrameParams(tiny.scene, tiny.accel, o).image.w, gpu::FINAL_BOUNCE_DARK);
+    EXPECT_EQ(finalBits(), gpu::FINAL_BOUNCE_DARK);
     o.estimator = Estimator::MisPower;
-    EXPECT_EQ(makeFrameParams(tiny.scene, tiny.accel, o).image.w, 0u);
+    EXPECT_EQ(finalBits(), 0u);
+}
+
+// RENDERING.md §6: glass continues one branch exactly where a rendered surface is Diffuse (the
+// bit the kernel reads, and the CPU's pathTraced, from one function).
+TEST(FrameParams, SayThatGlassContinuesOneBranchWhereASurfaceIsDiffuse) {
+    test::TinyScene tiny;
+    const RenderOptions o = test::smallRender(8, 8, 1);
+    EXPECT_EQ(makeFrameParams(tiny.scene, tiny.accel, o).image.w & gpu::PATH_DIELECTRIC_ONE_BRANCH, 0u);
+    tiny.scene.shaders.push_back(tiny.scene.shaders[0]);
+    tiny.scene.shaders.back().diffuseBounce = true;  // a Diffuse shader no shape uses: still Whitted
+    EXPECT_EQ(makeFrameParams(tiny.scene, tiny.accel, o).image.w & gpu::PATH_DIELECTRIC_ONE_BRANCH, 0u);
+    tiny.scene.shaders[0].diffuseBounce = true;
+    EXPECT_EQ(makeFrameParams(tiny.scene, tiny.accel, o).image.w & gpu::PATH_DIELECTRIC_ONE_BRANCH,
+              gpu::PATH_DIELECTRIC_ONE_BRANCH);
 }
 
 TEST(FrameParams, RefusesOptionsTheKernelCannotHonour) {
