@@ -23,9 +23,9 @@ namespace {
 using cpu::Integrator;
 using cpu::RenderContext;
 
-// 16x16 pixels: small enough that two threads stay balanced on a 64x64 image, large enough that
+// 8x8 pixels: small enough that two threads stay balanced on a 96x96 image, large enough that
 // the tile counter is touched rarely.
-constexpr int kTileSize = 16;
+constexpr int kTileSize = 8;
 
 bool isFinite(const glm::vec3& c) { return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z); }
 
