@@ -20,6 +20,7 @@ struct alignas(16) TriangleGroup {
     std::uint32_t lanes = 0;   // bit k: lane k holds a triangle that can be hit (not padding, and not
                                // collinear: the scalar test never reports such a triangle's hit)
 };
+static_assert(sizeof(TriangleGroup) == 176);  // 164 bytes of members, padded to 16 (docs/BVH.md §3)
 
 struct TriangleGroups {
     std::vector<TriangleGroup> groups;  // each leaf's groups are contiguous, ceil(count / 4) of them

@@ -28,7 +28,8 @@ struct FeatureSet {
     bool coolToWarm = true;
     std::uint32_t maxDepth = 4;        // 0 when nothing reflects or refracts, else options.maxDepth
     std::uint32_t pathStackSize = 5;   // pending rays: maxDepth + glossSamples (integrator.glsl); 0 when
-                                       // nothing pushes (no dielectric, no gloss fan-out): no stack code
+                                       // nothing pushes (no dielectric, or glass in a scene with Diffuse
+                                       // surfaces, which continues one branch; no gloss fan-out): no stack code
     bool packedNodes = true;           // the BVH nodes' layout (GpuNodes::packed, node_packing.h)
     std::uint32_t sampler = gpu::SAMPLER_FROM_FRAME;  // the render's SamplerKind, compiled in; the
                                                       // general kernel reads it from the frame

@@ -148,7 +148,8 @@ public:
         });
         rounds += roundsPerSubmission_;
         stats_.dispatches += 1 + roundsPerSubmission_ * (shadows > 0 ? 4 : 2) + (branches_ ? 0 : 1);
-        // A path that branches (a dielectric, gloss samples) may need more rounds than its depth.
+        // A path that branches (a dielectric where nothing is Diffuse, gloss samples) may need more
+        // rounds than its depth.
         while (scene_.status().paths.x != ended_) {
             if (!branches_ || rounds >= kMaxSteps)
                 throw GpuKernelError("the wavefront kernels left " + std::to_string(ended_ - scene_.status().paths.x) +
