@@ -141,10 +141,10 @@ inline bool intersectPrim(const gpu::Primitive& p, const WatertightRay& wr, cons
 // edge function is exactly 0 is redone by the scalar's double fallback. The lanes left are
 // finished one by one in primitive order by the scalar test's own tail (watertightDistance) with
 // the tmax of that moment, as the one-at-a-time loop would. accept(prim, hit) returns true to
-// stop (any-hit).
+// stop (any-hit); the leaf's primitives are [first, first + 4 * groups), padding lanes excluded.
 template <class Accept>
-bool triangleLeaf(const TriangleGroup* group, std::uint32_t groups, const WatertightRay& r, const float& tmax,
-                  Accept&& accept) {
+bool triangleLeaf(const TriangleGroup* group, std::uint32_t groups, std::uint32_t first, const WatertightRay& r,
+                  const float& tmax, Accept&& accept) {
     const __m128 sx = _mm_set1_ps(r.sx), sy = _mm_set1_ps(r.sy), sz = _mm_set1_ps(r.sz), zero = _mm_setzero_ps();
     const __m128 ox = _mm_set1_ps(r.org[r.kx]), oy = _mm_set1_ps(r.org[r.ky]), oz = _mm_set1_ps(r.org[r.kz]);
     for (const TriangleGroup* g = group; g != group + groups; ++g) {
@@ -175,8 +175,8 @@ bool triangleLeaf(const TriangleGroup* group, std::uint32_t groups, const Watert
             if (U[k] == 0.0f || V[k] == 0.0f || W[k] == 0.0f)
                 detail::edgeFunctionsDouble(X[0][k], Y[0][k], X[1][k], Y[1][k], X[2][k], Y[2][k], U[k], V[k], W[k]);
             PrimHit h;
-            if (watertightDistance(U[k], V[k], W[k], Z[0][k], Z[1][k], Z[2][k], tmax, h) && accept(g->prim[k], h))
-                return true;
+            const auto prim = first + 4u * static_cast<std::uint32_t>(g - group) + static_cast<std::uint32_t>(k);
+            if (watertightDistance(U[k], V[k], W[k], Z[0][k], Z[1][k], Z[2][k], tmax, h) && accept(prim, h)) return true;
         }
     }
     return false;
@@ -244,7 +244,7 @@ bool trace(const SceneBvh& bvh, const Ray& ray, Hit* out) {
             walk(bvh.cpu.nodes, bvh.cpu.groupRoots[gpu::instanceGroup(inst.info)], objectRay, tmax, [&](std::uint32_t first, std::uint32_t n) {
                 const std::uint32_t group = bvh.cpu.triangles.leafGroup[first];
                 if (group != TriangleGroups::kNone)
-                    return triangleLeaf(&bvh.cpu.triangles.groups[group], (n + 3) / 4, wr, tmax, accept);
+                    return triangleLeaf(&bvh.cpu.triangles.groups[group], (n + 3) / 4, first, wr, tmax, accept);
                 for (std::uint32_t p = first; p < first + n; ++p) {
                     PrimHit h;
                     if (intersectPrim(bvh.prims[p], wr, o, d, tmax, h) && accept(p, h)) return true;

@@ -37,7 +37,6 @@ TriangleGroups buildTriangleGroups(const std::vector<gpu::Primitive>& prims, con
                                             real ? corner(prims[p].c) : glm::vec3(0.0f)};
                     for (int c = 0; c < 3; ++c)
                         for (int axis = 0; axis < 3; ++axis) g.corner[c][axis][lane] = v[c][axis];
-                    g.prim[lane] = real ? p : 0u;
                     if (real && !detail::collinear(v[0], v[1], v[2])) g.lanes |= 1u << lane;
                 }
             }

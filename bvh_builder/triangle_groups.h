@@ -15,12 +15,13 @@ namespace vkrt::bvh {
 struct WideNode;
 
 struct alignas(16) TriangleGroup {
-    float corner[3][3][4];     // [corner][axis][lane]: corner v0, v1, v2 of lane's triangle
-    std::uint32_t prim[4];     // the lane's index into SceneBvh::prims
+    // [corner][axis][lane]: corner v0, v1, v2 of the lane's triangle, which is SceneBvh::prims
+    // [first + 4 g + lane] for the leaf's first primitive `first` and the group's place g in the leaf.
+    float corner[3][3][4];
     std::uint32_t lanes = 0;   // bit k: lane k holds a triangle that can be hit (not padding, and not
                                // collinear: the scalar test never reports such a triangle's hit)
 };
-static_assert(sizeof(TriangleGroup) == 176);  // 164 bytes of members, padded to 16 (docs/BVH.md §3)
+static_assert(sizeof(TriangleGroup) == 160);  // 148 bytes of members, padded to 16 (docs/BVH.md §3)
 
 struct TriangleGroups {
     std::vector<TriangleGroup> groups;  // each leaf's groups are contiguous, ceil(count / 4) of them

@@ -331,7 +331,6 @@ glm::vec3 Integrator::dielectric(const bvh::Ray& ray, const bvh::Hit& hit, const
     // A path-traced scene continues one branch, reflection with probability f, each carrying the
     // whole weight (f / f): the same expectation as both, at the cost of one path (RENDERING.md §6).
     bool reflects = f > 0.0f, refracts = f < 1.0f;
-    glm::vec3 reflectedWeight = here * f, refractedWeight = here * (1.0f - f);
     float reflectedShare = f, refractedShare = 1.0f - f;
     // Neither branch is traced where it would end at the maximum depth and find no light (final_rays.h).
     if (depth < ctx_.maxDepth && (depth + 1 < ctx_.maxDepth || ctx_.finalRays.reflectionSeesLight)) {
@@ -339,18 +338,17 @@ glm::vec3 Integrator::dielectric(const bvh::Ray& ray, const bvh::Hit& hit, const
             reflects = sampling::sample1D(ctx_.sampler, ctx_.pixelGrid, key.pixel, key.sample,
                                           sampling::dimRoulette(static_cast<std::uint32_t>(depth)), key.seed) < f;
             refracts = !reflects;
-            reflectedWeight = refractedWeight = here;
             reflectedShare = refractedShare = 1.0f;
         }
-        if (reflects && worthTracing(reflectedWeight)) {
+        if (reflects && worthTracing(here * reflectedShare)) {
             ++counts_.reflection;
             bvh::Ray next;
             next.dir = mirrorDirection(ray.dir, n);
             next.origin = offsetRayOrigin(sp.position, sideOf(sp.geometricNormal, next.dir), sp.errorMagnitude);
-            reflected = trace(next, depth + 1, reflectedWeight, key);
+            reflected = trace(next, depth + 1, here * reflectedShare, key);
             traced = true;
         }
-        if (refracts && worthTracing(refractedWeight)) {
+        if (refracts && worthTracing(here * refractedShare)) {
             bvh::Ray next;
             next.dir = refractDirection(ray.dir, n, n1, n2);
             bool transmits = true;
@@ -366,7 +364,7 @@ glm::vec3 Integrator::dielectric(const bvh::Ray& ray, const bvh::Hit& hit, const
             if (transmits) {
                 ++counts_.refraction;
                 next.origin = offsetRayOrigin(sp.position, sideOf(sp.geometricNormal, next.dir), sp.errorMagnitude);
-                refracted = trace(next, depth + 1, refractedWeight, key);
+                refracted = trace(next, depth + 1, here * refractedShare, key);
                 traced = true;
             }
         }

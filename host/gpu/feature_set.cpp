@@ -1,7 +1,6 @@
 #include "feature_set.h"
 
 #include <algorithm>
-#include <set>
 
 #include "top_level.h"
 #include "used_shaders.h"
@@ -12,8 +11,8 @@ namespace {
 
 std::uint32_t pathStack(std::uint32_t maxDepth, const RenderOptions& options) {
     // integrator.glsl: only dielectrics (two branches per level where nothing is Diffuse) and
-    // depth-0 gloss samples push,
-    // so at most maxDepth + glossSamples rays wait; at least one entry keeps the array legal.
+    // depth-0 gloss samples push, so at most maxDepth + glossSamples rays wait; at least one entry
+    // keeps the array legal.
     return std::max<std::uint32_t>(1, maxDepth + static_cast<std::uint32_t>(std::max(options.glossSamples, 1)));
 }
 
