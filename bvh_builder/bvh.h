@@ -44,7 +44,7 @@ struct BuildOptions {
     float traversalCost = 1.0f;  // SAH cost of visiting an inner node, relative to...
     float intersectionCost = 1.0f;  // ...intersecting one primitive (see docs/BVH.md for the measurement)
     int maxBottomDepth = 36;     // node levels of a bottom-level tree (deeper SAH splits become median splits)
-    // Also build SceneBvh::cpu, the 4-wide copy that only the CPU traversal (intersectClosest /
+    // Also build SceneBvh::cpu, the 8-wide copy that only the CPU traversal (intersectClosest /
     // intersectAny) reads: 6-8% of the build at 256K-1M triangles. A caller that only uploads
     // the BVH to the GPU sets this to false; the GPU arrays are the same either way.
     bool cpuTraversal = true;
@@ -59,7 +59,7 @@ struct GroupRange {
 
 struct BuildStats {
     double buildSeconds = 0.0;
-    double cpuCopySeconds = 0.0;  // the part of buildSeconds spent on the CPU's 4-wide copy (0 without it)
+    double cpuCopySeconds = 0.0;  // the part of buildSeconds spent on the CPU's 8-wide copy (0 without it)
     double sahCost = 0.0;         // SAH cost of the bottom levels, summed over groups
     std::size_t nodeCount = 0;
     std::size_t leafCount = 0;
@@ -82,7 +82,7 @@ struct SceneBvh {
                                               // (Instance::info.w: motionTexel)
     std::uint32_t topRoot = 0;                // root node of the top level (over instances)
     BuildStats stats;
-    WideBvh cpu;                              // the same trees, 4-wide, for the CPU traversal only;
+    WideBvh cpu;                              // the same trees, 8-wide, for the CPU traversal only;
                                               // empty if built with BuildOptions::cpuTraversal = false
 };
 
@@ -115,7 +115,7 @@ struct Hit {
 };
 
 // Closest hit with 0 < t < ray.tmax; false if none. Both throw std::logic_error on a BVH built
-// with BuildOptions::cpuTraversal = false (it has no 4-wide copy to traverse).
+// with BuildOptions::cpuTraversal = false (it has no 8-wide copy to traverse).
 bool intersectClosest(const SceneBvh& bvh, const Ray& ray, Hit& hit);
 // Any hit with 0 < t < ray.tmax (shadow rays).
 bool intersectAny(const SceneBvh& bvh, const Ray& ray);

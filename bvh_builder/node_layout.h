@@ -1,7 +1,7 @@
 // The builder's node, bvh::BinaryNode, and reading and writing its two child slots (byte by byte in
 // docs/BVH.md §1). It never reaches a kernel: host/gpu/node_packing turns it into the layout the
 // kernels read (gpu::GpuBvhNode, shaders/shared/device_host.h), and wide_collapse into the CPU's
-// 4-wide copy. Floats are stored as their bit patterns, in the texel order the GPU layout keeps,
+// 8-wide copy. Floats are stored as their bit patterns, in the texel order the GPU layout keeps,
 // so encoding is a bit_cast and decoding gives back exactly the builder's floats.
 #pragma once
 

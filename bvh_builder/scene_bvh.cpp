@@ -104,7 +104,7 @@ void buildGroup(const std::vector<PrimitiveInput>& prims, std::size_t groupIndex
                         });
 }
 
-// The CPU's 4-wide copy (SceneBvh::cpu): every tree counted first, then one allocation, then
+// The CPU's 8-wide copy (SceneBvh::cpu): every tree counted first, then one allocation, then
 // written. groupBlocks / topBlocks: the roots of the subtrees flattened in parallel.
 void buildWideCopy(const std::vector<std::vector<std::uint32_t>>& groupBlocks, const std::vector<std::uint32_t>& topBlocks,
                    const std::vector<InstanceInput>& instances, ThreadPool& pool, SceneBvh& bvh) {

@@ -1,6 +1,6 @@
 // CPU traversal of the two-level BVH: intersectClosest / intersectAny of bvh.h.
-// Ordered depth-first traversal of the 4-wide copy of the trees (SceneBvh::cpu, wide_bvh.h) with a
-// fixed-size stack: at each node the 4 children's boxes are tested at once, leaves are intersected
+// Ordered depth-first traversal of the 8-wide copy of the trees (SceneBvh::cpu, wide_bvh.h) with a
+// fixed-size stack: at each node the 8 children's boxes are tested at once, leaves are intersected
 // at once, the nearest inner child is visited next and the others pushed with their entry
 // distance, so they are skipped if a closer hit has been found by the time they are popped.
 #include <immintrin.h>
@@ -20,26 +20,36 @@ namespace vkrt::bvh {
 
 namespace {
 
-// Enough for any tree the builder makes: a 4-wide node pushes at most 3 entries, and the trees are
-// at most 64 levels deep (scene_bvh.cpp, kMaxTreeDepth).
-constexpr int kStackSize = 3 * 64 + 1;
+// Enough for any tree the builder makes: a wide node pushes at most kWideWidth - 1 entries, and
+// the trees are at most 64 levels deep (scene_bvh.cpp, kMaxTreeDepth).
+constexpr int kStackSize = (kWideWidth - 1) * 64 + 1;
 
-// Slab test of the 4 children of a wide node at once, in SSE (Kay & Kajiya 1986, with each axis's
-// near plane chosen by the sign of the direction as in Williams et al. 2005, so an empty slot,
-// stored as lo = +FLT_MAX > hi = -FLT_MAX, always gives tNear > tFar). Direction components of
-// magnitude below 2^-100 are replaced by +-2^-100: the inverse is then finite, so
-// (plane - origin) * inverse is never 0 * inf = NaN, and the slab of an axis-parallel ray is
-// (-huge, +huge) inside the slab and entirely on one side outside it (conservative at worst).
+// Slab test of a wide node's children at once (Kay & Kajiya 1986, with each axis's near plane
+// chosen by the sign of the direction as in Williams et al. 2005, so an empty slot, stored as
+// lo = +FLT_MAX > hi = -FLT_MAX, always gives tNear > tFar): 8 lanes per AVX instruction, or two
+// SSE halves where the build has no AVX. Direction components of magnitude below 2^-100 are
+// replaced by +-2^-100: the inverse is then finite, so (plane - origin) * inverse is never
+// 0 * inf = NaN, and the slab of an axis-parallel ray is (-huge, +huge) inside the slab and
+// entirely on one side outside it (conservative at worst).
+#if defined(__AVX__)
+using Lanes = __m256;
+inline Lanes broadcast(float x) { return _mm256_set1_ps(x); }
+#else
+using Lanes = __m128;
+inline Lanes broadcast(float x) { return _mm_set1_ps(x); }
+#endif
+static_assert(kWideWidth == 8, "slabs() tests 8 children");
+
 struct NodeRay {
-    __m128 o[3], inv[3];
+    Lanes o[3], inv[3];
     int nearRow[3];  // bounds row of each axis's near plane: lo (2a) or hi (2a + 1)
 
     NodeRay(const glm::vec3& origin, const glm::vec3& dir) {
         for (int a = 0; a < 3; ++a) {
             // -0 counts as positive, as in the box test and the GLSL kernel (RENDERING.md §3).
             const float d = std::abs(dir[a]) < 0x1p-100f ? (dir[a] < 0.0f ? -0x1p-100f : 0x1p-100f) : dir[a];
-            o[a] = _mm_set1_ps(origin[a]);
-            inv[a] = _mm_set1_ps(1.0f / d);
+            o[a] = broadcast(origin[a]);
+            inv[a] = broadcast(1.0f / d);
             nearRow[a] = 2 * a + (d < 0.0f ? 1 : 0);
         }
     }
@@ -50,21 +60,37 @@ struct NodeRay {
 // (Ize 2013, "Robust BVH Ray Traversal", JCGT 2(2)).
 constexpr float kFarScale = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
 
-// 4-bit mask of the children whose box the ray enters within [0, tmax]; tEntry gets the entry
-// distances.
-inline int slab4(const WideNode& node, const NodeRay& r, float tmax, __m128& tEntry) {
-    __m128 tn = _mm_setzero_ps(), tf = _mm_set1_ps(tmax);
+// Mask of the children whose box the ray enters within [0, tmax] (bit k: child k); tEntry gets
+// the entry distances.
+inline int slabs(const WideNode& node, const NodeRay& r, float tmax, float tEntry[kWideWidth]) {
+#if defined(__AVX__)
+    __m256 tn = _mm256_setzero_ps(), tf = _mm256_set1_ps(tmax);
     for (int a = 0; a < 3; ++a) {
-        const __m128 n = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.bounds[r.nearRow[a]]), r.o[a]), r.inv[a]);
-        const __m128 f = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.bounds[r.nearRow[a] ^ 1]), r.o[a]), r.inv[a]);
-        tn = _mm_max_ps(tn, n);
-        tf = _mm_min_ps(tf, f);
+        const __m256 n = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node.bounds[r.nearRow[a]]), r.o[a]), r.inv[a]);
+        const __m256 f = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node.bounds[r.nearRow[a] ^ 1]), r.o[a]), r.inv[a]);
+        tn = _mm256_max_ps(tn, n);
+        tf = _mm256_min_ps(tf, f);
     }
-    tEntry = tn;
-    return _mm_movemask_ps(_mm_cmple_ps(tn, _mm_mul_ps(tf, _mm_set1_ps(kFarScale))));
+    _mm256_store_ps(tEntry, tn);
+    return _mm256_movemask_ps(_mm256_cmp_ps(tn, _mm256_mul_ps(tf, _mm256_set1_ps(kFarScale)), _CMP_LE_OQ));
+#else
+    int mask = 0;
+    for (int half = 0; half < kWideWidth; half += 4) {
+        __m128 tn = _mm_setzero_ps(), tf = _mm_set1_ps(tmax);
+        for (int a = 0; a < 3; ++a) {
+            const __m128 n = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.bounds[r.nearRow[a]] + half), r.o[a]), r.inv[a]);
+            const __m128 f = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.bounds[r.nearRow[a] ^ 1] + half), r.o[a]), r.inv[a]);
+            tn = _mm_max_ps(tn, n);
+            tf = _mm_min_ps(tf, f);
+        }
+        _mm_store_ps(tEntry + half, tn);
+        mask |= _mm_movemask_ps(_mm_cmple_ps(tn, _mm_mul_ps(tf, _mm_set1_ps(kFarScale)))) << half;
+    }
+    return mask;
+#endif
 }
 
-// Walks one 4-wide tree from root; leaf(link, count) intersects a leaf's contents, may lower tmax,
+// Walks one 8-wide tree from root; leaf(link, count) intersects a leaf's contents, may lower tmax,
 // and returns true to stop the walk (any-hit). Hit inner children are visited nearest first; the
 // others wait on the stack with their entry distance and are dropped if a closer hit came first.
 template <class LeafFn>
@@ -79,11 +105,9 @@ void walk(const std::vector<WideNode>& nodes, std::uint32_t root, const NodeRay&
     std::uint32_t current = root;
     for (;;) {
         const WideNode& node = nodes[current];
-        __m128 tv;
-        int mask = slab4(node, ray, tmax, tv);
-        alignas(16) float t[4];
-        _mm_store_ps(t, tv);
-        Entry inner[4];
+        alignas(32) float t[kWideWidth];
+        int mask = slabs(node, ray, tmax, t);
+        Entry inner[kWideWidth];
         int innerCount = 0;
         while (mask) {
             const int k = std::countr_zero(static_cast<unsigned>(mask));
@@ -94,7 +118,7 @@ void walk(const std::vector<WideNode>& nodes, std::uint32_t root, const NodeRay&
                 inner[innerCount++] = {node.link[k], t[k]};
             }
         }
-        // Nearest first: sort the (at most 4) entries by distance, push all but the nearest.
+        // Nearest first: sort the (at most kWideWidth) entries by distance, push all but the nearest.
         for (int i = 1; i < innerCount; ++i)
             for (int j = i; j > 0 && inner[j].t < inner[j - 1].t; --j) std::swap(inner[j], inner[j - 1]);
         int next = -1;

@@ -23,7 +23,7 @@ TriangleGroups buildTriangleGroups(const std::vector<gpu::Primitive>& prims, con
     TriangleGroups out;
     out.leafGroup.assign(prims.size(), TriangleGroups::kNone);
     for (std::uint32_t n = 0; n < bottomNodes; ++n) {
-        for (int k = 0; k < 4; ++k) {
+        for (int k = 0; k < kWideWidth; ++k) {
             const std::uint32_t first = nodes[n].link[k], count = nodes[n].count[k];
             if (count < 2 || !allTriangles(prims, first, count)) continue;
             out.leafGroup[first] = static_cast<std::uint32_t>(out.groups.size());

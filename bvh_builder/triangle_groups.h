@@ -31,7 +31,7 @@ struct TriangleGroups {
     static constexpr std::uint32_t kNone = 0xffffffffu;
 };
 
-// From the bottom levels' 4-wide nodes (nodes[0, bottomNodes); the top level's leaves hold
+// From the bottom levels' 8-wide nodes (nodes[0, bottomNodes); the top level's leaves hold
 // instances, not primitives).
 TriangleGroups buildTriangleGroups(const std::vector<gpu::Primitive>& prims, const WideNode* nodes,
                                    std::uint32_t bottomNodes);

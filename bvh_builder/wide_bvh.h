@@ -1,9 +1,10 @@
-// The CPU traversal's own layout: the same trees as SceneBvh::nodes, collapsed to 4 children per
-// node (each node absorbs the largest inner children of its two-child node until it has 4), with
-// the 4 boxes stored as rows of 4 floats so one SSE instruction per plane tests all children.
+// The CPU traversal's own layout: the same trees as SceneBvh::nodes, collapsed to 8 children per
+// node (each node absorbs the largest inner children of its two-child node until it has 8), with
+// the 8 boxes stored as rows of 8 floats so one AVX instruction per plane tests all children (two
+// SSE instructions in a build without AVX).
 // The GPU's nodes are made from the two-child BinaryNode instead (node_layout.h,
 // host/gpu/node_packing); this layout never leaves the CPU.
-// Measured on this machine: see docs/BVH.md (CPU traversal, BVH2 vs. 4-wide).
+// Measured on this machine: see docs/BVH.md §3 (CPU traversal: 8-wide against 4-wide).
 #pragma once
 
 #include <cstdint>
@@ -13,14 +14,17 @@
 
 namespace vkrt::bvh {
 
+// Children per node.
+inline constexpr int kWideWidth = 8;
+
 struct alignas(64) WideNode {
     // rows: lo.x, hi.x, lo.y, hi.y, lo.z, hi.z; column k = child k. An empty slot has
     // lo = +FLT_MAX, hi = -FLT_MAX, link = NODE_NONE, count = 0.
-    float bounds[6][4];
-    std::uint32_t link[4];   // count == 0: index of an inner WideNode; count > 0: first primitive
-    std::uint32_t count[4];  // (bottom level) or instance (top level), as in BinaryNode
+    float bounds[6][kWideWidth];
+    std::uint32_t link[kWideWidth];   // count == 0: index of an inner WideNode; count > 0: first primitive
+    std::uint32_t count[kWideWidth];  // (bottom level) or instance (top level), as in BinaryNode
 };
-static_assert(sizeof(WideNode) == 128);
+static_assert(sizeof(WideNode) == 256);
 
 struct WideBvh {
     std::vector<WideNode> nodes;

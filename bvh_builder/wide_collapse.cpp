@@ -22,7 +22,7 @@ struct Slot {
 constexpr std::uint32_t kBlockLink = 0x80000000u;
 
 // The greedy collapse of one two-child tree (or the part of it above the blocks), planned once:
-// the 4-wide nodes are recorded in output order, so the number of them is known before the one
+// the 8-wide nodes are recorded in output order, so the number of them is known before the one
 // allocation, and writing them is a pass over the records. (Counting and writing used to descend
 // the tree twice, computing every node's slots twice.)
 class Collapser {
@@ -35,12 +35,12 @@ public:
     // Records the subtree at `node` depth-first into out (a node's index is its position there,
     // links to inner children as such indices, flagged relative); returns its index.
     std::uint32_t plan(std::uint32_t node, std::vector<PlannedNode>& out) const {
-        std::array<Slot, 4> slots;
+        std::array<Slot, kWideWidth> slots;
         const int n = gather(node, slots);
         const auto index = static_cast<std::uint32_t>(out.size());
         out.emplace_back();
         PlannedNode p{};
-        for (int k = 0; k < 4; ++k) {
+        for (int k = 0; k < kWideWidth; ++k) {
             if (k >= n) {
                 p.source[k] = NODE_NONE;
                 continue;
@@ -67,11 +67,11 @@ public:
     }
 
 private:
-    // The up-to-4 child slots of a 4-wide node: the two-child node's children, then repeatedly the
+    // The up-to-8 child slots of an 8-wide node: the two-child node's children, then repeatedly the
     // inner child with the largest surface area replaced by its two children while there is room
     // (the SAH's view: the largest box is the one most rays enter). Recursion in plan() is as
     // deep as the two-child tree, which the builder bounds.
-    int gather(std::uint32_t node, std::array<Slot, 4>& slots) const {
+    int gather(std::uint32_t node, std::array<Slot, kWideWidth>& slots) const {
         int n = 0;
         auto addChildren = [&](std::uint32_t index, int at) {
             const BinaryNode& src = nodes_[index];
@@ -93,7 +93,7 @@ private:
             for (int k = 0; k < n; ++k)
                 if (slots[k].inner() && block(slots[k].link) < 0 && (widest < 0 || slots[k].area > slots[widest].area))
                     widest = k;
-            if (widest < 0 || n + 1 > 4) break;
+            if (widest < 0 || n + 1 > kWideWidth) break;
             const std::uint32_t open = slots[widest].link;
             for (int j = widest; j + 1 < n; ++j) slots[j] = slots[j + 1];
             --n;
@@ -106,9 +106,9 @@ private:
     const std::vector<std::uint32_t>* blockRoots_;
 };
 
-// Writes a planned 4-wide node; base: the output index of its part's first node.
+// Writes a planned 8-wide node; base: the output index of its part's first node.
 void writeNode(const std::vector<BinaryNode>& nodes, const PlannedNode& p, std::uint32_t base, WideNode& w) {
-    for (int k = 0; k < 4; ++k) {
+    for (int k = 0; k < kWideWidth; ++k) {
         if (p.source[k] == NODE_NONE) {  // empty slot: the empty box (see wide_bvh.h)
             for (int row = 0; row < 6; ++row) w.bounds[row][k] = (row % 2) ? -FLT_MAX : FLT_MAX;
             w.link[k] = NODE_NONE;
@@ -167,7 +167,7 @@ std::uint32_t writeCollapse(const std::vector<BinaryNode>& nodes, const Collapse
     for (std::uint32_t i = 0; i < plan.topCount; ++i) {
         WideNode& w = out[first + i];
         writeNode(nodes, plan.top[i], first, w);
-        for (int k = 0; k < 4; ++k)
+        for (int k = 0; k < kWideWidth; ++k)
             if (w.count[k] == 0 && w.link[k] != NODE_NONE && (w.link[k] & kBlockLink))
                 w.link[k] = offsets[w.link[k] & ~kBlockLink];
     }

@@ -31,7 +31,7 @@ struct RenderStats {
 };
 
 // The reference's acceleration structure: the scene's BVH with the CPU traversal's SAH constants
-// and its 4-wide copy (bvh::BuildOptions' defaults). The scene must outlive the result.
+// and its 8-wide copy (bvh::BuildOptions' defaults). The scene must outlive the result.
 SceneAccel prepareCpuScene(const Scene& scene);
 
 // Renders options.width x options.height linear radiance. Bit-identical for any thread count.

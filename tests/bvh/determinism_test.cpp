@@ -1,5 +1,5 @@
 // The build's output must not depend on the number of threads (bit-identical arrays), nor the GPU
-// arrays on whether the CPU's 4-wide copy is built.
+// arrays on whether the CPU's 8-wide copy is built.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -34,7 +34,7 @@ TEST(Determinism, ThreadCountDoesNotChangeTheResult) {
         EXPECT_TRUE(sameBytes(bvh.prims, reference.prims)) << threads << " threads";
         EXPECT_TRUE(sameBytes(bvh.primSource, reference.primSource)) << threads << " threads";
         EXPECT_TRUE(sameBytes(bvh.instances, reference.instances)) << threads << " threads";
-        EXPECT_TRUE(sameBytes(bvh.cpu.nodes, reference.cpu.nodes)) << threads << " threads (4-wide copy)";
+        EXPECT_TRUE(sameBytes(bvh.cpu.nodes, reference.cpu.nodes)) << threads << " threads (8-wide copy)";
         EXPECT_EQ(bvh.cpu.groupRoots, reference.cpu.groupRoots);
         EXPECT_EQ(bvh.topRoot, reference.topRoot);
         EXPECT_EQ(bvh.stats.sahCost, reference.stats.sahCost);
@@ -64,11 +64,11 @@ TEST(Determinism, MidSizedGroupHoldingMostOfTheSceneDoesNotDependOnThreads) {
         const SceneBvh bvh = buildSceneBvh(scene.groups, scene.instances, options);
         EXPECT_TRUE(sameBytes(bvh.nodes, reference.nodes)) << threads << " threads";
         EXPECT_TRUE(sameBytes(bvh.prims, reference.prims)) << threads << " threads";
-        EXPECT_TRUE(sameBytes(bvh.cpu.nodes, reference.cpu.nodes)) << threads << " threads (4-wide copy)";
+        EXPECT_TRUE(sameBytes(bvh.cpu.nodes, reference.cpu.nodes)) << threads << " threads (8-wide copy)";
     }
 }
 
-// BuildOptions::cpuTraversal = false skips only the 4-wide copy: what the GPU path uploads is the
+// BuildOptions::cpuTraversal = false skips only the 8-wide copy: what the GPU path uploads is the
 // same, and CPU traversal of such a BVH fails loudly instead of reporting no hits.
 TEST(Determinism, SkippingTheCpuCopyLeavesTheGpuArraysUnchanged) {
     const TestScene scene = meshBesideShapes(8, 40000, 2000);

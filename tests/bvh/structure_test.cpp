@@ -65,7 +65,7 @@ WalkResult walkTree(const SceneBvh& bvh, std::uint32_t root, int maxLeaf, Conten
     return r;
 }
 
-// The CPU's 4-wide copy of one tree: boxes contain their children's boxes and leaves' contents,
+// The CPU's 8-wide copy of one tree: boxes contain their children's boxes and leaves' contents,
 // empty slots are empty; returns the leaf items in the order met.
 template <class ContentBox>
 std::vector<std::uint32_t> walkWide(const SceneBvh& bvh, std::uint32_t root, ContentBox contentBox) {
@@ -79,7 +79,7 @@ std::vector<std::uint32_t> walkWide(const SceneBvh& bvh, std::uint32_t root, Con
             return items;
         }
         const WideNode& node = bvh.cpu.nodes[index];
-        for (int k = 0; k < 4; ++k) {
+        for (int k = 0; k < bvh::kWideWidth; ++k) {
             const Aabb box{{node.bounds[0][k], node.bounds[2][k], node.bounds[4][k]},
                            {node.bounds[1][k], node.bounds[3][k], node.bounds[5][k]}};
             if (node.count[k] == 0 && node.link[k] == bvh::NODE_NONE) {
@@ -88,7 +88,7 @@ std::vector<std::uint32_t> walkWide(const SceneBvh& bvh, std::uint32_t root, Con
             }
             if (node.count[k] == 0) {
                 const WideNode& child = bvh.cpu.nodes[node.link[k]];
-                for (int j = 0; j < 4; ++j) {
+                for (int j = 0; j < bvh::kWideWidth; ++j) {
                     const Aabb c{{child.bounds[0][j], child.bounds[2][j], child.bounds[4][j]},
                                  {child.bounds[1][j], child.bounds[3][j], child.bounds[5][j]}};
                     if (!c.empty()) {
@@ -142,7 +142,7 @@ void expectWellFormed(const TestScene& scene, const SceneBvh& bvh, const BuildOp
         std::vector<std::uint32_t> wideItems = walkWide(bvh, bvh.cpu.groupRoots[g],
                                                         [&](std::uint32_t p) { return boundsOf(decode(bvh.prims[p])); });
         std::sort(wideItems.begin(), wideItems.end());
-        EXPECT_EQ(wideItems, expected) << "group " << g << " (4-wide copy)";
+        EXPECT_EQ(wideItems, expected) << "group " << g << " (8-wide copy)";
         deepest = std::max(deepest, w.depth);
         reachable += w.nodes;
         // Group bounds are the union of its primitives.
@@ -202,7 +202,7 @@ void expectWellFormed(const TestScene& scene, const SceneBvh& bvh, const BuildOp
     EXPECT_EQ(placed, expected);
     std::vector<std::uint32_t> widePlaced = walkWide(bvh, bvh.cpu.topRoot, instanceBox);
     std::sort(widePlaced.begin(), widePlaced.end());
-    EXPECT_EQ(widePlaced, expected) << "top level (4-wide copy)";
+    EXPECT_EQ(widePlaced, expected) << "top level (8-wide copy)";
     EXPECT_EQ(bvh.stats.topDepth, top.depth);
     EXPECT_LE(bvh.stats.topDepth + bvh.stats.bottomDepth, static_cast<int>(gpu::TRAVERSAL_STACK_SIZE));
     // Every node belongs to exactly one tree.

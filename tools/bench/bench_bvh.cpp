@@ -5,13 +5,13 @@
 // round runs vkrt, then Embree `medium` (for the build), then Embree's default `high` (for
 // traversal), alternating, and the median of the per-round ratios vkrt/Embree is printed:
 // this machine's speed drifts too much for figures taken minutes apart to be compared.
-// Two build figures are printed: the full build (with the CPU traversal's 4-wide copy, which this
+// Two build figures are printed: the full build (with the CPU traversal's 8-wide copy, which this
 // bench traverses) and the build the GPU path needs (BuildOptions::cpuTraversal = false): the
 // same build less BuildStats::cpuCopySeconds, its last phase. A separate cpuTraversal = false
 // build is not timed instead: run after the full build, it met a warm allocator and read 10-15%
 // faster than the copy alone explains; run before it, it made the full build faster.
 // A third figure is the tree `vkrt` actually builds for a GPU render (gpu_build_options.h: other
-// SAH constants, no 4-wide copy), built after the rays are traced, so with the same warm allocator.
+// SAH constants, no 8-wide copy), built after the rays are traced, so with the same warm allocator.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -95,11 +95,11 @@ double unitSahCost(const bvh::SceneBvh& scene) {
 
 struct VkrtFigures {
     bvh::BuildStats stats;
-    double gpuOnlyBuildSeconds = 0.0;  // the same build without the 4-wide copy
+    double gpuOnlyBuildSeconds = 0.0;  // the same build without the 8-wide copy
     double gpuTreeBuildSeconds = 0.0;  // the GPU render's own tree (gpuBuildOptions)
     std::size_t gpuTreeNodes = 0;
     double unitSah = 0.0;
-    std::size_t cpuBytes = 0;  // the CPU traversal's 4-wide copy (not uploaded)
+    std::size_t cpuBytes = 0;  // the CPU traversal's 8-wide copy (not uploaded)
     std::size_t triangles = 0, primaryRays = 0, shadowRays = 0;
     double primaryMrays = 0.0, shadowMrays = 0.0, diffuseMrays = 0.0;
 };
@@ -210,10 +210,10 @@ int runBvhBench(const std::vector<std::string>& argv) {
     const double tris = static_cast<double>(v.triangles);
     std::printf("triangles %zu build_s %.4f build_Mtris_per_s %.2f\n", v.triangles, v.stats.buildSeconds,
                 tris / v.stats.buildSeconds / 1e6);
-    std::printf("triangles %zu build_gpu_only_s %.4f build_gpu_only_Mtris_per_s %.2f (the same builds less the CPU's 4-wide copy)\n",
+    std::printf("triangles %zu build_gpu_only_s %.4f build_gpu_only_Mtris_per_s %.2f (the same builds less the CPU's 8-wide copy)\n",
                 v.triangles, v.gpuOnlyBuildSeconds, tris / v.gpuOnlyBuildSeconds / 1e6);
     std::printf("triangles %zu build_gpu_tree_s %.4f build_gpu_tree_Mtris_per_s %.2f nodes %zu (the tree a GPU render builds: "
-                "C_trav %.1f, no 4-wide copy)\n",
+                "C_trav %.1f, no 8-wide copy)\n",
                 v.triangles, v.gpuTreeBuildSeconds, tris / v.gpuTreeBuildSeconds / 1e6, v.gpuTreeNodes, kGpuTraversalCost);
     std::printf("primary rays %zu Mrays_per_s %.2f\n", v.primaryRays, v.primaryMrays);
     std::printf("shadow rays %zu Mrays_per_s %.2f\n", v.shadowRays, v.shadowMrays);
@@ -233,7 +233,7 @@ int runBvhBench(const std::vector<std::string>& argv) {
             std::printf("note: shadow ray counts differ (vkrt %zu, embree %zu): primary hits disagree on %.3f%% of rays\n",
                         v.shadowRays, bestHigh->shadowRays,
                         100.0 * std::abs(double(v.shadowRays) - double(bestHigh->shadowRays)) / double(v.primaryRays));
-        // build_vs_medium: the full build (GPU arrays + the CPU's 4-wide copy);
+        // build_vs_medium: the full build (GPU arrays + the CPU's 8-wide copy);
         // build_gpu_only_vs_medium: the same build less the copy (cpuTraversal = false);
         // build_gpu_tree_vs_medium: the tree a GPU render builds (gpuBuildOptions).
         std::printf("ratio_vkrt_over_embree rounds %zu build_vs_medium %.2f build_gpu_only_vs_medium %.2f "
