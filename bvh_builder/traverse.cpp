@@ -15,80 +15,13 @@
 #include "intersect_inline.h"
 #include "node_layout.h"
 #include "triangle_groups.h"
+#include "wide_slab.h"
 
 namespace vkrt::bvh {
 
 namespace {
 
-// Enough for any tree the builder makes: a wide node pushes at most kWideWidth - 1 entries, and
-// the trees are at most 64 levels deep (scene_bvh.cpp, kMaxTreeDepth).
-constexpr int kStackSize = (kWideWidth - 1) * 64 + 1;
-
-// Slab test of a wide node's children at once (Kay & Kajiya 1986, with each axis's near plane
-// chosen by the sign of the direction as in Williams et al. 2005, so an empty slot, stored as
-// lo = +FLT_MAX > hi = -FLT_MAX, always gives tNear > tFar): 8 lanes per AVX instruction, or two
-// SSE halves where the build has no AVX. Direction components of magnitude below 2^-100 are
-// replaced by +-2^-100: the inverse is then finite, so (plane - origin) * inverse is never
-// 0 * inf = NaN, and the slab of an axis-parallel ray is (-huge, +huge) inside the slab and
-// entirely on one side outside it (conservative at worst).
-#if defined(__AVX__)
-using Lanes = __m256;
-inline Lanes broadcast(float x) { return _mm256_set1_ps(x); }
-#else
-using Lanes = __m128;
-inline Lanes broadcast(float x) { return _mm_set1_ps(x); }
-#endif
-static_assert(kWideWidth == 8, "slabs() tests 8 children");
-
-struct NodeRay {
-    Lanes o[3], inv[3];
-    int nearRow[3];  // bounds row of each axis's near plane: lo (2a) or hi (2a + 1)
-
-    NodeRay(const glm::vec3& origin, const glm::vec3& dir) {
-        for (int a = 0; a < 3; ++a) {
-            // -0 counts as positive, as in the box test and the GLSL kernel (RENDERING.md §3).
-            const float d = std::abs(dir[a]) < 0x1p-100f ? (dir[a] < 0.0f ? -0x1p-100f : 0x1p-100f) : dir[a];
-            o[a] = broadcast(origin[a]);
-            inv[a] = broadcast(1.0f / d);
-            nearRow[a] = 2 * a + (d < 0.0f ? 1 : 0);
-        }
-    }
-};
-
-// Rounding in the slab test can shrink the interval by a few ulps and miss a primitive that
-// touches its box's boundary; widening tFar by 1 + 2*gamma(3) makes the test conservative
-// (Ize 2013, "Robust BVH Ray Traversal", JCGT 2(2)).
-constexpr float kFarScale = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
-
-// Mask of the children whose box the ray enters within [0, tmax] (bit k: child k); tEntry gets
-// the entry distances.
-inline int slabs(const WideNode& node, const NodeRay& r, float tmax, float tEntry[kWideWidth]) {
-#if defined(__AVX__)
-    __m256 tn = _mm256_setzero_ps(), tf = _mm256_set1_ps(tmax);
-    for (int a = 0; a < 3; ++a) {
-        const __m256 n = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node.bounds[r.nearRow[a]]), r.o[a]), r.inv[a]);
-        const __m256 f = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node.bounds[r.nearRow[a] ^ 1]), r.o[a]), r.inv[a]);
-        tn = _mm256_max_ps(tn, n);
-        tf = _mm256_min_ps(tf, f);
-    }
-    _mm256_store_ps(tEntry, tn);
-    return _mm256_movemask_ps(_mm256_cmp_ps(tn, _mm256_mul_ps(tf, _mm256_set1_ps(kFarScale)), _CMP_LE_OQ));
-#else
-    int mask = 0;
-    for (int half = 0; half < kWideWidth; half += 4) {
-        __m128 tn = _mm_setzero_ps(), tf = _mm_set1_ps(tmax);
-        for (int a = 0; a < 3; ++a) {
-            const __m128 n = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.bounds[r.nearRow[a]] + half), r.o[a]), r.inv[a]);
-            const __m128 f = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.bounds[r.nearRow[a] ^ 1] + half), r.o[a]), r.inv[a]);
-            tn = _mm_max_ps(tn, n);
-            tf = _mm_min_ps(tf, f);
-        }
-        _mm_store_ps(tEntry + half, tn);
-        mask |= _mm_movemask_ps(_mm_cmple_ps(tn, _mm_mul_ps(tf, _mm_set1_ps(kFarScale)))) << half;
-    }
-    return mask;
-#endif
-}
+constexpr int kStackSize = kWideStackSize;
 
 // Walks one 8-wide tree from root; leaf(link, count) intersects a leaf's contents, may lower tmax,
 // and returns true to stop the walk (any-hit). Hit inner children are visited nearest first; the
@@ -281,7 +214,7 @@ bool trace(const SceneBvh& bvh, const Ray& ray, Hit* out) {
     };
     // A scene of one still, untransformed instance (no instancing in the file): its group's walk
     // alone. The top level's one box culls nothing the group's root boxes do not, and skipping it
-    // saves a node visit of the ~4 a ray makes in a small scene (a Cornell box).
+    // saves a node visit per ray: in a small scene (a Cornell box) a ray visits ~1.2 nodes of its group.
     if (bvh.cpu.identity.size() == 1 && bvh.cpu.identity[0] != 0) {
         instances(0, 1);
         return found;

@@ -16,6 +16,12 @@ namespace vkrt::bvh {
 
 // Children per node.
 inline constexpr int kWideWidth = 8;
+// Entries of the traversal's stack (traverse.cpp): enough for any tree the builder makes. A node
+// pushes at most kWideWidth - 1 entries (its hit inner children but the nearest), only a node's
+// ancestors' entries wait on the stack, and an 8-wide tree is never deeper than the two-child
+// tree it collapses (every slot is a strictly deeper node of it), which is at most 64 levels deep
+// (scene_bvh.cpp, kMaxTreeDepth). tests/bvh/structure_test.cpp checks trees against it.
+inline constexpr int kWideStackSize = (kWideWidth - 1) * 64 + 1;
 
 struct alignas(64) WideNode {
     // rows: lo.x, hi.x, lo.y, hi.y, lo.z, hi.z; column k = child k. An empty slot has

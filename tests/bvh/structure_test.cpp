@@ -107,6 +107,27 @@ std::vector<std::uint32_t> walkWide(const SceneBvh& bvh, std::uint32_t root, Con
     return items;
 }
 
+// Of the 8-wide tree at `root`: its depth in nodes, and the most entries the traversal's stack can
+// hold on it (a node pushes its inner children but the one it descends into; the entries of a
+// node's ancestors wait below them), which traverse.cpp's kWideStackSize must cover.
+struct WideShape {
+    int depth = 0;
+    int stack = 0;
+};
+WideShape wideShape(const SceneBvh& bvh, std::uint32_t root) {
+    const WideNode& node = bvh.cpu.nodes[root];
+    WideShape deepest;
+    int inner = 0;
+    for (int k = 0; k < bvh::kWideWidth; ++k) {
+        if (node.count[k] != 0 || node.link[k] == bvh::NODE_NONE) continue;
+        ++inner;
+        const WideShape child = wideShape(bvh, node.link[k]);
+        deepest.depth = std::max(deepest.depth, child.depth);
+        deepest.stack = std::max(deepest.stack, child.stack);
+    }
+    return {deepest.depth + 1, deepest.stack + std::max(inner - 1, 0)};
+}
+
 // Checks every invariant of a built scene against its input.
 void expectWellFormed(const TestScene& scene, const SceneBvh& bvh, const BuildOptions& options) {
     ASSERT_EQ(bvh.groups.size(), scene.groups.size());
@@ -143,6 +164,13 @@ void expectWellFormed(const TestScene& scene, const SceneBvh& bvh, const BuildOp
                                                         [&](std::uint32_t p) { return boundsOf(decode(bvh.prims[p])); });
         std::sort(wideItems.begin(), wideItems.end());
         EXPECT_EQ(wideItems, expected) << "group " << g << " (8-wide copy)";
+        // kWideStackSize's argument: the 8-wide tree is no deeper than the two-child one, and its
+        // worst stack fits.
+        if (range.primCount > 0) {
+            const WideShape shape = wideShape(bvh, bvh.cpu.groupRoots[g]);
+            EXPECT_LE(shape.depth, w.depth) << "group " << g;
+            EXPECT_LE(shape.stack, bvh::kWideStackSize) << "group " << g;
+        }
         deepest = std::max(deepest, w.depth);
         reachable += w.nodes;
         // Group bounds are the union of its primitives.
@@ -203,6 +231,11 @@ void expectWellFormed(const TestScene& scene, const SceneBvh& bvh, const BuildOp
     std::vector<std::uint32_t> widePlaced = walkWide(bvh, bvh.cpu.topRoot, instanceBox);
     std::sort(widePlaced.begin(), widePlaced.end());
     EXPECT_EQ(widePlaced, expected) << "top level (8-wide copy)";
+    if (!expected.empty()) {
+        const WideShape shape = wideShape(bvh, bvh.cpu.topRoot);
+        EXPECT_LE(shape.depth, top.depth) << "top level";
+        EXPECT_LE(shape.stack, bvh::kWideStackSize) << "top level";
+    }
     EXPECT_EQ(bvh.stats.topDepth, top.depth);
     EXPECT_LE(bvh.stats.topDepth + bvh.stats.bottomDepth, static_cast<int>(gpu::TRAVERSAL_STACK_SIZE));
     // Every node belongs to exactly one tree.
