@@ -43,7 +43,9 @@ struct BuildOptions {
     int maxLeafSize = 8;         // a leaf is forced to split above this many primitives
     float traversalCost = 1.0f;  // SAH cost of visiting an inner node, relative to...
     float intersectionCost = 1.0f;  // ...intersecting one primitive (see docs/BVH.md for the measurement)
-    int maxBottomDepth = 36;     // node levels of a bottom-level tree (deeper SAH splits become median splits)
+    int maxBottomDepth = 36;     // node levels of a bottom-level tree (deeper SAH splits become median splits);
+                                 // a group whose median splits need more levels, ceil(log2(n / maxLeafSize)),
+                                 // gets that many
     // Also build SceneBvh::cpu, the 8-wide copy that only the CPU traversal (intersectClosest /
     // intersectAny) reads: 6-8% of the build at 256K-1M triangles. A caller that only uploads
     // the BVH to the GPU sets this to false; the GPU arrays are the same either way.

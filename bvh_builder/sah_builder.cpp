@@ -398,7 +398,14 @@ BuildTree buildSah(std::span<PrimRef> refs, const SahParams& params, ThreadPool&
         throw std::invalid_argument("bvh: maxLeafSize must be >= 1, got " + std::to_string(params.maxLeafSize));
     if (!(params.traversalCost >= 0.0f) || !(params.intersectionCost > 0.0f))
         throw std::invalid_argument("bvh: SAH costs must be traversal >= 0 and intersection > 0");
-    return Builder(refs, params, pool, subtreeDone).run();
+    // A bound below the levels that median splits need for these references is raised to them:
+    // otherwise no split could keep it and the SAH would be kept everywhere, unbounded (the CPU
+    // traversal's stack, wide_bvh.h kWideStackSize, and the kernel's rely on the bound). At most
+    // 30 levels for the 2^30 references allowed, so a tree stays within kMaxTreeDepth (64).
+    SahParams bounded = params;
+    bounded.maxDepth = std::max(params.maxDepth, levelsNeeded(static_cast<std::uint32_t>(refs.size()),
+                                                              static_cast<std::uint32_t>(params.maxLeafSize)));
+    return Builder(refs, bounded, pool, subtreeDone).run();
 }
 
 }  // namespace vkrt::bvh
