@@ -21,8 +21,6 @@ namespace vkrt::bvh {
 
 namespace {
 
-constexpr int kStackSize = kWideStackSize;
-
 // Walks one 8-wide tree from root; leaf(link, count) intersects a leaf's contents, may lower tmax,
 // and returns true to stop the walk (any-hit). Hit inner children are visited nearest first; the
 // others wait on the stack with their entry distance and are dropped if a closer hit came first.
@@ -33,7 +31,7 @@ void walk(const std::vector<WideNode>& nodes, std::uint32_t root, const NodeRay&
         std::uint32_t node;
         float t;
     };
-    Entry stack[kStackSize];
+    Entry stack[kWideStackSize];
     int sp = 0;
     std::uint32_t current = root;
     for (;;) {
