@@ -47,7 +47,8 @@ struct BuildOptions {
                                  // a group whose median splits need more levels, ceil(log2(n / maxLeafSize)),
                                  // gets that many
     // Also build SceneBvh::cpu, the 8-wide copy that only the CPU traversal (intersectClosest /
-    // intersectAny) reads: 6-8% of the build at 256K-1M triangles. A caller that only uploads
+    // intersectAny) reads: ~25% of the build on dragon (100K triangles), ~35% at 1M (docs/BVH.md §4),
+    // most of it the triangle groups. A caller that only uploads
     // the BVH to the GPU sets this to false; the GPU arrays are the same either way.
     bool cpuTraversal = true;
 };

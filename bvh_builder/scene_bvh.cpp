@@ -124,7 +124,7 @@ void buildWideCopy(const std::vector<std::vector<std::uint32_t>>& groupBlocks, c
         wideFirst += plans[k].total;
         if (k < groupBlocks.size()) bottomNodes = wideFirst;
     }
-    bvh.cpu.triangles = buildTriangleGroups(bvh.prims, bvh.cpu.nodes.data(), bottomNodes);
+    bvh.cpu.triangles = buildTriangleGroups(bvh.prims, bvh.cpu.nodes.data(), bottomNodes, pool);
     for (const InstanceInput& in : instances)
         bvh.cpu.identity.push_back(in.objectToWorld == glm::mat4(1.0f) && !in.moving ? 1 : 0);
     bvh.cpu.built = true;

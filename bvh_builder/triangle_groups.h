@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "device_host.h"
+#include "thread_pool.h"
 
 namespace vkrt::bvh {
 
@@ -34,6 +35,6 @@ struct TriangleGroups {
 // From the bottom levels' 8-wide nodes (nodes[0, bottomNodes); the top level's leaves hold
 // instances, not primitives).
 TriangleGroups buildTriangleGroups(const std::vector<gpu::Primitive>& prims, const WideNode* nodes,
-                                   std::uint32_t bottomNodes);
+                                   std::uint32_t bottomNodes, ThreadPool& pool);
 
 }  // namespace vkrt::bvh

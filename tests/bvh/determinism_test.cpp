@@ -36,6 +36,8 @@ TEST(Determinism, ThreadCountDoesNotChangeTheResult) {
         EXPECT_TRUE(sameBytes(bvh.instances, reference.instances)) << threads << " threads";
         EXPECT_TRUE(sameBytes(bvh.cpu.nodes, reference.cpu.nodes)) << threads << " threads (8-wide copy)";
         EXPECT_EQ(bvh.cpu.groupRoots, reference.cpu.groupRoots);
+        EXPECT_TRUE(sameBytes(bvh.cpu.triangles.groups, reference.cpu.triangles.groups)) << threads << " threads (triangle groups)";
+        EXPECT_EQ(bvh.cpu.triangles.leafGroup, reference.cpu.triangles.leafGroup);
         EXPECT_EQ(bvh.topRoot, reference.topRoot);
         EXPECT_EQ(bvh.stats.sahCost, reference.stats.sahCost);
     }

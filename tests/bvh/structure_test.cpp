@@ -3,6 +3,7 @@
 
 #include <cstring>
 
+#include "intersect_inline.h"
 #include "node_layout.h"
 #include "primitives.h"
 #include "wide_bvh.h"
@@ -128,6 +129,54 @@ WideShape wideShape(const SceneBvh& bvh, std::uint32_t root) {
     return {deepest.depth + 1, deepest.stack + std::max(inner - 1, 0)};
 }
 
+// The triangle groups of one group's 8-wide tree (triangle_groups.h): every leaf of two or more
+// triangles, and nothing else, has groups, and lane l of its group g holds primitive
+// first + 4 g + l's corners exactly, marked hittable unless padding or collinear.
+void expectTriangleGroups(const SceneBvh& bvh, std::uint32_t root) {
+    const TriangleGroups& t = bvh.cpu.triangles;
+    ASSERT_EQ(t.leafGroup.size(), bvh.prims.size());
+    const auto corner = [](const glm::uvec4& texel) {
+        return glm::vec3(bitsFloat(texel.x), bitsFloat(texel.y), bitsFloat(texel.z));
+    };
+    std::vector<std::uint32_t> stack{root};
+    while (!stack.empty()) {
+        const WideNode& node = bvh.cpu.nodes[stack.back()];
+        stack.pop_back();
+        for (int k = 0; k < bvh::kWideWidth; ++k) {
+            const std::uint32_t first = node.link[k], count = node.count[k];
+            if (count == 0) {
+                if (first != bvh::NODE_NONE) stack.push_back(first);
+                continue;
+            }
+            bool triangles = count >= 2;
+            for (std::uint32_t p = first; p < first + count; ++p)
+                triangles = triangles && gpu::primitiveKind(bvh.prims[p].a) == gpu::PRIM_KIND_TRIANGLE;
+            const std::uint32_t g0 = t.leafGroup[first];
+            if (!triangles) {
+                EXPECT_EQ(g0, TriangleGroups::kNone) << "leaf at primitive " << first;
+                continue;
+            }
+            ASSERT_LT(g0, t.groups.size()) << "leaf at primitive " << first << " has no groups";
+            for (std::uint32_t i = 0; i < (count + 3) / 4 * 4; ++i) {
+                ASSERT_LT(g0 + i / 4, t.groups.size());
+                const TriangleGroup& g = t.groups[g0 + i / 4];
+                const std::uint32_t lane = i % 4;
+                const bool real = i < count;
+                bool hittable = false;
+                if (real) {
+                    const gpu::Primitive& p = bvh.prims[first + i];
+                    const glm::vec3 v[3] = {corner(p.a), corner(p.b), corner(p.c)};
+                    for (int c = 0; c < 3; ++c)
+                        for (int a = 0; a < 3; ++a)
+                            EXPECT_EQ(g.corner[c][a][lane], v[c][a]) << "primitive " << first + i << " corner " << c;
+                    hittable = !detail::collinear(v[0], v[1], v[2]);
+                }
+                EXPECT_EQ(((g.lanes >> lane) & 1u) != 0, hittable) << "primitive " << first + i << " (lane " << lane << ")";
+            }
+        }
+    }
+}
+
 // Checks every invariant of a built scene against its input.
 void expectWellFormed(const TestScene& scene, const SceneBvh& bvh, const BuildOptions& options) {
     ASSERT_EQ(bvh.groups.size(), scene.groups.size());
@@ -164,6 +213,7 @@ void expectWellFormed(const TestScene& scene, const SceneBvh& bvh, const BuildOp
                                                         [&](std::uint32_t p) { return boundsOf(decode(bvh.prims[p])); });
         std::sort(wideItems.begin(), wideItems.end());
         EXPECT_EQ(wideItems, expected) << "group " << g << " (8-wide copy)";
+        expectTriangleGroups(bvh, bvh.cpu.groupRoots[g]);
         // kWideStackSize's argument: the 8-wide tree is no deeper than the two-child one, and its
         // worst stack fits.
         if (range.primCount > 0) {
@@ -335,6 +385,17 @@ TEST(Structure, FlatAndLongPrimitives) {
         const glm::vec3 c(1000.0f * u(rng), 1000.0f * u(rng), 0.0f);
         prims.push_back({gpu::PRIM_KIND_TRIANGLE, c, c + glm::vec3(1.0f, 0.0f, 0.0f), c + glm::vec3(0.0f, 1.0f, 0.0f)});
         prims.push_back({gpu::PRIM_KIND_TRIANGLE, c, c + glm::vec3(1e5f, 0.0f, 0.0f), c + glm::vec3(0.0f, 1e-4f, 1e-4f)});
+    }
+    // Collinear and proper triangles sharing one centroid (split by count, so leaves mix them): a
+    // collinear lane of a triangle group must never be hittable.
+    const glm::vec3 c(500.0f, 500.0f, 7.0f);
+    for (int i = 0; i < 32; ++i) {
+        if (i % 2 == 0) {
+            prims.push_back({gpu::PRIM_KIND_TRIANGLE, c - glm::vec3(1.0f, 0.0f, 0.0f), c, c + glm::vec3(1.0f, 0.0f, 0.0f)});
+        } else {
+            prims.push_back({gpu::PRIM_KIND_TRIANGLE, c + glm::vec3(-1.0f, -1.0f, 0.0f), c + glm::vec3(2.0f, -1.0f, 0.0f),
+                             c + glm::vec3(-1.0f, 2.0f, 0.0f)});
+        }
     }
     buildAndCheck(singleGroup(prims));
 }
